@@ -1,0 +1,73 @@
+"""Errors raised by the formula core, and the shared domain check."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from camtool.arrays import is_scalar
+
+
+class DomainError(ValueError):
+    """A value lies outside the physical domain of a formula.
+
+    ``param`` names the parameter (as the library spells it), ``value`` is the
+    offending value and ``valid`` describes the valid range in words, so the
+    CLI can map the parameter to its option and print one line.
+    """
+
+    def __init__(self, param: str, value: Any, valid: str, detail: str = "") -> None:
+        self.param = param
+        self.value = value
+        self.valid = valid
+        self.detail = detail
+        text = f"{param}={_show(value)} is outside the valid range: {valid}"
+        if detail:
+            text += f" ({detail})"
+        super().__init__(text)
+
+
+def _show(value: Any) -> str:
+    if isinstance(value, float) and value.is_integer() and abs(value) < 1e15:
+        return str(int(value))
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+def first_bad(value: Any, ok: Any) -> Any:
+    """Return the first element of ``value`` where ``ok`` is false (scalar or array)."""
+    if is_scalar(value) and isinstance(ok, bool):
+        return value
+    import numpy as np
+
+    value, ok = np.broadcast_arrays(np.asarray(value, dtype=float), np.asarray(ok))
+    return float(value[~ok].flat[0])
+
+
+def require(param: str, value: Any, ok: Any, valid: str, detail: str = "") -> None:
+    """Raise :class:`DomainError` unless ``ok`` holds everywhere.
+
+    ``ok`` is a bool (scalar path) or a boolean array (array path); a NaN in
+    ``value`` must make ``ok`` false, which comparisons such as ``value > 0``
+    already do.
+    """
+    if isinstance(ok, bool):
+        if not ok:
+            raise DomainError(param, value, valid, detail)
+        return
+    import numpy as np
+
+    if not bool(np.all(ok)):
+        raise DomainError(param, first_bad(value, ok), valid, detail)
+
+
+def require_positive(param: str, value: Any, unit: str = "mm", allow_inf: bool = False) -> None:
+    """Raise unless ``value`` is a positive finite number (or +inf if allowed)."""
+    if is_scalar(value):
+        ok = value > 0 and (allow_inf or math.isfinite(value))
+    else:
+        import numpy as np
+
+        v = np.asarray(value, dtype=float)
+        ok = (v > 0) & (np.isfinite(v) | allow_inf)
+    valid = f"> 0 {unit}".rstrip() + (" (inf allowed)" if allow_inf else "")
+    require(param, value, ok, valid)
