@@ -134,3 +134,17 @@ def quiet(xp: SimpleNamespace) -> Any:
     import numpy as np
 
     return np.errstate(divide="ignore", invalid="ignore", over="ignore")
+
+
+def broadcast(value: Any, *like: Any) -> Any:
+    """Return ``value`` broadcast to the common shape of ``like`` (unchanged for scalars).
+
+    Used for results that do not depend on every input (the hyperfocal
+    distance does not depend on the focus distance) but must still have one
+    entry per row. Multiplying by zero would turn an infinite input into NaN.
+    """
+    if all(is_scalar(v) for v in (value, *like)):
+        return value
+    import numpy as np
+
+    return np.broadcast_arrays(np.asarray(value, dtype=float), *(np.asarray(v, dtype=float) for v in like))[0].copy()

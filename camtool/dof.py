@@ -1,0 +1,179 @@
+"""Depth of field of a thin lens: hyperfocal distance and the ``approx`` and ``thin`` models.
+
+Both models answer the same question -- the nearest and farthest object
+distances whose blur disc on the sensor stays within the circle of
+confusion c -- and return :class:`camtool.limits.DofLimits`. The formulas are
+arranged so that every term is a sum of positive quantities, except the
+unavoidable H − s of the far limit, whose cancellation is the problem's own
+condition (the far limit really is that sensitive near the hyperfocal
+distance).
+
+All lengths in millimetres. ``distance_from`` is ``"sensor"`` (the focal-plane
+mark, camtool's default) or ``"lens"`` (the front principal plane).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from camtool.arrays import broadcast, ops, quiet
+from camtool.errors import DomainError, require_positive
+from camtool.limits import DofLimits
+from camtool.thinlens import lens_distances
+
+DISTANCE_PLANES = ("sensor", "lens")
+
+# Largest finite far limit reported. Only reachable when the focus distance
+# lies within a few ulps below the hyperfocal distance and rounding makes H − u
+# vanish; it keeps such a far limit finite, as the comparison in the input
+# plane says it must be.
+_FAR_CAP_MM = 1e300
+
+
+def check_inputs(focal_length_mm: Any, f_number: Any, coc_mm: Any) -> None:
+    """Raise :class:`DomainError` unless f, N and c are positive and finite."""
+    require_positive("focal_length_mm", focal_length_mm)
+    require_positive("f_number", f_number, unit="")
+    require_positive("coc_mm", coc_mm)
+
+
+def hyperfocal_mm(focal_length_mm: Any, f_number: Any, coc_mm: Any, plus_f: bool = True) -> Any:
+    """Hyperfocal distance from the lens in mm: H = f²/(N·c) + f, or f²/(N·c) without the +f.
+
+    Focused at H, a thin lens renders everything from H/2 to infinity within
+    the circle of confusion. The common approximation drops the +f term.
+
+    Parameters
+    ----------
+    focal_length_mm : float or array, f > 0
+    f_number : float or array, N > 0
+    coc_mm : float or array, circle of confusion c > 0
+    plus_f : bool
+        True for the exact thin-lens definition, False for f²/(N·c).
+
+    References
+    ----------
+    Wikipedia, "Hyperfocal distance"; H. M. Merklinger, *The INs and OUTs of
+    FOCUS* (1992).
+
+    Examples
+    --------
+    50 mm at f/8 with c = 0.03 mm (a classic worked example):
+
+    >>> round(hyperfocal_mm(50.0, 8.0, 0.03))
+    10467
+    >>> round(hyperfocal_mm(50.0, 8.0, 0.03, plus_f=False))
+    10417
+    """
+    check_inputs(focal_length_mm, f_number, coc_mm)
+    h0 = focal_length_mm * focal_length_mm / (f_number * coc_mm)
+    return h0 + focal_length_mm if plus_f else h0
+
+
+def approx_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any) -> DofLimits:
+    """Depth of field by the common approximation, in mm, with H₀ = f²/(N·c).
+
+    near = H₀·s/(H₀ + s), far = H₀·s/(H₀ − s) (∞ for s ≥ H₀). It treats the
+    distance s as typed, whatever plane it is measured from, and neglects f
+    against s; its relative error is of order f/s.
+
+    Parameters
+    ----------
+    focal_length_mm, f_number, coc_mm : float or array, all > 0
+    distance_mm : float or array, focus distance s > 0 (``inf`` allowed)
+
+    References
+    ----------
+    Wikipedia, "Depth of field", the hyperfocal-distance form of the DOF
+    limits for moderate-to-large distances.
+
+    Examples
+    --------
+    >>> r = approx_dof(50.0, 8.0, 0.03, 3000.0)
+    >>> round(r.near_mm, 1), round(r.far_mm, 1)
+    (2329.2, 4213.5)
+    """
+    check_inputs(focal_length_mm, f_number, coc_mm)
+    require_positive("distance_mm", distance_mm, allow_inf=True)
+    xp = ops(focal_length_mm, f_number, coc_mm, distance_mm)
+    h0 = focal_length_mm * focal_length_mm / (f_number * coc_mm)
+    s = distance_mm
+    with quiet(xp):
+        ratio = h0 / s  # 0 at infinity
+        near = h0 / (1.0 + ratio)
+        front = s / (ratio + 1.0)
+        beyond = s >= h0
+        gap = xp.where(beyond, 1.0, ratio - 1.0)
+        far = xp.where(beyond, xp.inf, xp.minimum(h0 / gap, _FAR_CAP_MM))
+        rear = xp.where(beyond, xp.inf, xp.minimum(s / gap, _FAR_CAP_MM))
+        past_f = s > focal_length_mm
+        m = xp.where(past_f, focal_length_mm / xp.where(past_f, s - focal_length_mm, 1.0), 0.0)
+    return DofLimits(near, far, front, rear, front + rear, broadcast(h0, s, focal_length_mm), m)
+
+
+def thin_dof(
+    focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor"
+) -> DofLimits:
+    """Exact thin-lens depth of field in mm.
+
+    With H₀ = f²/(N·c), H = H₀ + f and u the focus distance from the lens:
+
+        near = u·H₀/(H₀ + u − f)        front = u − near = u(u − f)/(H₀ + u − f)
+        far  = u·H₀/(H − u)             rear  = far − u  = u(u − f)/(H − u)
+
+    and far = ∞ for u ≥ H. These equal D_N = u f²/(f² + Nc(u − f)) and
+    D_F = u f²/(f² − Nc(u − f)). From the sensor plane the focus distance D is
+    converted exactly to (u, v) (:func:`camtool.thinlens.lens_distances`) and
+    the limits back with the lens-to-sensor spacing v fixed at its focus
+    setting; the reported hyperfocal distance is then H + v_H = H + f + N·c.
+
+    Parameters
+    ----------
+    focal_length_mm, f_number, coc_mm : float or array, all > 0
+    distance_mm : float or array
+        Focus distance: from the sensor, ≥ 4f (1:1); from the lens, ≥ 2f. ``inf`` allowed.
+    distance_from : ``"sensor"`` or ``"lens"``
+
+    References
+    ----------
+    Wikipedia, "Depth of field" (derivation of the DOF limits); Greenleaf,
+    *Photographic Optics* (1950), as implemented by DOFMaster.
+
+    Examples
+    --------
+    >>> r = thin_dof(50.0, 8.0, 0.03, 3000.0, distance_from="lens")
+    >>> round(r.near_mm, 1), round(r.far_mm, 1), round(r.hyperfocal_mm, 1)
+    (2337.9, 4185.3, 10466.7)
+    >>> thin_dof(50.0, 8.0, 0.03, float("inf")).far_mm
+    inf
+    """
+    check_inputs(focal_length_mm, f_number, coc_mm)
+    f = focal_length_mm
+    xp = ops(f, f_number, coc_mm, distance_mm)
+    h0 = f * f / (f_number * coc_mm)
+    h = h0 + f
+    if distance_from == "sensor":
+        u, v = lens_distances(f, distance_mm)
+        offset = v
+        hyperfocal = h + f + f_number * coc_mm
+    elif distance_from == "lens":
+        require_positive("distance_mm", distance_mm, allow_inf=True)
+        if not bool(xp.all(distance_mm >= 2.0 * f)):
+            raise DomainError("distance_mm", distance_mm, "at least 2 × focal length from the lens (1:1)")
+        u, offset, hyperfocal = distance_mm, 0.0, h
+    else:
+        raise ValueError(f"distance_from must be one of {DISTANCE_PLANES}, not {distance_from!r}")
+    with quiet(xp):
+        recip = (h0 - f) / u  # > -1/2 because u ≥ 2f
+        near = h0 / (1.0 + recip) + offset
+        front = (u - f) / (1.0 + recip)
+        beyond = distance_mm >= hyperfocal
+        gap = h - u
+        usable = gap > 0
+        safe_gap = xp.where(usable, gap, 1.0)
+        far_lens = xp.where(usable, xp.minimum(u * h0 / safe_gap, _FAR_CAP_MM), _FAR_CAP_MM)
+        rear = xp.where(usable, xp.minimum(u * (u - f) / safe_gap, _FAR_CAP_MM), _FAR_CAP_MM)
+        far = xp.where(beyond, xp.inf, far_lens + offset)
+        rear = xp.where(beyond, xp.inf, rear)
+        m = f / (u - f)
+    return DofLimits(near, far, front, rear, front + rear, broadcast(hyperfocal, u), m)

@@ -1,0 +1,85 @@
+"""Angle of view and the field covered by a lens on a sensor.
+
+A lens focused so that its image lies v behind it maps a sensor dimension h
+to an angle 2·atan(h/2v). At infinity focus v = f; focused closer, v = f(1 + m)
+grows and the angle shrinks (focus breathing of a unit-focusing lens).
+Lengths in millimetres, angles in degrees.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+from camtool.arrays import ops
+from camtool.errors import require, require_positive
+
+
+class FieldOfView(NamedTuple):
+    """Horizontal, vertical and diagonal angles of view in degrees."""
+
+    horizontal_deg: Any
+    vertical_deg: Any
+    diagonal_deg: Any
+
+
+def angle_of_view_deg(size_mm: Any, focal_length_mm: Any, magnification: Any = 0.0) -> Any:
+    """Angle of view in degrees across a sensor dimension: 2·atan(h / (2·f·(1 + m))).
+
+    Parameters
+    ----------
+    size_mm : float or array
+        Sensor dimension h (width, height or diagonal), > 0.
+    focal_length_mm : float or array, f > 0
+    magnification : float or array, m ≥ 0
+        0 at infinity focus; otherwise the image distance f(1 + m) replaces f.
+
+    References
+    ----------
+    Wikipedia, "Angle of view" (α = 2 arctan(d/2f), and the macro correction
+    with the image distance f(1 + m)).
+
+    Examples
+    --------
+    >>> round(angle_of_view_deg(36.0, 50.0), 2)
+    39.6
+    >>> round(angle_of_view_deg(36.0, 50.0, magnification=1.0), 2)
+    20.41
+    """
+    require_positive("sensor_mm", size_mm)
+    require_positive("focal_length_mm", focal_length_mm)
+    require("magnification", magnification, magnification >= 0, ">= 0")
+    xp = ops(size_mm, focal_length_mm, magnification)
+    return 2.0 * xp.degrees(xp.atan(size_mm / (2.0 * focal_length_mm * (1.0 + magnification))))
+
+
+def field_of_view(width_mm: Any, height_mm: Any, focal_length_mm: Any, magnification: Any = 0.0) -> FieldOfView:
+    """Horizontal, vertical and diagonal angles of view in degrees of a sensor ``width_mm`` × ``height_mm``.
+
+    Examples
+    --------
+    >>> [round(a, 1) for a in field_of_view(36.0, 24.0, 50.0)]
+    [39.6, 27.0, 46.8]
+    """
+    xp = ops(width_mm, height_mm)
+    diagonal = xp.hypot(width_mm, height_mm)
+    return FieldOfView(
+        angle_of_view_deg(width_mm, focal_length_mm, magnification),
+        angle_of_view_deg(height_mm, focal_length_mm, magnification),
+        angle_of_view_deg(diagonal, focal_length_mm, magnification),
+    )
+
+
+def field_size_mm(size_mm: Any, magnification: Any) -> Any:
+    """Size in mm of the field an object plane shows across a sensor dimension: h / m.
+
+    With m = f/(u − f) for a thin lens this is h·(u − f)/f; the common
+    shortcut h·u/f neglects the f.
+
+    Examples
+    --------
+    >>> field_size_mm(36.0, 0.01)
+    3600.0
+    """
+    require_positive("sensor_mm", size_mm)
+    require_positive("magnification", magnification, unit="", allow_inf=False)
+    return size_mm / magnification

@@ -1,0 +1,106 @@
+"""The inverse depth-of-field problem: where to focus, and at which f-number, for a wanted near and far limit.
+
+For a thin lens the exact limits satisfy 1/near + 1/far = 2/u and
+1/near − 1/far = 2·(N·c/f²)·(1 − f/u), with distances u from the lens: the
+focus is the harmonic mean of the limits and the f-number follows. From the
+sensor plane the lens-to-sensor spacing v depends on the focus itself, so the
+focus distance is found by bisection on the one equation that remains.
+Lengths in millimetres.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+from camtool.arrays import ops, quiet
+from camtool.errors import DomainError, require, require_positive
+
+_BISECTIONS = 120
+
+
+class FocusSolution(NamedTuple):
+    """Focus distance (same plane as the limits given) in mm and the f-number that make near..far sharp."""
+
+    distance_mm: Any
+    f_number: Any
+
+
+def focus_for_limits(
+    focal_length_mm: Any, coc_mm: Any, near_mm: Any, far_mm: Any, distance_from: str = "sensor"
+) -> FocusSolution:
+    """Focus distance in mm and f-number whose thin-lens depth of field runs exactly from near to far.
+
+    From the lens: u = 2·n·F/(n + F) (F = ∞ gives u = 2n) and
+    N = f²·(F − n) / (2·c·n·F·(1 − f/u)).
+
+    Parameters
+    ----------
+    focal_length_mm : float or array, f > 0
+    coc_mm : float or array, c > 0
+    near_mm : float or array
+        Wanted near limit; at least the closest focus (4f from the sensor, 2f from the lens).
+    far_mm : float or array
+        Wanted far limit, > near (``inf`` allowed).
+    distance_from : ``"sensor"`` or ``"lens"``
+
+    References
+    ----------
+    Inverts the exact thin-lens limits of :func:`camtool.dof.thin_dof`; the
+    harmonic-mean focus is the classic result (Merklinger, *The INs and OUTs
+    of FOCUS*, 1992).
+
+    Examples
+    --------
+    >>> s = focus_for_limits(50.0, 0.03, 2000.0, 4000.0, distance_from="lens")
+    >>> round(s.distance_mm, 1), round(s.f_number, 3)
+    (2666.7, 10.616)
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    require_positive("coc_mm", coc_mm)
+    require_positive("far_mm", far_mm, allow_inf=True)
+    require("far_mm", far_mm, far_mm > near_mm, "greater than --near")
+    f = focal_length_mm
+    xp = ops(f, coc_mm, near_mm, far_mm)
+    if distance_from == "lens":
+        require("near_mm", near_mm, near_mm >= 2.0 * f, "at least 2 × focal length from the lens")
+        u = _harmonic(xp, near_mm, far_mm)
+        return FocusSolution(u, _f_number(xp, f, coc_mm, near_mm, far_mm, u))
+    if distance_from != "sensor":
+        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
+    require("near_mm", near_mm, near_mm >= 4.0 * f, "at least the closest focus, 4 × focal length from the sensor")
+    lo = near_mm + 0.0 * f
+    hi = xp.minimum(far_mm, 4.0 * near_mm)
+    with quiet(xp):
+        for _ in range(_BISECTIONS):
+            mid = 0.5 * (lo + hi)
+            above = _residual(xp, f, mid, near_mm, far_mm) > 0
+            hi = xp.where(above, mid, hi)
+            lo = xp.where(above, lo, mid)
+        focus = 0.5 * (lo + hi)
+        u, v = _split(xp, f, focus)
+        n_u, f_u = near_mm - v, far_mm - v
+        f_number = _f_number(xp, f, coc_mm, n_u, f_u, u)
+    if not bool(xp.all(f_number > 0)):
+        raise DomainError("near_mm", near_mm, "a near limit the lens can reach at this focal length")
+    return FocusSolution(focus, f_number)
+
+
+def _harmonic(xp: Any, near: Any, far: Any) -> Any:
+    # 2nF/(n + F), written 2n/(1 + n/F) so that F = inf gives 2n
+    return 2.0 * near / (1.0 + near / far)
+
+
+def _f_number(xp: Any, f: Any, coc: Any, near: Any, far: Any, u: Any) -> Any:
+    spread = (1.0 - near / far) / near  # 1/n - 1/F without cancelling for distant F
+    return f * f * spread / (2.0 * coc * (1.0 - f / u))
+
+
+def _split(xp: Any, f: Any, distance: Any) -> tuple[Any, Any]:
+    root = xp.sqrt(xp.maximum(1.0 - 4.0 * f / distance, 0.0))
+    v = 2.0 * f / (1.0 + root)
+    return distance - v, v
+
+
+def _residual(xp: Any, f: Any, distance: Any, near: Any, far: Any) -> Any:
+    u, v = _split(xp, f, distance)
+    return u - _harmonic(xp, near - v, far - v)

@@ -1,0 +1,167 @@
+"""Thin-lens image formation: image distance, magnification, extension, focus planes.
+
+A thin lens of focal length f images an object at distance u (from the lens)
+at v behind it, with 1/u + 1/v = 1/f and magnification m = v/u. A camera
+focuses by moving the lens: the lens-to-sensor spacing is v, and the distance
+the focus scale shows is measured from the sensor plane, D = u + v (+ the
+hiatus δ between the principal planes of a thick lens).
+
+All lengths in millimetres; scalars in, floats out; arrays in, arrays out.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+from camtool.arrays import ops, quiet
+from camtool.errors import require, require_positive
+
+
+class LensPlaneDistances(NamedTuple):
+    """Object and image distances from the principal planes, in mm."""
+
+    object_mm: Any
+    image_mm: Any
+
+
+def image_distance_mm(focal_length_mm: Any, object_distance_mm: Any) -> Any:
+    """Image distance v in mm for an object at u from the lens: v = u·f/(u − f).
+
+    Written v = f/(1 − f/u) so that u = ∞ gives v = f exactly.
+
+    Parameters
+    ----------
+    focal_length_mm : float or array, f > 0
+    object_distance_mm : float or array, u > f (``inf`` allowed)
+
+    References
+    ----------
+    Thin-lens (Gaussian) equation 1/f = 1/u + 1/v; Hecht, *Optics*, §5.2.
+
+    Examples
+    --------
+    >>> image_distance_mm(50.0, 5050.0)
+    50.5
+    >>> image_distance_mm(50.0, float("inf"))
+    50.0
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    require("object_distance_mm", object_distance_mm, object_distance_mm > focal_length_mm,
+            "greater than the focal length")
+    return focal_length_mm / (1.0 - focal_length_mm / object_distance_mm)
+
+
+def magnification(focal_length_mm: Any, object_distance_mm: Any) -> Any:
+    """Lateral magnification m = v/u = f/(u − f) of an object at u from the lens (0 at infinity).
+
+    Examples
+    --------
+    >>> magnification(50.0, 100.0)
+    1.0
+    >>> magnification(100.0, 1100.0)
+    0.1
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    require("object_distance_mm", object_distance_mm, object_distance_mm > focal_length_mm,
+            "greater than the focal length")
+    return focal_length_mm / (object_distance_mm - focal_length_mm)
+
+
+def extension_mm(focal_length_mm: Any, object_distance_mm: Any) -> Any:
+    """Lens extension beyond infinity focus in mm: v − f = f²/(u − f) = f·m.
+
+    Examples
+    --------
+    >>> extension_mm(50.0, 100.0)
+    50.0
+    """
+    return focal_length_mm * magnification(focal_length_mm, object_distance_mm)
+
+
+def closest_focus_mm(focal_length_mm: Any, hiatus_mm: Any = 0.0) -> Any:
+    """Closest sensor-plane focus distance of a unit-focusing lens in mm: 4f + δ (1:1).
+
+    u + v is smallest, 4f, at u = v = 2f; any closer object has no real image
+    on a sensor behind the lens.
+
+    Examples
+    --------
+    >>> closest_focus_mm(50.0)
+    200.0
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    return 4.0 * focal_length_mm + hiatus_mm
+
+
+def lens_distances(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any = 0.0) -> LensPlaneDistances:
+    """Convert a distance from the sensor plane into object and image distances (u, v) in mm.
+
+    With L = D − δ: u + v = L and 1/u + 1/v = 1/f give
+    u = L/2·(1 + √(1 − 4f/L)) and v = 2f/(1 + √(1 − 4f/L)); v is written
+    without the subtraction L − u so that it stays exact for distant objects.
+
+    Parameters
+    ----------
+    focal_length_mm : float or array, f > 0
+    sensor_distance_mm : float or array, D ≥ 4f + δ (``inf`` allowed)
+    hiatus_mm : float or array, separation of the principal planes δ (0 for a thin lens)
+
+    References
+    ----------
+    camtool design, §4 (geometry); follows from the thin-lens equation.
+
+    Examples
+    --------
+    >>> lens_distances(50.0, 200.0)
+    LensPlaneDistances(object_mm=100.0, image_mm=100.0)
+    >>> lens_distances(50.0, float("inf"))
+    LensPlaneDistances(object_mm=inf, image_mm=50.0)
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    xp = ops(focal_length_mm, sensor_distance_mm, hiatus_mm)
+    span = sensor_distance_mm - hiatus_mm
+    require("distance_mm", sensor_distance_mm, span >= 4.0 * focal_length_mm,
+            "at least the closest focus, 4 × focal length + hiatus, from the sensor")
+    root = xp.sqrt(xp.maximum(1.0 - 4.0 * focal_length_mm / span, 0.0))
+    image = 2.0 * focal_length_mm / (1.0 + root)
+    with quiet(xp):
+        obj = span * 0.5 * (1.0 + root)
+    return LensPlaneDistances(obj, image)
+
+
+def sensor_distance_mm(focal_length_mm: Any, object_distance_mm: Any, hiatus_mm: Any = 0.0) -> Any:
+    """Distance from the sensor plane in mm of an object at u from the lens: D = u + v + δ.
+
+    The inverse of :func:`lens_distances`.
+
+    Examples
+    --------
+    >>> sensor_distance_mm(50.0, 100.0)
+    200.0
+    """
+    return object_distance_mm + image_distance_mm(focal_length_mm, object_distance_mm) + hiatus_mm
+
+
+def blur_diameter_mm(focal_length_mm: Any, f_number: Any, focus_distance_mm: Any, object_distance_mm: Any) -> Any:
+    """Blur-disc diameter in mm on the sensor of an object at u when the lens is focused at s.
+
+    With the sensor at the image v_s of the focus distance and the object
+    imaged at v_o, similar triangles through the aperture A = f/N give
+    C/A = |v_s − v_o|/v_o, i.e. C = (f/N)·|v_s − v_o|/v_o. Distances from the
+    lens; either may be ``inf``.
+
+    References
+    ----------
+    The blur-circle relation C/A = |z_s − z_i|/z_i of the thin-lens lecture
+    notes; Wikipedia, "Circle of confusion".
+
+    Examples
+    --------
+    >>> blur_diameter_mm(50.0, 2.0, 5050.0, float("inf"))
+    0.25
+    """
+    v_focus = image_distance_mm(focal_length_mm, focus_distance_mm)
+    v_object = image_distance_mm(focal_length_mm, object_distance_mm)
+    xp = ops(v_focus, v_object)
+    return focal_length_mm / f_number * xp.fabs(v_focus - v_object) / v_object
+
