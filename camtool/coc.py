@@ -75,13 +75,13 @@ def coc_from_rule(
         divisor = float(match.group(1))
         if divisor <= 0:
             raise UnitError(f"{rule!r}: the divisor must be > 0")
-        return CocChoice(diagonal / divisor, f"{rule.strip()} of the {diagonal:.1f} mm diagonal")
+        return CocChoice(diagonal / divisor, f"{rule.strip()} of {diagonal:.1f} mm")
     match = _PIXELS.match(rule)
     if match:
         if pixel_pitch_mm is None:
             raise UnitError(f"{rule!r} needs the pixel pitch: give --camera or --pixel-pitch")
         factor = float(match.group(1))
-        return CocChoice(factor * pixel_pitch_mm, f"{rule.strip()} × {pixel_pitch_mm * 1000:.2f} µm pixel pitch")
+        return CocChoice(factor * pixel_pitch_mm, f"{rule.strip()} × {pixel_pitch_mm * 1000:.2f} µm")
     match = _PRINT.match(rule)
     if match:
         return _print_coc(rule, match.groups(), width_mm, height_mm)
@@ -98,4 +98,4 @@ def _print_coc(rule: str, parts: tuple[str, ...], width_mm: float, height_mm: fl
         raise UnitError(f"{rule!r}: print sides and viewing distance must be positive and finite")
     enlargement = max(max(a, b) / max(width_mm, height_mm), min(a, b) / min(width_mm, height_mm))
     coc = EYE_ACUITY_MM_AT_250 * (view / 250.0) / enlargement
-    return CocChoice(coc, f"{rule.strip()}: 0.25 mm at 25 cm, print ×{enlargement:.2f}")
+    return CocChoice(coc, f"{rule.strip()}, ×{enlargement:.2f}")

@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from camtool.arrays import broadcast, ops, quiet
-from camtool.errors import DomainError, require_positive
+from camtool.errors import require, require_positive
 from camtool.limits import DofLimits
 from camtool.thinlens import lens_distances
 
@@ -158,8 +158,8 @@ def thin_dof(
         hyperfocal = h + f + f_number * coc_mm
     elif distance_from == "lens":
         require_positive("distance_mm", distance_mm, allow_inf=True)
-        if not bool(xp.all(distance_mm >= 2.0 * f)):
-            raise DomainError("distance_mm", distance_mm, "at least 2 × focal length from the lens (1:1)")
+        require("distance_mm", distance_mm, distance_mm >= 2.0 * f,
+                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
         u, offset, hyperfocal = distance_mm, 0.0, h
     else:
         raise ValueError(f"distance_from must be one of {DISTANCE_PLANES}, not {distance_from!r}")

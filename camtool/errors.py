@@ -16,12 +16,14 @@ class DomainError(ValueError):
     CLI can map the parameter to its option and print one line.
     """
 
-    def __init__(self, param: str, value: Any, valid: str, detail: str = "") -> None:
+    def __init__(self, param: str, value: Any, valid: str, detail: str = "", limit: Any = None) -> None:
         self.param = param
         self.value = value
         self.valid = valid
         self.detail = detail
-        text = f"{param}={_show(value)} is outside the valid range: {valid}"
+        self.limit = limit
+        shown_valid = valid.replace("{limit}", f"{_show(limit)} mm") if limit is not None else valid
+        text = f"{param}={_show(value)} is outside the valid range: {shown_valid}"
         if detail:
             text += f" ({detail})"
         super().__init__(text)
@@ -43,7 +45,7 @@ def first_bad(value: Any, ok: Any) -> Any:
     return float(value[~ok].flat[0])
 
 
-def require(param: str, value: Any, ok: Any, valid: str, detail: str = "") -> None:
+def require(param: str, value: Any, ok: Any, valid: str, detail: str = "", limit: Any = None) -> None:
     """Raise :class:`DomainError` unless ``ok`` holds everywhere.
 
     ``ok`` is a bool (scalar path) or a boolean array (array path); a NaN in
@@ -52,12 +54,13 @@ def require(param: str, value: Any, ok: Any, valid: str, detail: str = "") -> No
     """
     if isinstance(ok, bool):
         if not ok:
-            raise DomainError(param, value, valid, detail)
+            raise DomainError(param, value, valid, detail, limit)
         return
     import numpy as np
 
     if not bool(np.all(ok)):
-        raise DomainError(param, first_bad(value, ok), valid, detail)
+        bad_limit = None if limit is None else first_bad(np.broadcast_to(limit, np.shape(ok)), ok)
+        raise DomainError(param, first_bad(value, ok), valid, detail, bad_limit)
 
 
 def require_positive(param: str, value: Any, unit: str = "mm", allow_inf: bool = False) -> None:

@@ -58,16 +58,18 @@ def focus_for_limits(
     require_positive("focal_length_mm", focal_length_mm)
     require_positive("coc_mm", coc_mm)
     require_positive("far_mm", far_mm, allow_inf=True)
-    require("far_mm", far_mm, far_mm > near_mm, "greater than --near")
+    require("far_mm", far_mm, far_mm > near_mm, "greater than the near limit {limit}", limit=near_mm)
     f = focal_length_mm
     xp = ops(f, coc_mm, near_mm, far_mm)
     if distance_from == "lens":
-        require("near_mm", near_mm, near_mm >= 2.0 * f, "at least 2 × focal length from the lens")
+        require("near_mm", near_mm, near_mm >= 2.0 * f,
+                "at least {limit} from the lens (the closest focus, 2 × focal length)", limit=2.0 * f)
         u = _harmonic(xp, near_mm, far_mm)
         return FocusSolution(u, _f_number(xp, f, coc_mm, near_mm, far_mm, u))
     if distance_from != "sensor":
         raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
-    require("near_mm", near_mm, near_mm >= 4.0 * f, "at least the closest focus, 4 × focal length from the sensor")
+    require("near_mm", near_mm, near_mm >= 4.0 * f,
+            "at least {limit} from the sensor (the closest focus, 4 × focal length)", limit=4.0 * f)
     lo = near_mm + 0.0 * f
     hi = xp.minimum(far_mm, 4.0 * near_mm)
     with quiet(xp):

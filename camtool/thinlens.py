@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops, quiet
+from camtool.arrays import broadcast, ops, quiet
 from camtool.errors import require, require_positive
 
 
@@ -121,7 +121,8 @@ def lens_distances(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any
     xp = ops(focal_length_mm, sensor_distance_mm, hiatus_mm)
     span = sensor_distance_mm - hiatus_mm
     require("distance_mm", sensor_distance_mm, span >= 4.0 * focal_length_mm,
-            "at least the closest focus, 4 × focal length + hiatus, from the sensor")
+            "at least {limit} from the sensor (the closest focus, 1:1: 4 × focal length)",
+            limit=4.0 * focal_length_mm + hiatus_mm)
     root = xp.sqrt(xp.maximum(1.0 - 4.0 * focal_length_mm / span, 0.0))
     image = 2.0 * focal_length_mm / (1.0 + root)
     with quiet(xp):
@@ -165,3 +166,56 @@ def blur_diameter_mm(focal_length_mm: Any, f_number: Any, focus_distance_mm: Any
     xp = ops(v_focus, v_object)
     return focal_length_mm / f_number * xp.fabs(v_focus - v_object) / v_object
 
+
+
+class FocusGeometry(NamedTuple):
+    """Where everything sits when a thin lens focuses on a distance; lengths in mm."""
+
+    object_mm: Any  # u, object to the lens (front principal plane)
+    image_mm: Any  # v, lens (rear principal plane) to the sensor
+    sensor_distance_mm: Any  # u + v + δ, object to the sensor plane
+    magnification: Any  # m = v/u
+    extension_mm: Any  # v − f
+
+
+def focus_geometry(
+    focal_length_mm: Any, distance_mm: Any, distance_from: str = "sensor", hiatus_mm: Any = 0.0
+) -> FocusGeometry:
+    """Object and image distances, magnification and extension for a focus distance in either plane.
+
+    Examples
+    --------
+    >>> focus_geometry(50.0, 200.0)
+    FocusGeometry(object_mm=100.0, image_mm=100.0, sensor_distance_mm=200.0, magnification=1.0, extension_mm=50.0)
+    >>> focus_geometry(50.0, 100.0, distance_from="lens").sensor_distance_mm
+    200.0
+    """
+    if distance_from == "sensor":
+        u, v = lens_distances(focal_length_mm, distance_mm, hiatus_mm)
+        sensor = distance_mm
+    elif distance_from == "lens":
+        require_positive("focal_length_mm", focal_length_mm)
+        require("distance_mm", distance_mm, distance_mm >= 2.0 * focal_length_mm,
+                "at least {limit} from the lens (1:1, 2 × focal length)", limit=2.0 * focal_length_mm)
+        u = distance_mm
+        v = image_distance_mm(focal_length_mm, u)
+        sensor = u + v + hiatus_mm
+    else:
+        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
+    m = v / u
+    return FocusGeometry(u, v, sensor, m, v - focal_length_mm)
+
+
+def focus_for_magnification(focal_length_mm: Any, magnification: Any, hiatus_mm: Any = 0.0) -> FocusGeometry:
+    """Focus geometry for a wanted magnification m: u = f(1 + 1/m), v = f(1 + m).
+
+    Examples
+    --------
+    >>> focus_for_magnification(100.0, 0.5).sensor_distance_mm
+    450.0
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    require_positive("magnification", magnification, unit="")
+    u = focal_length_mm * (1.0 + 1.0 / magnification)
+    v = focal_length_mm * (1.0 + magnification)
+    return FocusGeometry(u, v, u + v + hiatus_mm, broadcast(magnification, u), v - focal_length_mm)

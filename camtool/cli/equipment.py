@@ -1,0 +1,114 @@
+"""Resolve the equipment options (sensor, crop, CoC) into numbers for the formula core.
+
+The preset database is loaded only when a preset is named: the default
+sensor and an inline size such as ``36x24`` need no YAML at all.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Any, NamedTuple
+
+import click
+
+from camtool.coc import DEFAULT_RULE, coc_from_rule
+from camtool.units import UnitError
+
+FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
+_INLINE = re.compile(r"^\s*(\d+(?:\.\d*)?)\s*(?:mm)?\s*[x×X*]\s*(\d+(?:\.\d*)?)\s*(?:mm)?\s*$")
+
+
+class SensorChoice(NamedTuple):
+    """The sensor in use: size in mm, a label for the footer, and preset extras."""
+
+    width_mm: float
+    height_mm: float
+    label: str
+    coc_mm: float | None = None
+    pixel_pitch_mm: float | None = None
+
+    @property
+    def crop_factor(self) -> float:
+        """Ratio of the 36 × 24 mm diagonal to this sensor's diagonal."""
+        return FULL_FRAME_DIAGONAL_MM / math.hypot(self.width_mm, self.height_mm)
+
+
+FULL_FRAME = SensorChoice(36.0, 24.0, "full frame 36 × 24 mm")
+
+
+def open_presets(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:
+    """The preset database with the user's files, loaded once per command; a broken file exits 1."""
+    if ctx.obj is not None and "db" in ctx.obj:
+        return ctx.obj["db"]
+    from camtool.presets import PresetFileError, load_db
+
+    try:
+        db = load_db(extra_files=tuple(preset_files))
+    except PresetFileError as error:
+        raise click.ClickException(str(error)) from None
+    ctx.ensure_object(dict)["db"] = db
+    return db
+
+
+def lookup(ctx: click.Context, kind: str, name: str, option: str, preset_files: tuple[str, ...]) -> Any:
+    """Find a preset by name; an unknown name is a usage error on ``option`` with a suggestion."""
+    from camtool.presets import PresetFileError, PresetNotFound
+
+    db = open_presets(ctx, preset_files)
+    try:
+        return db.get(kind, name)
+    except PresetNotFound as error:
+        param = next((p for p in ctx.command.params if p.name == option), None)
+        raise click.BadParameter(str(error), ctx=ctx, param=param) from None
+    except PresetFileError as error:
+        raise click.ClickException(str(error)) from None
+
+
+def resolve_sensor(
+    ctx: click.Context, sensor: str | None, crop: float | None, preset_files: tuple[str, ...] = ()
+) -> SensorChoice:
+    """The sensor named by ``--sensor`` (preset or WxH) or ``--crop``; full frame when neither is given."""
+    if sensor is not None and crop is not None:
+        raise click.UsageError("give --sensor or --crop, not both", ctx)
+    if crop is not None:
+        if not (0.1 <= crop <= 100 and math.isfinite(crop)):
+            raise click.BadParameter(f"{crop:g} is outside the valid range: 0.1 to 100", ctx=ctx,
+                                     param=_param(ctx, "crop"))
+        w, h = 36.0 / crop, 24.0 / crop
+        return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
+    if sensor is None:
+        return FULL_FRAME
+    match = _INLINE.match(sensor)
+    if match:
+        w, h = float(match.group(1)), float(match.group(2))
+        if w <= 0 or h <= 0:
+            raise click.BadParameter(f"{sensor} is outside the valid range: both sides > 0 mm", ctx=ctx,
+                                     param=_param(ctx, "sensor"))
+        return SensorChoice(max(w, h), min(w, h), f"{max(w, h):g} × {min(w, h):g} mm")
+    preset = lookup(ctx, "sensor", sensor, "sensor", preset_files)
+    return SensorChoice(preset.width_mm, preset.height_mm,
+                        f"{preset.name} {preset.width_mm:g} × {preset.height_mm:g} mm", preset.coc_mm)
+
+
+def resolve_coc(
+    ctx: click.Context, coc: list[float], rule: str | None, sensor: SensorChoice, pixel_pitch: list[float] | None
+) -> tuple[list[float], str]:
+    """The CoC values in mm and a footer note saying where they came from.
+
+    Precedence: ``--coc`` > ``--coc-rule`` > the sensor preset's own CoC > d/1500.
+    """
+    if coc:
+        return coc, "--coc"
+    if rule is None and sensor.coc_mm is not None:
+        return [sensor.coc_mm], f"{sensor.label} preset"
+    pitch = pixel_pitch[0] if pixel_pitch else sensor.pixel_pitch_mm
+    try:
+        choice = coc_from_rule(rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
+    except UnitError as error:
+        raise click.BadParameter(str(error), ctx=ctx, param=_param(ctx, "coc_rule")) from None
+    return [choice.coc_mm], choice.origin
+
+
+def _param(ctx: click.Context, name: str) -> click.Parameter | None:
+    return next((p for p in ctx.command.params if p.name == name), None)

@@ -1,0 +1,114 @@
+"""Options shared by the commands, and the translation of library errors into click errors.
+
+Each decorator adds one family of options with the same names, help and
+defaults everywhere: output (``--format``, ``--units``, ``--presets``), the
+lens (``-f``), the aperture (``-N``, ``--exact-stops``), the focus distance
+(``-s``, ``--distance-from``), the sensor (``--sensor``, ``--crop``) and the
+circle of confusion (``--coc``, ``--coc-rule``).
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Iterator
+from typing import Any, TypeVar
+
+import click
+
+from camtool.cli.params import FNumberType, LengthType
+from camtool.errors import DomainError
+from camtool.render.output import FORMATS
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+LENGTH_MM = LengthType("mm")
+DISTANCE_M = LengthType("m", allow_inf=True)
+
+# Library parameter name -> click parameter name, for error messages.
+PARAM_FOR = {
+    "focal_length_mm": "focal_length",
+    "f_number": "f_number",
+    "coc_mm": "coc",
+    "distance_mm": "distance",
+    "near_mm": "near",
+    "far_mm": "far",
+    "magnification": "magnification",
+    "sensor_mm": "sensor",
+}
+SHOWN_IN_METRES = {"distance", "near", "far"}
+
+
+def _stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
+    def apply(function: F) -> F:
+        for decorator in reversed(decorators):
+            function = decorator(function)
+        return function
+
+    return apply
+
+
+output_options = _stack(
+    click.option("--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True,
+                 envvar="CAMTOOL_FORMAT", help="Output: a table for people, JSON (an array of rows) or CSV for scripts."),
+    click.option("--units", type=click.Choice(["metric", "imperial"]), default="metric", show_default=True,
+                 help="Units of the table (JSON and CSV are always in mm, degrees and seconds)."),
+    click.option("--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
+                 help="Extra preset file (YAML); repeatable, later files win."),
+)
+
+focal_option = click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
+                            help="Focal length, e.g. 50 or 50mm (bare numbers are mm); a list 24,35,50 gives a row each.")
+
+aperture_options = _stack(
+    click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
+                 help="f-number: 8, f/8 or f8; a list 2.8,4,5.6 gives a row each."),
+    click.option("--exact-stops", is_flag=True,
+                 help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627)."),
+)
+
+distance_plane_option = click.option(
+    "--distance-from", "distance_from", type=click.Choice(["sensor", "lens"]), default="sensor", show_default=True,
+    help="Reference plane of all distances: the sensor (focal-plane mark, as lens scales and specs) or the lens.")
+
+sensor_options = _stack(
+    click.option("--sensor", metavar="NAME|WxH",
+                 help="Sensor preset (full-frame, aps-c, m43, ...) or size in mm (36x24). Default: full frame."),
+    click.option("--crop", type=float, help="Crop factor relative to 36 x 24 mm, instead of --sensor."),
+)
+
+coc_options = _stack(
+    click.option("--coc", type=LENGTH_MM, multiple=True,
+                 help="Circle of confusion, e.g. 0.03 or 0.03mm (overrides --coc-rule)."),
+    click.option("--coc-rule", default=None, metavar="RULE",
+                 help="CoC from the sensor: d/1500 (default), d/1730, d/1442, px:2 (pixel pitches), print:8x10in@25cm."),
+    click.option("--pixel-pitch", type=LENGTH_MM, help="Pixel pitch for --coc-rule px:K, e.g. 4.3um."),
+)
+
+
+@contextlib.contextmanager
+def library_errors(ctx: click.Context) -> Iterator[None]:
+    """Turn a :class:`DomainError` from the formula core into a ``BadParameter`` on the right option."""
+    try:
+        yield
+    except DomainError as error:
+        name = PARAM_FOR.get(error.param, error.param)
+        param = next((p for p in ctx.command.params if p.name == name), None)
+        raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param) from None
+
+
+def domain_message(error: DomainError, name: str) -> str:
+    """'<value> is outside the valid range: <range>' with lengths shown in a sensible unit."""
+    metres = name in SHOWN_IN_METRES
+    value = show_length(error.value, metres) if error.param.endswith("_mm") else f"{error.value:g}"
+    valid = error.valid
+    if error.limit is not None:
+        valid = valid.replace("{limit}", show_length(error.limit, metres))
+    text = f"{value} is outside the valid range: {valid}"
+    return text + (f" ({error.detail})" if error.detail else "")
+
+
+def show_length(mm: float, metres: bool = False) -> str:
+    """A length for an error message: metres for distances, millimetres otherwise."""
+    if metres and abs(mm) >= 1000:
+        return f"{mm / 1000:.4g} m"
+    return f"{mm:.4g} mm"

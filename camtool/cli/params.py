@@ -1,0 +1,109 @@
+"""click parameter types for camtool's units: lengths, distances, f-numbers, times, sensors.
+
+Each type accepts a comma-separated list (``-N 2.8,4,5.6``) and returns a
+list of floats in millimetres or seconds; options that are also repeatable
+are flattened by :func:`flatten`. Bad values fail with click's one-line
+``Invalid value for '-N' / '--f-number': ...`` and exit status 2.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import click
+
+from camtool.units import UnitError, parse_f_number, parse_length, parse_time
+
+
+class _ListType(click.ParamType):
+    """A comma-separated list of values, each parsed and range-checked."""
+
+    parse: Callable[[str], float]
+    valid = "> 0"
+
+    def check(self, value: float) -> bool:
+        return value > 0 and math.isfinite(value)
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
+        if isinstance(value, list):
+            return value
+        items = [item for item in str(value).split(",") if item.strip()] if isinstance(value, str) else [value]
+        if not items:
+            self.fail(f"{value!r} is empty; expected {self.name}", param, ctx)
+        out = []
+        for item in items:
+            try:
+                number = self.parse(item)
+            except UnitError as error:
+                self.fail(str(error), param, ctx)
+            if not self.check(number):
+                shown = item.strip() if isinstance(item, str) else item
+                self.fail(f"{shown} is out of range; valid: {self.valid}", param, ctx)
+            out.append(number)
+        return out
+
+
+class LengthType(_ListType):
+    """Lengths; a bare number is in ``default_unit`` (mm for focal lengths and sizes)."""
+
+    name = "length"
+
+    def __init__(self, default_unit: str = "mm", allow_inf: bool = False) -> None:
+        self.default_unit = default_unit
+        self.allow_inf = allow_inf
+        self.valid = "> 0" + (" (or inf)" if allow_inf else "")
+
+    def parse(self, text: str) -> float:  # type: ignore[override]
+        return parse_length(text, self.default_unit)
+
+    def check(self, value: float) -> bool:
+        return value > 0 and (self.allow_inf or math.isfinite(value))
+
+
+class FNumberType(_ListType):
+    """f-numbers written 8, f/8 or f8; valid 0.5 to 1024 (pinholes)."""
+
+    name = "f-number"
+    valid = "0.5 to 1024 (written 8, f/8 or f8)"
+
+    def parse(self, text: str) -> float:  # type: ignore[override]
+        return parse_f_number(text)
+
+    def check(self, value: float) -> bool:
+        return 0.5 <= value <= 1024
+
+
+class TimeType(_ListType):
+    """Times written 1/250, 0.004, 2s, 30, 1m30s."""
+
+    name = "time"
+    valid = "> 0 s (written 1/250, 0.5, 2s, 1m30s)"
+
+    def parse(self, text: str) -> float:  # type: ignore[override]
+        return parse_time(text)
+
+
+class NumberType(_ListType):
+    """Plain numbers within [low, high]."""
+
+    name = "number"
+
+    def __init__(self, low: float, high: float) -> None:
+        self.low, self.high = low, high
+        self.valid = f"{low:g} to {high:g}"
+
+    def parse(self, text: str) -> float:  # type: ignore[override]
+        try:
+            return float(text)
+        except ValueError:
+            raise UnitError(f"{text!r} is not a number") from None
+
+    def check(self, value: float) -> bool:
+        return self.low <= value <= self.high
+
+
+def flatten(values: Iterable[list[float]] | None) -> list[float]:
+    """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
+    return [v for group in values or () for v in (group if isinstance(group, list) else [group])]
