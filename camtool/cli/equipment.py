@@ -12,6 +12,7 @@ from typing import Any, NamedTuple
 
 import click
 
+from camtool.cli.params import flatten
 from camtool.coc import DEFAULT_RULE, coc_from_rule
 from camtool.units import UnitError
 
@@ -99,7 +100,7 @@ def resolve_coc(
     Precedence: ``--coc`` > ``--coc-rule`` > the sensor preset's own CoC > d/1500.
     """
     if coc:
-        return coc, "--coc"
+        return flatten(coc), "--coc"
     if rule is None and sensor.coc_mm is not None:
         return [sensor.coc_mm], f"{sensor.label} preset"
     pitch = pixel_pitch[0] if pixel_pitch else sensor.pixel_pitch_mm

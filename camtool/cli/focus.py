@@ -1,0 +1,109 @@
+"""``camtool focus``: thin-lens focusing, and the inverse -- where to focus for a wanted near and far limit."""
+
+from __future__ import annotations
+
+import click
+
+from camtool.cli.common import f_numbers, footer, required, rows_from
+from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
+                                 library_errors, output_options, sensor_options)
+from camtool.cli.params import NumberType, flatten
+from camtool.grid import combine
+from camtool.inverse import focus_for_limits
+from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
+from camtool.render.output import write_rows
+from camtool.thinlens import closest_focus_mm, focus_for_magnification, focus_geometry
+
+FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
+                "f_number", "working_f_number", "closest_focus_mm", "distance_from"]
+FORWARD_COLUMNS = [
+    Column("focal_length_mm", "f", SMALL),
+    Column("distance_mm", "focus"),
+    Column("image_distance_mm", "image dist.", SMALL),
+    Column("extension_mm", "extension", SMALL),
+    Column("magnification", "m", NUMBER),
+    Column("working_f_number", "working N", FNUMBER),
+]
+INVERSE_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "f_number", "coc_mm", "distance_from"]
+INVERSE_COLUMNS = [
+    Column("focal_length_mm", "f", SMALL),
+    Column("near_mm", "near"),
+    Column("far_mm", "far"),
+    Column("distance_mm", "focus at"),
+    Column("f_number", "N", FNUMBER),
+]
+
+
+@click.command("focus")
+@focal_option
+@click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
+              help="Focus distance (bare numbers are metres).")
+@click.option("-m", "--magnification", type=NumberType(1e-9, 1000.0), multiple=True,
+              help="Wanted magnification (0.5 = 1:2) instead of -s.")
+@aperture_options
+@click.option("--near", type=DISTANCE_M, multiple=True, help="Inverse: wanted near limit (bare numbers are metres).")
+@click.option("--far", type=DISTANCE_M, multiple=True, help="Inverse: wanted far limit (inf allowed).")
+@sensor_options
+@coc_options
+@distance_plane_option
+@output_options
+@click.pass_context
+def focus(ctx: click.Context, focal_length, distance, magnification, f_number, exact_stops, near, far, sensor, crop,
+          coc, coc_rule, pixel_pitch, distance_from, fmt, units, preset_files) -> None:
+    """Thin-lens focusing: image distance, extension, magnification, working f-number.
+
+    With --near and --far it answers the inverse question: where to focus and
+    which f-number make exactly that range acceptably sharp.
+
+    \b
+    Examples:
+      camtool focus -f 100 -s 0.5m -N 8
+      camtool focus -f 100 -m 0.5
+      camtool focus -f 35 --near 2m --far 10m
+    """
+    focal = required(ctx, focal_length, "-f")
+    if near or far:
+        _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
+                 preset_files)
+        return
+    if bool(distance) == bool(magnification):
+        raise click.UsageError("give either -s/--distance or -m/--magnification (or --near and --far)", ctx)
+    apertures = f_numbers(f_number, exact_stops) or [float("nan")]
+    wanted = flatten(distance) or flatten(magnification)
+    count, (f, w, n) = combine(focal, wanted, apertures)
+    with library_errors(ctx):
+        geometry = focus_geometry(f, w, distance_from) if distance else focus_for_magnification(f, w)
+        nearest = closest_focus_mm(f)
+    plane_distance = geometry.sensor_distance_mm if distance_from == "sensor" else geometry.object_mm
+    values = {
+        "focal_length_mm": f, "distance_mm": plane_distance, "image_distance_mm": geometry.image_mm,
+        "extension_mm": geometry.extension_mm, "magnification": geometry.magnification,
+        "closest_focus_mm": nearest if distance_from == "sensor" else 2.0 * f, "distance_from": distance_from,
+    }
+    keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
+    if f_number:
+        values.update({"f_number": n, "working_f_number": n * (1.0 + geometry.magnification)})
+    else:
+        keys = [k for k in keys if k not in ("f_number", "working_f_number")]
+        columns = [c for c in columns if c.key != "working_f_number"]
+    rows = rows_from(count, values)
+    note = footer("thin", None, "", "unit focusing, m = v/u", distance_from) if fmt == "table" else ""
+    write_rows(rows, columns, fmt, units, note, keys=keys)
+
+
+def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
+             preset_files) -> None:
+    nears = required(ctx, near, "--near")
+    fars = required(ctx, far, "--far")
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
+    count, (f, a, b, c) = combine(focal, nears, fars, cocs)
+    with library_errors(ctx):
+        solution = focus_for_limits(f, c, a, b, distance_from)
+    rows = rows_from(count, {
+        "focal_length_mm": f, "near_mm": a, "far_mm": b, "distance_mm": solution.distance_mm,
+        "f_number": solution.f_number, "coc_mm": c, "distance_from": distance_from,
+    })
+    note = footer("thin", cocs, coc_origin, chosen.label, distance_from) if fmt == "table" else ""
+    write_rows(rows, INVERSE_COLUMNS, fmt, units, note, keys=INVERSE_KEYS)

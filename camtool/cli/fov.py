@@ -1,0 +1,80 @@
+"""``camtool fov``: angle of view, and the field covered at a distance."""
+
+from __future__ import annotations
+
+import click
+
+from camtool.cli.common import footer, required, rows_from
+from camtool.cli.equipment import resolve_sensor
+from camtool.cli.options import DISTANCE_M, distance_plane_option, focal_option, library_errors, output_options, \
+    sensor_options
+from camtool.cli.params import flatten
+from camtool.fov import field_of_view, field_size_mm
+from camtool.grid import combine
+from camtool.render.columns import ANGLE, NUMBER, SMALL, Column
+from camtool.render.output import write_rows
+from camtool.thinlens import focus_geometry
+
+KEYS = ["focal_length_mm", "horizontal_deg", "vertical_deg", "diagonal_deg", "equivalent_focal_length_mm",
+        "crop_factor", "sensor_width_mm", "sensor_height_mm"]
+DISTANCE_KEYS = ["distance_mm", "magnification", "field_width_mm", "field_height_mm", "distance_from"]
+COLUMNS = [
+    Column("focal_length_mm", "f", SMALL),
+    Column("equivalent_focal_length_mm", "35mm eq.", SMALL),
+    Column("horizontal_deg", "horizontal", ANGLE),
+    Column("vertical_deg", "vertical", ANGLE),
+    Column("diagonal_deg", "diagonal", ANGLE),
+]
+DISTANCE_COLUMNS = [
+    Column("distance_mm", "distance"),
+    Column("field_width_mm", "field width"),
+    Column("field_height_mm", "field height"),
+    Column("magnification", "m", NUMBER),
+]
+
+
+@click.command("fov")
+@focal_option
+@click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
+              help="Focus distance (bare numbers are metres): angles then include focus breathing, "
+                   "and the field covered at that distance is shown.")
+@sensor_options
+@distance_plane_option
+@output_options
+@click.pass_context
+def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from, fmt, units, preset_files) -> None:
+    """Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.
+
+    Without -s the angles are for infinity focus, 2·atan(size / 2f). With -s the
+    image distance f(1 + m) replaces f (a unit-focusing lens "breathes") and
+    the field at the subject is sensor size / m.
+
+    \b
+    Examples:
+      camtool fov -f 24,50,85 --sensor aps-c
+      camtool fov -f 100 -s 0.5m --format json
+    """
+    focal = required(ctx, focal_length, "-f")
+    distances = flatten(distance)
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    count, (f, s) = combine(focal, distances or [float("inf")])
+    with library_errors(ctx):
+        geometry = focus_geometry(f, s, distance_from)
+        angles = field_of_view(chosen.width_mm, chosen.height_mm, f, geometry.magnification)
+        fields = (field_size_mm(chosen.width_mm, geometry.magnification),
+                  field_size_mm(chosen.height_mm, geometry.magnification)) if distances else (None, None)
+    values = {
+        "focal_length_mm": f, "horizontal_deg": angles.horizontal_deg, "vertical_deg": angles.vertical_deg,
+        "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": f * chosen.crop_factor,
+        "crop_factor": chosen.crop_factor, "sensor_width_mm": chosen.width_mm, "sensor_height_mm": chosen.height_mm,
+    }
+    keys, columns = list(KEYS), list(COLUMNS)
+    if distances:
+        values.update({"distance_mm": s, "magnification": geometry.magnification, "field_width_mm": fields[0],
+                       "field_height_mm": fields[1], "distance_from": distance_from})
+        keys += DISTANCE_KEYS
+        columns += DISTANCE_COLUMNS
+    rows = rows_from(count, values)
+    note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})",
+                  distance_from if distances else None) if fmt == "table" else ""
+    write_rows(rows, columns, fmt, units, note, keys=keys)

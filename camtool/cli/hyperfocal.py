@@ -1,0 +1,61 @@
+"""``camtool hyperfocal``: the hyperfocal distance and its near limit, per aperture."""
+
+from __future__ import annotations
+
+import click
+
+from camtool.cli.common import f_numbers, footer, required, rows_from
+from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.options import (aperture_options, coc_options, distance_plane_option, focal_option,
+                                 library_errors, output_options, sensor_options)
+from camtool.grid import combine
+from camtool.ladder import CHOICES, depth_of_field
+from camtool.render.columns import FNUMBER, SMALL, Column
+from camtool.render.output import write_rows
+
+KEYS = ["focal_length_mm", "f_number", "hyperfocal_mm", "near_mm", "coc_mm", "model", "distance_from"]
+COLUMNS = [
+    Column("focal_length_mm", "f", SMALL),
+    Column("f_number", "N", FNUMBER),
+    Column("hyperfocal_mm", "hyperfocal"),
+    Column("near_mm", "sharp from"),
+    Column("coc_mm", "CoC", SMALL),
+]
+
+
+@click.command("hyperfocal")
+@focal_option
+@aperture_options
+@sensor_options
+@coc_options
+@distance_plane_option
+@click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True,
+              help="approx: H = f²/(N·c); thin (and auto): H = f²/(N·c) + f, exact.")
+@output_options
+@click.pass_context
+def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, crop, coc, coc_rule, pixel_pitch,
+               distance_from, model, fmt, units, preset_files) -> None:
+    """Hyperfocal distance: focus there and everything from the near limit to infinity is sharp.
+
+    \b
+    Examples:
+      camtool hyperfocal -f 24 -N 8,11,16
+      camtool hyperfocal -f 35 -N 8 --sensor aps-c --format json
+    """
+    focal = required(ctx, focal_length, "-f")
+    apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
+    count, (f, n, c) = combine(focal, apertures, cocs)
+    with library_errors(ctx):
+        # The hyperfocal distance in the chosen plane is where the far limit first reaches infinity;
+        # the limits of a focus at infinity carry it, and focusing there gives the near limit.
+        at_infinity = depth_of_field(model, f, n, c, float("inf"), distance_from)
+        h = at_infinity.limits.hyperfocal_mm
+        at_h = depth_of_field(model, f, n, c, h, distance_from)
+    rows = rows_from(count, {
+        "focal_length_mm": f, "f_number": n, "hyperfocal_mm": h, "near_mm": at_h.limits.near_mm, "coc_mm": c,
+        "model": at_h.model, "distance_from": distance_from,
+    })
+    note = footer(at_h.model, cocs, coc_origin, chosen.label, distance_from) if fmt == "table" else ""
+    write_rows(rows, COLUMNS, fmt, units, note, keys=KEYS)
