@@ -40,7 +40,7 @@ class _ListType(click.ParamType):
                 self.fail(str(error), param, ctx)
             if not self.check(number):
                 shown = item.strip() if isinstance(item, str) else item
-                self.fail(f"{shown} is out of range; valid: {self.valid}", param, ctx)
+                self.fail(f"{shown} is outside the valid range: {self.valid}", param, ctx)
             out.append(number)
         return out
 
@@ -53,7 +53,7 @@ class LengthType(_ListType):
     def __init__(self, default_unit: str = "mm", allow_inf: bool = False) -> None:
         self.default_unit = default_unit
         self.allow_inf = allow_inf
-        self.valid = "> 0" + (" (or inf)" if allow_inf else "")
+        self.valid = f"> 0 {default_unit}" + (" (or inf)" if allow_inf else "")
 
     def parse(self, text: str) -> float:  # type: ignore[override]
         return parse_length(text, self.default_unit)
@@ -63,16 +63,16 @@ class LengthType(_ListType):
 
 
 class FNumberType(_ListType):
-    """f-numbers written 8, f/8 or f8; valid 0.5 to 1024 (pinholes)."""
+    """f-numbers written 8, f/8 or f8; valid 0.7 to 1024 (pinholes)."""
 
     name = "f-number"
-    valid = "0.5 to 1024 (written 8, f/8 or f8)"
+    valid = "0.7 to 1024 (written 8, f/8 or f8)"
 
     def parse(self, text: str) -> float:  # type: ignore[override]
         return parse_f_number(text)
 
     def check(self, value: float) -> bool:
-        return 0.5 <= value <= 1024
+        return 0.7 <= value <= 1024
 
 
 class TimeType(_ListType):

@@ -1,0 +1,26 @@
+"""Running the CLI in-process for tests."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from click.testing import CliRunner, Result
+
+from camtool.cli import cli
+
+
+def run(*args: str, env: dict[str, str | None] | None = None) -> Result:
+    """Invoke ``camtool ARGS`` with no COLUMNS/NO_COLOR/CAMTOOL_FORMAT from the caller's environment."""
+    base: dict[str, str | None] = {"COLUMNS": None, "CAMTOOL_FORMAT": None, "NO_COLOR": None}
+    base.update(env or {})
+    return CliRunner().invoke(cli, list(args), env=base, catch_exceptions=False)
+
+
+def run_json(*args: str) -> list[dict[str, Any]]:
+    """Invoke with ``--format json``, assert success and return the parsed rows."""
+    result = run(*args, "--format", "json")
+    assert result.exit_code == 0, result.output
+    rows = json.loads(result.stdout)
+    assert isinstance(rows, list)
+    return rows

@@ -1,0 +1,140 @@
+"""fov, focus, hyperfocal and the command group through click."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from camtool.cli import COMMANDS, cli
+from camtool.dof import hyperfocal_mm, thin_dof
+from camtool.fov import field_of_view
+from camtool.inverse import focus_for_limits
+from camtool.thinlens import focus_geometry
+from cli_helpers import run, run_json
+
+
+def test_hyperfocal_json_both_planes() -> None:
+    lens = run_json("hyperfocal", "-f", "50", "-N", "8", "--coc", "0.03", "--distance-from", "lens")
+    sensor = run_json("hyperfocal", "-f", "50", "-N", "8", "--coc", "0.03")
+    approx = run_json("hyperfocal", "-f", "50", "-N", "8", "--coc", "0.03", "--model", "approx")
+    # 50 mm f/8 c = 0.03 mm: H = 10,467 mm with +f, 10,417 mm without (the issue's worked example)
+    assert lens[0]["hyperfocal_mm"] == pytest.approx(10466.6667, abs=1e-3)
+    assert lens[0]["near_mm"] == pytest.approx(lens[0]["hyperfocal_mm"] / 2, rel=1e-15)
+    assert approx[0]["hyperfocal_mm"] == pytest.approx(10416.6667, abs=1e-3)
+    # from the sensor the lens-sensor spacing at that focus, f + Nc, is added
+    assert sensor[0]["hyperfocal_mm"] == pytest.approx(hyperfocal_mm(50.0, 8.0, 0.03) + 50 + 8 * 0.03, rel=1e-15)
+    assert thin_dof(50.0, 8.0, 0.03, sensor[0]["hyperfocal_mm"]).far_mm == math.inf
+
+
+def test_fov_json_matches_library_and_breathing() -> None:
+    rows = run_json("fov", "-f", "24,50")
+    for row in rows:
+        angles = field_of_view(36.0, 24.0, row["focal_length_mm"])
+        assert row["horizontal_deg"] == pytest.approx(angles.horizontal_deg, rel=1e-15)
+        assert row["diagonal_deg"] == pytest.approx(angles.diagonal_deg, rel=1e-15)
+    (near,) = run_json("fov", "-f", "100", "-s", "0.4m")  # 1:1 from the sensor: 4f
+    assert near["magnification"] == pytest.approx(1.0)
+    # at 1:1 the image distance is 2f, so the angle is 2·atan(36/400) and the field equals the sensor
+    assert near["horizontal_deg"] == pytest.approx(2 * math.degrees(math.atan(36 / 400)))
+    assert near["field_width_mm"] == pytest.approx(36.0)
+
+
+def test_fov_crop_factor_and_equivalent() -> None:
+    (row,) = run_json("fov", "-f", "50", "--crop", "1.5")
+    assert row["crop_factor"] == pytest.approx(1.5)
+    assert row["equivalent_focal_length_mm"] == pytest.approx(75.0)
+
+
+def test_focus_forward_and_magnification() -> None:
+    (row,) = run_json("focus", "-f", "100", "-s", "0.5m", "-N", "8")
+    geometry = focus_geometry(100.0, 500.0)
+    assert row["image_distance_mm"] == pytest.approx(geometry.image_mm)
+    assert row["working_f_number"] == pytest.approx(8 * (1 + geometry.magnification))
+    (half,) = run_json("focus", "-f", "100", "-m", "0.5")
+    # u = f(1 + 1/m) = 300, v = f(1 + m) = 150: 450 mm from the sensor
+    assert half["distance_mm"] == pytest.approx(450.0)
+    assert half["extension_mm"] == pytest.approx(50.0)
+    assert "working_f_number" not in half
+
+
+def test_focus_inverse_round_trips() -> None:
+    (row,) = run_json("focus", "-f", "35", "--near", "2m", "--far", "10m", "--coc", "0.03")
+    expected = focus_for_limits(35.0, 0.03, 2000.0, 10000.0)
+    assert row["distance_mm"] == pytest.approx(expected.distance_mm)
+    limits = thin_dof(35.0, row["f_number"], 0.03, row["distance_mm"])
+    assert limits.near_mm == pytest.approx(2000.0, rel=1e-12)
+    assert limits.far_mm == pytest.approx(10000.0, rel=1e-12)
+
+
+def test_focus_needs_one_of_distance_or_magnification() -> None:
+    result = run("focus", "-f", "50")
+    assert result.exit_code == 2
+    assert result.stderr == "Error: give either -s/--distance or -m/--magnification (or --near and --far)\n"
+
+
+def test_focus_inverse_far_must_exceed_near() -> None:
+    result = run("focus", "-f", "35", "--near", "2m", "--far", "1m")
+    assert result.exit_code == 2
+    assert result.stderr == ("Error: Invalid value for '--far': 1 m is outside the valid range: "
+                             "greater than the near limit 2 m\n")
+
+
+HYPERFOCAL_TABLE = """\
+   f          hyperfocal   sharp from    CoC
+(mm)      N          (m)          (m)   (mm)
+────────────────────────────────────────────
+  24    f/8        2.448        1.236   0.03
+  24   f/16        1.248       0.6365   0.03
+thin model · CoC 0.03 mm (--coc) · full frame 36 × 24 mm · from the sensor plane
+"""
+
+FOV_TABLE = """\
+   f   35mm eq.   horizontal   vertical   diagonal
+(mm)       (mm)          (°)        (°)        (°)
+──────────────────────────────────────────────────
+  24         24        73.74      53.13      84.06
+  50         50        39.60      26.99      46.79
+full frame 36 × 24 mm (crop 1)
+"""
+
+FOCUS_TABLE = """\
+   f   focus   image dist.   extension                     
+(mm)    (mm)          (mm)        (mm)        m   working N
+───────────────────────────────────────────────────────────
+ 100   500.0         138.2        38.2   0.3820      f/11.1
+thin model · unit focusing, m = v/u · from the sensor plane
+"""
+
+
+@pytest.mark.parametrize(
+    ("args", "table"),
+    [
+        (["hyperfocal", "-f", "24", "-N", "8,16", "--coc", "0.03"], HYPERFOCAL_TABLE),
+        (["fov", "-f", "24,50"], FOV_TABLE),
+        (["focus", "-f", "100", "-s", "0.5m", "-N", "8"], FOCUS_TABLE),
+    ],
+    ids=["hyperfocal", "fov", "focus"],
+)
+def test_table_snapshots(args: list[str], table: str) -> None:
+    assert run(*args).stdout == table
+
+
+def test_imperial_table_uses_feet() -> None:
+    out = run("dof", "-f", "50", "-N", "8", "-s", "10ft", "--units", "imperial").stdout
+    assert "(ft)" in out.splitlines()[1] and "(m)" not in out
+
+
+def test_unknown_command_suggests() -> None:
+    result = run("hyperfocl")
+    assert result.exit_code == 2
+    assert result.stderr == "Error: No such command 'hyperfocl'. Did you mean 'hyperfocal'?\n"
+
+
+def test_every_command_is_documented() -> None:
+    for name in cli.list_commands(None):  # type: ignore[arg-type]
+        command = cli.get_command(None, name)  # type: ignore[arg-type]
+        assert command is not None and command.help and "Examples" in command.help, name
+        assert name in COMMANDS
+        result = run(name, "--help")
+        assert result.exit_code == 0 and "--format" in result.stdout or name == "presets"
