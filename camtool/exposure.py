@@ -316,7 +316,7 @@ def equivalent_exposures(ev: float, f_min: float = 1.0, f_max: float = 32.0, ste
 
     For each standard f-number N from ``f_min`` to ``f_max`` (full, half or
     third stops) the time t = N²/2^EV is snapped to the same kind of stop.
-    Rows whose time falls outside 1/64000 s to 10⁶ s are left out.
+    Rows whose time (exact or snapped) falls outside 1/64000 s to 10⁶ s are left out.
 
     Parameters
     ----------
@@ -342,6 +342,8 @@ def equivalent_exposures(ev: float, f_min: float = 1.0, f_max: float = 32.0, ste
             continue
         f_snap: Snapped = snap_f_number(n, step)
         t_snap: Snapped = snap_shutter_s(exact, step)
+        if not (SHUTTER_RANGE_S[0] <= t_snap.exact <= SHUTTER_RANGE_S[1]):
+            continue  # 1/65536 s snaps out of the domain, although 1/64000 s is in it
         rows.append((f_snap.exact, f_snap.nominal, t_snap.exact, t_snap.nominal, exact,
                      exposure_value(f_snap.exact, t_snap.exact)))
     columns = list(zip(*rows)) if rows else [()] * 6
