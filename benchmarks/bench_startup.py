@@ -1,0 +1,67 @@
+"""Start-up budget: wall time of single camtool commands against Python's own imports.
+
+DESIGN §7: ``camtool dof ... --format json`` within 2× of ``python -c "import click"``,
+and a table within 2× of ``python -c "import click, rich.console, rich.table"``.
+Each command runs ``--repeat`` times, interleaved so that machine noise hits
+every candidate alike; the figures are medians and the verdicts are ratios.
+
+Run: ``python benchmarks/bench_startup.py [--repeat 30]``
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+PY = sys.executable
+CAMTOOL = shutil.which("camtool") or ""
+DOF = ["dof", "-f", "50", "-N", "8", "-s", "3m"]
+
+CASES = {
+    "python -c 'import click'": [PY, "-c", "import click"],
+    "python -c 'import click, rich.console, rich.table'": [PY, "-c", "import click, rich.console, rich.table"],
+    "camtool dof ... --format json": [CAMTOOL, *DOF, "--format", "json"],
+    "camtool dof ... (table)": [CAMTOOL, *DOF],
+    "camtool dof ... --sensor aps-c --format json": [CAMTOOL, *DOF, "--sensor", "aps-c", "--format", "json"],
+}
+BUDGETS = [
+    ("camtool dof ... --format json", "python -c 'import click'", 2.0),
+    ("camtool dof ... --sensor aps-c --format json", "python -c 'import click'", 2.0),
+    ("camtool dof ... (table)", "python -c 'import click, rich.console, rich.table'", 2.0),
+]
+
+
+def measure(repeat: int) -> dict[str, float]:
+    env = {**os.environ, "COLUMNS": "120"}
+    times: dict[str, list[float]] = {name: [] for name in CASES}
+    for _ in range(repeat):
+        for name, argv in CASES.items():
+            start = time.perf_counter()
+            subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, env=env)
+            times[name].append(time.perf_counter() - start)
+    return {name: statistics.median(values) for name, values in times.items()}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=30)
+    args = parser.parse_args()
+    if not CAMTOOL:
+        sys.exit("camtool is not on PATH: install the project first")
+    medians = measure(args.repeat)
+    print(f"| command | median wall time (ms) |\n|---|---:|")
+    for name, value in medians.items():
+        print(f"| `{name}` | {value * 1000:.1f} |")
+    print("\n| budget | ratio | limit | verdict |\n|---|---:|---:|---|")
+    for name, reference, limit in BUDGETS:
+        ratio = medians[name] / medians[reference]
+        print(f"| `{name}` / `{reference}` | {ratio:.2f} | {limit:.1f} | {'ok' if ratio <= limit else 'OVER'} |")
+
+
+if __name__ == "__main__":
+    main()
