@@ -260,11 +260,15 @@ def plane_view(
     if reference_focal_length_mm is None:
         reference_focal_length_mm = focal_length_mm
     require_positive("sensor_mm", width_mm)
-    plane_m = plane_magnification(focal_length_mm, magnification, offset_mm)
-    reference_m = plane_magnification(reference_focal_length_mm, magnification, offset_mm)
-    xp = ops(plane_m, reference_m, offset_mm, focal_length_mm, reference_focal_length_mm)
+    s = _check_offset(focal_length_mm, magnification, offset_mm)
+    s_ref = _check_offset(reference_focal_length_mm, magnification, offset_mm)
+    v = focal_length_mm * (1.0 + magnification)
+    v_ref = reference_focal_length_mm * (1.0 + magnification)
+    xp = ops(s, s_ref, offset_mm)
     with quiet(xp):
-        scale = xp.where(xp.isinf(offset_mm), focal_length_mm / reference_focal_length_mm, plane_m / reference_m)
-        visible = xp.where(xp.isinf(offset_mm), xp.inf, width_mm / plane_m)
+        # Written without dividing by the plane magnification, which is 0 at infinity.
+        farther = xp.where(xp.isinf(offset_mm), 1.0, (s_ref + offset_mm) / (s + offset_mm))
+    scale = v / v_ref * farther
+    visible = width_mm * (s + offset_mm) / v
     blur = defocus_blur_mm(focal_length_mm, f_number, magnification, offset_mm)
     return PlaneView(scale, visible, blur, 100.0 * blur / width_mm)
