@@ -1,0 +1,36 @@
+"""Presets for real equipment: sensors, cameras, lenses, prescriptions and scenes.
+
+>>> from camtool.presets import load_db
+>>> db = load_db(use_cache=False, lensfun=False)
+>>> db.camera("Nikon Z 8").sensor.id
+'full-frame'
+
+Modules: :mod:`~camtool.presets.schema` (keys, checks, dataclasses),
+:mod:`~camtool.presets.loader` (one file: safe YAML, line numbers, cache),
+:mod:`~camtool.presets.database` (tiers, index, lookup),
+:mod:`~camtool.presets.paths` (search order) and
+:mod:`~camtool.presets.lensfun` (import of the lensfun database). numpy is
+never imported here.
+"""
+
+from __future__ import annotations
+
+from camtool.presets.database import Database, load_db, validate_file
+from camtool.presets.errors import PresetFileError, PresetNotFound
+from camtool.presets.schema import KINDS, Camera, Lens, Prescription, Preset, Scene, Sensor, normalize
+
+__all__ = [
+    "KINDS",
+    "Camera",
+    "Database",
+    "Lens",
+    "Prescription",
+    "Preset",
+    "PresetFileError",
+    "PresetNotFound",
+    "Scene",
+    "Sensor",
+    "load_db",
+    "normalize",
+    "validate_file",
+]

@@ -1,0 +1,379 @@
+"""The merged preset database: tiers of files, an index per kind, lookup by any spelling.
+
+Files are read when the database is loaded (from the JSON cache when it is
+fresh); the index of a kind is built the first time a preset of that kind is
+looked up, and a preset object is built only when it is asked for.
+
+Lookup ignores case, spaces and punctuation: ``Full Frame``, ``full_frame``,
+``FULL-FRAME`` and the alias ``ff`` all find ``full-frame``. Ids and aliases
+come first; a preset's display name also matches when no other preset shares
+it. Within one tier an id or alias may name only one preset (a clash is an
+error naming both files); a later tier replaces an earlier preset with the
+same id, aliases and all.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+from camtool.presets import paths
+from camtool.presets.errors import PresetFileError, PresetNotFound
+from camtool.presets.loader import FileData, parse_file, read_file
+from camtool.presets.schema import (
+    KINDS,
+    REFERENCES,
+    Camera,
+    Lens,
+    Prescription,
+    Preset,
+    Scene,
+    Sensor,
+    kind_of,
+    normalize,
+)
+
+
+class _Entry:
+    """A record with the file and tier it came from."""
+
+    __slots__ = ("record", "path", "tier")
+
+    def __init__(self, record: dict[str, Any], path: str, tier: str) -> None:
+        self.record = record
+        self.path = path
+        self.tier = tier
+
+    @property
+    def id(self) -> str:
+        return str(self.record["id"])
+
+
+class _Index:
+    """Every lookup key of one kind, and the display names that are unambiguous."""
+
+    def __init__(self, keys: dict[str, _Entry]) -> None:
+        self.keys = keys
+        self._names: dict[str, _Entry | None] | None = None
+        self._entries: list[_Entry] | None = None
+
+    @property
+    def entries(self) -> list[_Entry]:
+        """The presets in effect, sorted by id."""
+        if self._entries is None:
+            unique = {id(entry): entry for entry in self.keys.values()}
+            self._entries = sorted(unique.values(), key=lambda e: e.id)
+        return self._entries
+
+    @property
+    def names(self) -> dict[str, _Entry | None]:
+        """Normalized display name -> entry (None when two presets share the name)."""
+        if self._names is None:
+            names: dict[str, _Entry | None] = {}
+            for entry in self.entries:
+                key = normalize(str(entry.record.get("name", "")))
+                if key and key not in self.keys:
+                    names[key] = None if key in names and names[key] is not entry else entry
+            self._names = names
+        return self._names
+
+    def find(self, key: str) -> _Entry | None:
+        return self.keys.get(key) or self.names.get(key)
+
+
+class Database:
+    """Presets merged from the tiers of the search order; see :func:`load_db`.
+
+    Look presets up with :meth:`sensor`, :meth:`camera`, :meth:`lens`,
+    :meth:`prescription`, :meth:`scene` or :meth:`get`; list them with
+    :meth:`names` and :meth:`all`.
+    """
+
+    def __init__(self, tiers: Sequence[paths.Tier], files: dict[str, FileData]) -> None:
+        self.tiers = list(tiers)
+        self._files = files
+        self._indexes: dict[str, _Index] = {}
+        self._built: dict[tuple[str, int], Any] = {}
+
+    @property
+    def files(self) -> list[tuple[str, str]]:
+        """``(tier, path)`` of every file read, least important first."""
+        return [(tier.name, path) for tier in self.tiers for path in tier.files]
+
+    # --- lookup -----------------------------------------------------------------------------
+
+    def get(self, kind: str, name: str) -> Preset:
+        """The preset of ``kind`` (singular or plural) called ``name``, in any spelling.
+
+        Raises :class:`PresetNotFound` (with suggestions) when there is none,
+        and :class:`PresetFileError` when the preset names another that does
+        not exist.
+        """
+        kind = kind_of(kind)
+        entry = self._index(kind).find(normalize(str(name)))
+        if entry is None:
+            if kind == "sensor":
+                camera = self._index("camera").find(normalize(str(name)))
+                if camera is not None:
+                    return self._build("camera", camera).sensor
+            raise PresetNotFound(kind, str(name), self.suggestions(kind, str(name)))
+        return self._build(kind, entry)
+
+    def sensor(self, name: str) -> Sensor:
+        """A sensor format by name; a camera's name gives that camera's sensor."""
+        return self.get("sensor", name)  # type: ignore[return-value]
+
+    def camera(self, name: str) -> Camera:
+        """A camera body by name, its sensor resolved."""
+        return self.get("camera", name)  # type: ignore[return-value]
+
+    def lens(self, name: str) -> Lens:
+        """A lens by name, its prescription (if any) resolved to a mapping."""
+        return self.get("lens", name)  # type: ignore[return-value]
+
+    def prescription(self, name: str) -> Prescription:
+        """A lens prescription by name."""
+        return self.get("prescription", name)  # type: ignore[return-value]
+
+    def scene(self, name: str) -> Scene:
+        """A named shot, its camera, sensor and lens resolved."""
+        return self.get("scene", name)  # type: ignore[return-value]
+
+    def names(self, kind: str) -> list[str]:
+        """The ids of every preset of ``kind`` in effect, sorted (for listings and shell completion)."""
+        return [entry.id for entry in self._index(kind_of(kind)).entries]
+
+    def all(self, kind: str) -> list[Preset]:
+        """Every preset of ``kind`` in effect, sorted by id."""
+        kind = kind_of(kind)
+        return [self._build(kind, entry) for entry in self._index(kind).entries]
+
+    def find(self, name: str) -> list[Preset]:
+        """The presets of every kind that answer to ``name`` (for ``camtool presets show``)."""
+        key = normalize(str(name))
+        found = []
+        for kind in KINDS:
+            entry = self._index(kind).find(key)
+            if entry is not None:
+                found.append(self._build(kind, entry))
+        return found
+
+    def suggestions(self, kind: str, name: str, limit: int = 3) -> list[str]:
+        """Ids of the presets whose names are closest to ``name``."""
+        index = self._index(kind_of(kind))
+        key = normalize(name)
+        candidates = {**{k: e for k, e in index.names.items() if e is not None}, **index.keys}
+        out: list[str] = []
+        for match in difflib.get_close_matches(key, list(candidates), n=limit * 2, cutoff=0.6):
+            if candidates[match].id not in out:
+                out.append(candidates[match].id)
+        if key and len(out) < limit:
+            containing = sorted((k for k in candidates if key in k), key=len)
+            for match in containing:
+                if candidates[match].id not in out:
+                    out.append(candidates[match].id)
+                if len(out) >= limit:
+                    break
+        return out[:limit]
+
+    # --- index --------------------------------------------------------------------------------
+
+    def _index(self, kind: str) -> _Index:
+        index = self._indexes.get(kind)
+        if index is None:
+            index = self._indexes[kind] = _Index(self._merge(kind))
+        return index
+
+    def _merge(self, kind: str) -> dict[str, _Entry]:
+        keys: dict[str, _Entry] = {}
+        for tier in self.tiers:
+            tier_keys: dict[str, _Entry] = {}
+            for path in tier.files:
+                for record in self._files[path].records.get(kind, ()):
+                    entry = _Entry(record, path, tier.name)
+                    for position, key in enumerate(record["_keys"]):
+                        other = tier_keys.get(key)
+                        if other is not None:
+                            raise _clash(kind, entry, position, other)
+                        tier_keys[key] = entry
+            for key, entry in tier_keys.items():
+                old = keys.get(key)
+                if old is not None and key == entry.record["_keys"][0] and old.id == entry.id:
+                    for old_key in old.record["_keys"]:
+                        if keys.get(old_key) is old:
+                            del keys[old_key]
+            keys.update(tier_keys)
+        return keys
+
+    # --- building presets -----------------------------------------------------------------------
+
+    def _build(self, kind: str, entry: _Entry) -> Any:
+        memo = (kind, id(entry.record))
+        preset = self._built.get(memo)
+        if preset is None:
+            preset = self._built[memo] = _BUILDERS[kind](self, entry)
+        return preset
+
+    def _reference(self, entry: _Entry, kind: str, key: str) -> Any:
+        """Resolve the preset that ``key`` of ``entry`` names, or raise naming the entry's file."""
+        target = REFERENCES[kind][key]
+        name = entry.record[key]
+        try:
+            return self.get(target, name)
+        except PresetNotFound as error:
+            raise PresetFileError(entry.path, str(error), line=entry.record["_refs"].get(key) or entry.record["_line"],
+                                  kind=kind, preset_id=entry.id, key=key) from None
+
+
+def _clash(kind: str, entry: _Entry, position: int, other: _Entry) -> PresetFileError:
+    record = entry.record
+    what = "id" if position == 0 else "alias"
+    spelled = record["id"] if position == 0 else _alias_for(record, record["_keys"][position])
+    where = f"{other.path}:{other.record['_line']}" if other.record.get("_line") else other.path
+    return PresetFileError(
+        entry.path,
+        f"{what} {spelled!r} is already used by {kind} {other.id!r} ({where}); ids and aliases must be unique",
+        line=record.get("_line"), kind=kind, preset_id=record["id"], key="id" if position == 0 else "aliases")
+
+
+def _alias_for(record: dict[str, Any], key: str) -> str:
+    return next((a for a in record.get("aliases", ()) if normalize(a) == key), key)
+
+
+def _common(entry: _Entry) -> dict[str, Any]:
+    record = entry.record
+    return {"aliases": tuple(record.get("aliases", ())), "source": record.get("source"),
+            "notes": record.get("notes"), "origin": entry.path, "tier": entry.tier}
+
+
+def _build_sensor(db: Database, entry: _Entry) -> Sensor:
+    r = entry.record
+    return Sensor(r["id"], r["name"], r["width_mm"], r["height_mm"], r.get("coc_mm"),
+                  category=r.get("category"), approximate=r.get("approximate", False), **_common(entry))
+
+
+def _build_camera(db: Database, entry: _Entry) -> Camera:
+    r = entry.record
+    sensor_value = r["sensor"]
+    if isinstance(sensor_value, dict):
+        sensor = Sensor(f"{r['id']}-sensor", sensor_value.get("name", f"{r['name']} sensor"),
+                        sensor_value["width_mm"], sensor_value["height_mm"], sensor_value.get("coc_mm"),
+                        approximate=r.get("approximate", False), source=r.get("source"), origin=entry.path,
+                        tier=entry.tier)
+    else:
+        sensor = db._reference(entry, "camera", "sensor")
+    return Camera(r["id"], r["name"], sensor, r.get("pixels_w"), r.get("pixels_h"), r.get("mount"),
+                  category=r.get("category"), approximate=r.get("approximate", False), **_common(entry))
+
+
+def _build_lens(db: Database, entry: _Entry) -> Lens:
+    r = entry.record
+    focal_min = r.get("focal_min_mm", r.get("focal_length_mm"))
+    focal_max = r.get("focal_max_mm", r.get("focal_length_mm"))
+    prescription = db._reference(entry, "lens", "prescription") if "prescription" in r else None
+    sensor = db._reference(entry, "lens", "sensor") if "sensor" in r else None
+    return Lens(
+        r["id"], r["name"], focal_min, focal_max, r.get("f_number_min"), r.get("f_number_max"),
+        r.get("f_number_min_tele"), r.get("min_focus_mm"), r.get("max_magnification"),
+        r.get("pupil_magnification"), r.get("hiatus_mm"),
+        prescription_id=prescription.id if prescription else None,
+        prescription=prescription.data if prescription else None,
+        sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
+        approximate=r.get("approximate", False), **_common(entry))
+
+
+def _build_prescription(db: Database, entry: _Entry) -> Prescription:
+    r = entry.record
+    return Prescription(r["id"], r["name"], r["_data"], r.get("focal_length_mm"), r.get("f_number"),
+                        r.get("wavelength_nm"), **_common(entry))
+
+
+def _build_scene(db: Database, entry: _Entry) -> Scene:
+    r = entry.record
+    camera = db._reference(entry, "scene", "camera") if "camera" in r else None
+    sensor = db._reference(entry, "scene", "sensor") if "sensor" in r else (camera.sensor if camera else None)
+    lens = db._reference(entry, "scene", "lens") if "lens" in r else None
+    return Scene(r["id"], r["name"], camera, sensor, lens, r.get("focal_length_mm"), r.get("f_number"),
+                 r.get("distance_mm"), r.get("subject_size_mm"), r.get("background_mm"), r.get("coc_mm"),
+                 **_common(entry))
+
+
+_BUILDERS = {
+    "sensor": _build_sensor,
+    "camera": _build_camera,
+    "lens": _build_lens,
+    "prescription": _build_prescription,
+    "scene": _build_scene,
+}
+
+
+# --- entry points -----------------------------------------------------------------------------
+
+
+def load_db(extra_files: Iterable[str | os.PathLike[str]] = (), *, use_cache: bool = True,
+            lensfun: bool = True) -> Database:
+    """Load the preset database in the search order of DESIGN §5.
+
+    shipped ``lens_db/`` < lensfun import < ``$XDG_CONFIG_DIRS/camtool`` <
+    ``$XDG_CONFIG_HOME/camtool`` < each of ``extra_files`` in order; a later
+    tier replaces an earlier preset with the same id. Every file is read now
+    (a broken one raises :class:`PresetFileError`); parsed files are cached
+    under ``$XDG_CACHE_HOME/camtool/presets`` unless ``use_cache`` is false.
+
+    >>> db = load_db(use_cache=False, lensfun=False)
+    >>> db.sensor("Full Frame").width_mm, db.sensor("m43").id
+    (36.0, 'four-thirds')
+    """
+    tiers = paths.tiers(tuple(os.fspath(p) for p in extra_files), lensfun=lensfun)
+    cache = str(paths.cache_dir()) if use_cache and not os.environ.get("CAMTOOL_NO_CACHE") else None
+    files: dict[str, FileData] = {}
+    for tier in tiers:
+        for path in tier.files:
+            if path not in files:
+                files[path] = read_file(path, cache_dir=cache)
+    return Database(tiers, files)
+
+
+def validate_file(path: str | os.PathLike[str]) -> list[str]:
+    """Every problem of one preset file, as one-line messages (empty when the file is good).
+
+    Checks the YAML, every key of every preset, ids and aliases that clash
+    within the file, and that every name it refers to (a camera's sensor, a
+    lens's prescription, a scene's lens ...) exists in the file or in the
+    database it would be loaded with (the shipped presets alone when the
+    user's other files are broken).
+    """
+    path = os.fspath(path)
+    data = parse_file(path)
+    messages = [str(problem.error(path)) for problem in data.problems]
+    for kind in KINDS:
+        seen: dict[str, _Entry] = {}
+        for record in data.records.get(kind, ()):
+            entry = _Entry(record, path, "file")
+            for position, key in enumerate(record["_keys"]):
+                if key in seen:
+                    messages.append(str(_clash(kind, entry, position, seen[key])))
+                else:
+                    seen[key] = entry
+    if data.problems and not any(data.records.values()):
+        return messages
+    target = os.path.abspath(path)
+    try:
+        base = load_db()
+        tiers, files = base.tiers, dict(base._files)
+    except PresetFileError:
+        tiers = paths.tiers(lensfun=False)[:1]
+        files = {p: read_file(p) for tier in tiers for p in tier.files}
+    tiers = [paths.Tier(t.name, tuple(f for f in t.files if os.path.abspath(f) != target)) for t in tiers]
+    tiers.append(paths.Tier(f"--presets {path}", (path,)))
+    files[path] = data
+    db = Database(tiers, files)
+    for kind in KINDS:
+        for record in data.records.get(kind, ()):
+            try:
+                db._build(kind, _Entry(record, path, "file"))
+            except PresetFileError as error:
+                messages.append(str(error))
+    return list(dict.fromkeys(messages))

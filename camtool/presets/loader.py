@@ -1,0 +1,303 @@
+"""Reading one preset file: safe YAML with line numbers, validation, and a JSON cache.
+
+A preset file is a YAML mapping whose keys are sections (``sensors``,
+``cameras``, ``lenses``, ``prescriptions``, ``scenes``), each a list of
+presets. A file whose top level has ``surfaces`` is a single prescription
+(the shape of the shipped ``lens_db/prescriptions/*.yaml``).
+
+Parsing YAML is the slow part of a command that names a preset (PyYAML's
+import alone costs about 20 ms), so the validated records of every file are
+cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, keyed by the file's
+path, size and modification time. A warm start reads only the JSON files and
+never imports yaml.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import zlib
+from dataclasses import dataclass, field
+from typing import Any
+
+from camtool.presets.errors import PresetFileError
+from camtool.presets.schema import REFERENCES, SECTIONS, check_record, normalize, show, suggest
+
+CACHE_FORMAT = 3
+"""Bumped whenever the record layout changes, so old cache files are ignored."""
+
+MAX_NODES = 2_000_000
+"""Largest number of YAML nodes a file may expand to through aliases (an alias bomb is refused)."""
+
+MAX_BYTES = 64 * 1024 * 1024
+"""Largest preset file read."""
+
+
+@dataclass
+class Problem:
+    """One problem found in a file (see :class:`PresetFileError` for the fields)."""
+
+    problem: str
+    line: int | None = None
+    kind: str | None = None
+    preset_id: str | None = None
+    key: str | None = None
+
+    def error(self, path: str) -> PresetFileError:
+        """The problem as an exception naming ``path``."""
+        return PresetFileError(path, self.problem, line=self.line, kind=self.kind, preset_id=self.preset_id,
+                               key=self.key)
+
+
+@dataclass
+class FileData:
+    """The validated records of one file, grouped by kind.
+
+    Each record is a dict of checked values plus ``_line`` (the line of the
+    entry), ``_refs`` (line of each key that names another preset) and
+    ``_keys`` (its normalized id and aliases, the lookup keys).
+    """
+
+    path: str
+    records: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
+    problems: list[Problem] = field(default_factory=list)
+
+
+def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
+    """Read and validate one preset file, raising :class:`PresetFileError` on the first problem.
+
+    With ``cache_dir``, a cached copy is used when the file's size and
+    modification time match, and a fresh parse is written back.
+    """
+    try:
+        stat = os.stat(path)
+    except OSError as error:
+        raise PresetFileError(path, f"cannot read the file: {error.strerror or error}") from None
+    stamp = [CACHE_FORMAT, os.path.abspath(path), stat.st_size, stat.st_mtime_ns]
+    cache_path = _cache_path(cache_dir, stamp[1]) if cache_dir else None
+    if cache_path:
+        cached = _read_cache(cache_path, stamp)
+        if cached is not None:
+            return FileData(path, cached)
+    data = parse_file(path)
+    if data.problems:
+        first = data.problems[0]
+        extra = len(data.problems) - 1
+        if extra:
+            first = Problem(f"{first.problem} (and {extra} more problem{'s' * (extra > 1)}; "
+                            f"camtool presets validate {path} lists them)",
+                            first.line, first.kind, first.preset_id, first.key)
+        raise first.error(path)
+    if cache_path:
+        _write_cache(cache_path, stamp, data.records)
+    return data
+
+
+def parse_file(path: str) -> FileData:
+    """Parse and validate ``path`` without the cache, collecting every problem."""
+    data = FileData(path)
+    try:
+        with open(path, "rb") as handle:
+            raw = handle.read(MAX_BYTES + 1)
+    except OSError as error:
+        data.problems.append(Problem(f"cannot read the file: {error.strerror or error}"))
+        return data
+    if len(raw) > MAX_BYTES:
+        data.problems.append(Problem(f"the file is larger than {MAX_BYTES // 2**20} MiB"))
+        return data
+    try:
+        source = raw.decode("utf-8")
+    except UnicodeDecodeError as error:
+        data.problems.append(Problem(f"not UTF-8 text (byte {error.start})"))
+        return data
+    try:
+        document, node = load_yaml(source)
+    except _YamlProblem as problem:
+        data.problems.append(Problem(problem.message, problem.line))
+        return data
+    _collect(document, node, data)
+    return data
+
+
+class _YamlProblem(Exception):
+    def __init__(self, message: str, line: int | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.line = line
+
+
+def load_yaml(source: str) -> tuple[Any, Any]:
+    """Safely load one YAML document; return the Python value and its node tree (for line numbers).
+
+    Only the safe subset is constructed (no ``!!python/...`` tags). A document
+    whose aliases would expand to more than :data:`MAX_NODES` nodes, or that
+    refers to itself, is refused before it is constructed.
+    """
+    import yaml
+
+    loader_class = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    loader = loader_class(source)
+    try:
+        try:
+            node = loader.get_single_node()
+            if node is None:
+                return None, None
+            _check_size(node)
+            return loader.construct_document(node), node
+        except yaml.MarkedYAMLError as error:
+            mark = error.problem_mark or error.context_mark
+            line = mark.line + 1 if mark is not None else None
+            text = " ".join(str(error.problem or error).split())
+            if error.context and "constructor" not in str(error.context):
+                text = " ".join(str(error.context).split()) + ": " + text
+            raise _YamlProblem(f"YAML error: {text}", line) from None
+        except yaml.YAMLError as error:
+            raise _YamlProblem(f"YAML error: {' '.join(str(error).split())}") from None
+        except RecursionError:
+            raise _YamlProblem("YAML error: the document is nested too deeply") from None
+    finally:
+        loader.dispose()
+
+
+def _check_size(root: Any) -> None:
+    """Count the nodes the document expands to, refusing alias bombs and self-reference."""
+    sizes: dict[int, int] = {}
+    active: set[int] = set()
+
+    def size(node: Any) -> int:
+        key = id(node)
+        if key in sizes:
+            return sizes[key]
+        if key in active:
+            raise _YamlProblem("YAML error: an alias refers to the node that contains it", node.start_mark.line + 1)
+        active.add(key)
+        total = 1
+        value = node.value
+        if isinstance(value, list):
+            for item in value:
+                if isinstance(item, tuple):
+                    total += size(item[0]) + size(item[1])
+                else:
+                    total += size(item)
+                if total > MAX_NODES:
+                    raise _YamlProblem(
+                        f"YAML error: the document expands to more than {MAX_NODES:,} nodes "
+                        "(too many nested aliases)", node.start_mark.line + 1)
+        active.discard(key)
+        sizes[key] = total
+        return total
+
+    size(root)
+
+
+def _line(node: Any) -> int | None:
+    return None if node is None else node.start_mark.line + 1
+
+
+def _key_nodes(node: Any) -> dict[str, Any]:
+    """Map each key of a mapping node to its key node (for line numbers)."""
+    if node is None or not isinstance(node.value, list):
+        return {}
+    return {str(k.value): k for k, v in node.value if isinstance(k.value, str)} if node.id == "mapping" else {}
+
+
+def _value_nodes(node: Any) -> dict[str, Any]:
+    if node is None or node.id != "mapping":
+        return {}
+    return {str(k.value): v for k, v in node.value}
+
+
+def _collect(document: Any, node: Any, data: FileData) -> None:
+    """Validate the sections of a parsed document into ``data``."""
+    if document is None:
+        data.problems.append(Problem("the file is empty; expected sections such as sensors: or lenses:"))
+        return
+    if not isinstance(document, dict):
+        data.problems.append(Problem(f"expected a mapping of sections (sensors:, lenses:, ...), got {show(document)}",
+                                     _line(node)))
+        return
+    if "surfaces" in document:
+        _collect_entry("prescription", document, node, data)
+        return
+    key_nodes, value_nodes = _key_nodes(node), _value_nodes(node)
+    for section, entries in document.items():
+        name = str(section)
+        line = _line(key_nodes.get(name))
+        kind = SECTIONS.get(name)
+        if kind is None:
+            data.problems.append(Problem("unknown section" + suggest(name, SECTIONS.keys())
+                                         + f"; sections are {', '.join(SECTIONS)}", line, key=name))
+            continue
+        if entries is None:
+            continue
+        if not isinstance(entries, list):
+            data.problems.append(Problem(f"expected a list of presets, got {show(entries)}", line, key=name))
+            continue
+        section_node = value_nodes.get(name)
+        item_nodes = section_node.value if section_node is not None and section_node.id == "sequence" else []
+        for index, entry in enumerate(entries):
+            entry_node = item_nodes[index] if index < len(item_nodes) else None
+            if not isinstance(entry, dict):
+                data.problems.append(Problem(f"each preset must be a mapping, got {show(entry)}",
+                                             _line(entry_node) or line, kind=kind))
+                continue
+            _collect_entry(kind, entry, entry_node, data)
+
+
+def _collect_entry(kind: str, entry: dict[Any, Any], node: Any, data: FileData) -> None:
+    key_nodes = _key_nodes(node)
+    entry_line = _line(node)
+    record, problems = check_record(kind, entry)
+    preset_id = record.get("id") if isinstance(record.get("id"), str) else None
+    if preset_id is None and isinstance(entry.get("id"), (str, int)):
+        preset_id = str(entry["id"])
+    for key, problem in problems:
+        data.problems.append(Problem(problem, _line(key_nodes.get(key)) or entry_line, kind, preset_id, key))
+    if problems:
+        return
+    record.setdefault("name", record["id"])
+    keys = [normalize(record["id"])]
+    for alias in record.get("aliases", ()):
+        key = normalize(alias)
+        if key not in keys:
+            keys.append(key)
+    record["_keys"] = keys
+    record["_line"] = entry_line
+    refs = REFERENCES.get(kind, {})
+    record["_refs"] = {key: _line(key_nodes.get(key)) for key in refs if key in record}
+    if kind == "prescription":
+        record["_data"] = {k: v for k, v in entry.items() if not str(k).startswith("_")}
+        record["_data"]["surfaces"] = record["surfaces"]
+    data.records.setdefault(kind, []).append(record)
+
+
+def _cache_path(cache_dir: str, path: str) -> str:
+    base = os.path.basename(path) or "preset"
+    return os.path.join(cache_dir, f"{base}-{zlib.crc32(path.encode('utf-8', 'surrogateescape')):08x}.json")
+
+
+def _read_cache(cache_path: str, stamp: list[Any]) -> dict[str, list[dict[str, Any]]] | None:
+    try:
+        with open(cache_path, encoding="utf-8") as handle:
+            cached = json.load(handle)
+    except (OSError, ValueError):
+        return None
+    if not isinstance(cached, dict) or cached.get("stamp") != stamp:
+        return None
+    records = cached.get("records")
+    return records if isinstance(records, dict) else None
+
+
+def _write_cache(cache_path: str, stamp: list[Any], records: dict[str, list[dict[str, Any]]]) -> None:
+    """Write the cache atomically; a cache that cannot be written is silently skipped."""
+    temporary = f"{cache_path}.{os.getpid()}.tmp"
+    try:
+        os.makedirs(os.path.dirname(cache_path), exist_ok=True)
+        with open(temporary, "w", encoding="utf-8") as handle:
+            json.dump({"stamp": stamp, "records": records}, handle, separators=(",", ":"))
+        os.replace(temporary, cache_path)
+    except (OSError, TypeError, ValueError):
+        try:
+            os.unlink(temporary)
+        except OSError:
+            pass

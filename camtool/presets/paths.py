@@ -1,0 +1,122 @@
+"""Where preset files live: the shipped database, the lensfun import and the user's directories.
+
+Search order (DESIGN §5), later tiers win by id:
+
+1. ``shipped`` -- ``lens_db/`` inside the installed package (``camtool/lens_db``
+   in a wheel) or, from a source tree or editable install, the repository's
+   ``lens_db/`` next to the package;
+2. ``lensfun`` -- ``$XDG_DATA_HOME/camtool/lensfun.yaml`` written by
+   ``camtool presets import-lensfun`` (default ``~/.local/share/camtool``);
+3. ``system`` -- ``camtool/`` in each of ``$XDG_CONFIG_DIRS`` (default
+   ``/etc/xdg``; the first directory listed is the most important);
+4. ``user`` -- ``$XDG_CONFIG_HOME/camtool`` (default ``~/.config/camtool``);
+5. each ``--presets FILE``, in order.
+
+In a configuration directory every ``*.yaml`` and ``*.yml`` file directly in
+it and in its ``presets/`` subdirectory is read, in name order.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import camtool
+
+_SUFFIXES = (".yaml", ".yml")
+
+
+@dataclass(frozen=True)
+class Tier:
+    """One level of the search order: a name for messages and its files in load order."""
+
+    name: str
+    files: tuple[str, ...]
+
+
+def _xdg(variable: str, default: str) -> Path:
+    """An XDG base directory; relative values are ignored, as the specification says."""
+    value = os.environ.get(variable, "")
+    return Path(value) if value and os.path.isabs(value) else Path.home() / default
+
+
+def shipped_dir() -> Path:
+    """The shipped ``lens_db`` directory.
+
+    In a wheel it is ``camtool/lens_db`` (the location
+    ``importlib.resources.files("camtool") / "lens_db"`` names for a package on
+    the file system, computed here without importing importlib.resources); from
+    a source tree it is the repository's ``lens_db/``.
+    """
+    package = Path(camtool.__file__).resolve().parent
+    for candidate in (package / "lens_db", package.parent / "lens_db"):
+        if candidate.is_dir():
+            return candidate
+    return package / "lens_db"
+
+
+def data_dir() -> Path:
+    """camtool's data directory: ``$XDG_DATA_HOME/camtool`` (default ``~/.local/share/camtool``)."""
+    return _xdg("XDG_DATA_HOME", ".local/share") / "camtool"
+
+
+def lensfun_file() -> Path:
+    """Where ``import-lensfun`` writes its presets and where :func:`load_db` reads them."""
+    return data_dir() / "lensfun.yaml"
+
+
+def cache_dir() -> Path:
+    """The cache of parsed preset files: ``$XDG_CACHE_HOME/camtool/presets``."""
+    return _xdg("XDG_CACHE_HOME", ".cache") / "camtool" / "presets"
+
+
+def config_home() -> Path:
+    """The user's configuration directory: ``$XDG_CONFIG_HOME/camtool`` (default ``~/.config/camtool``)."""
+    return _xdg("XDG_CONFIG_HOME", ".config") / "camtool"
+
+
+def config_dirs() -> list[Path]:
+    """``camtool`` in each of ``$XDG_CONFIG_DIRS``, least important first (the reverse of the variable)."""
+    value = os.environ.get("XDG_CONFIG_DIRS", "") or "/etc/xdg"
+    dirs = [Path(d) / "camtool" for d in value.split(os.pathsep) if d and os.path.isabs(d)]
+    return list(reversed(dirs))
+
+
+def yaml_files(directory: Path, recurse_into: tuple[str, ...] = ("presets",)) -> list[str]:
+    """The preset files of a configuration directory, in name order (none if it does not exist)."""
+    out: list[str] = []
+    try:
+        entries = sorted(os.scandir(directory), key=lambda e: e.name)
+    except OSError:
+        return out
+    for entry in entries:
+        if entry.name.endswith(_SUFFIXES) and entry.is_file():
+            out.append(entry.path)
+    for sub in recurse_into:
+        out.extend(yaml_files(directory / sub, ()))
+    return out
+
+
+def shipped_files() -> list[str]:
+    """The shipped preset files: ``lens_db/*.yaml`` then ``lens_db/prescriptions/*.yaml``."""
+    root = shipped_dir()
+    return yaml_files(root, ("prescriptions",))
+
+
+def tiers(extra_files: tuple[str, ...] | list[str] = (), *, lensfun: bool = True) -> list[Tier]:
+    """The search order as :class:`Tier` objects, least important first."""
+    out = [Tier("shipped", tuple(shipped_files()))]
+    imported = lensfun_file()
+    if lensfun and imported.is_file():
+        out.append(Tier("lensfun", (str(imported),)))
+    for directory in config_dirs():
+        files = yaml_files(directory)
+        if files:
+            out.append(Tier(f"system {directory}", tuple(files)))
+    user = yaml_files(config_home())
+    if user:
+        out.append(Tier("user", tuple(user)))
+    for path in extra_files:
+        out.append(Tier(f"--presets {os.fspath(path)}", (os.fspath(path),)))
+    return out

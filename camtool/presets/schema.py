@@ -1,0 +1,730 @@
+"""What a preset is: the keys of each kind, their checks, and the frozen dataclasses.
+
+Validation turns one raw YAML mapping into a *record*: a plain dict of checked
+values (numbers in millimetres, strings, lists) that can be cached as JSON.
+The dataclasses below are built from records only when a preset is looked up,
+so loading thousands of presets costs no object construction.
+
+Every check reports ``(key, problem)`` pairs instead of raising, so that
+``camtool presets validate FILE`` can list every problem of a file at once.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+KINDS = ("sensor", "camera", "lens", "prescription", "scene")
+"""The kinds of preset, in the order they are listed."""
+
+SECTIONS = {"sensors": "sensor", "cameras": "camera", "lenses": "lens", "prescriptions": "prescription",
+            "scenes": "scene"}
+"""Top-level keys of a preset file and the kind of the entries under each."""
+
+FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
+
+_ID = re.compile(r"^[a-z0-9]+(?:[.-][a-z0-9]+)*$")
+_PUNCTUATION = re.compile(r"[^0-9a-z]+")
+_WORDS = re.compile(r"[a-z0-9]+(?:\.[a-z0-9]+)*")
+
+
+def normalize(name: str) -> str:
+    """The lookup key of a name: lower case, punctuation and spaces dropped.
+
+    >>> normalize("Full Frame"), normalize("full_frame"), normalize("FULL-FRAME")
+    ('fullframe', 'fullframe', 'fullframe')
+    >>> normalize('1/2.3"')
+    '123'
+    """
+    return _PUNCTUATION.sub("", name.casefold())
+
+
+def slugify(text: str) -> str:
+    """A kebab-case id made from a free-form name (dots kept between digits and letters).
+
+    >>> slugify("Canon EF 50mm f/1.8 STM")
+    'canon-ef-50mm-f-1.8-stm'
+    """
+    return "-".join(_WORDS.findall(text.lower()))
+
+
+def kind_of(name: str) -> str:
+    """The kind a user typed, singular or plural (``lenses`` → ``lens``); ValueError if unknown.
+
+    >>> kind_of("Lenses"), kind_of("sensor")
+    ('lens', 'sensor')
+    """
+    text = name.strip().lower()
+    kind = SECTIONS.get(text, text)
+    if kind not in KINDS:
+        raise ValueError(f"unknown kind {name!r}; choose one of {', '.join(KINDS)}")
+    return kind
+
+
+# --- field checks -------------------------------------------------------------------------
+
+
+class Bad(ValueError):
+    """One field's value is wrong; the message says what was expected."""
+
+
+def show(value: Any) -> str:
+    """A short description of a bad value, safe for huge or nested values."""
+    if isinstance(value, str):
+        return repr(value if len(value) <= 40 else value[:37] + "...")
+    if isinstance(value, (bool, int, float)) or value is None:
+        return repr(value)
+    if isinstance(value, Mapping):
+        return "a mapping"
+    if isinstance(value, (list, tuple)):
+        return "a list"
+    return type(value).__name__
+
+
+def _real(value: Any, unit: str = "") -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if isinstance(value, str):
+            hint = f" (write a plain number{' in ' + unit if unit else ''}; units are not allowed here)"
+            raise Bad(f"expected a number, got the string {show(value)}{hint}")
+        raise Bad(f"expected a number, got {show(value)}")
+    number = float(value)
+    if math.isnan(number):
+        raise Bad("expected a number, got NaN")
+    return number
+
+
+def positive_mm(value: Any) -> float:
+    """A length in mm: a plain positive finite number.
+
+    >>> positive_mm(36)
+    36.0
+    >>> positive_mm("36mm")
+    Traceback (most recent call last):
+    ...
+    camtool.presets.schema.Bad: expected a number, got the string '36mm' (write a plain number in mm; units are not allowed here)
+    """
+    number = _real(value, "mm")
+    if not (number > 0 and math.isfinite(number)):
+        raise Bad(f"must be > 0 mm, got {value!r}")
+    return number
+
+
+def positive(value: Any) -> float:
+    """A positive finite number without unit (f-numbers, magnifications, ratios)."""
+    number = _real(value)
+    if not (number > 0 and math.isfinite(number)):
+        raise Bad(f"must be > 0, got {value!r}")
+    return number
+
+
+def finite(value: Any) -> float:
+    """Any finite number (a hiatus may be negative)."""
+    number = _real(value, "mm")
+    if not math.isfinite(number):
+        raise Bad(f"must be finite, got {value!r}")
+    return number
+
+
+def pixel_count(value: Any) -> int:
+    """A positive whole number of pixels."""
+    number = _real(value)
+    if not (number >= 1 and math.isfinite(number) and number == int(number)):
+        raise Bad(f"must be a whole number >= 1, got {value!r}")
+    return int(number)
+
+
+def boolean(value: Any) -> bool:
+    """true or false."""
+    if not isinstance(value, bool):
+        raise Bad(f"expected true or false, got {show(value)}")
+    return value
+
+
+def text(value: Any) -> str:
+    """A non-empty string (a bare YAML number is accepted and kept as written)."""
+    if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+        raise Bad(f"expected text, got {show(value)}")
+    out = " ".join(str(value).split())
+    if not out:
+        raise Bad("must not be empty")
+    return out
+
+
+def ident(value: Any) -> str:
+    """A kebab-case id: lower-case letters and digits in words joined by '-' (or '.').
+
+    >>> ident("my-50mm-f1.8")
+    'my-50mm-f1.8'
+    >>> ident("My Lens")
+    Traceback (most recent call last):
+    ...
+    camtool.presets.schema.Bad: 'My Lens' is not a kebab-case id (lower-case letters, digits and '-'); try 'my-lens'
+    """
+    if isinstance(value, int) and not isinstance(value, bool):
+        value = str(value)
+    if not isinstance(value, str):
+        raise Bad(f"expected a kebab-case id, got {show(value)}")
+    if not _ID.match(value):
+        suggestion = slugify(value)
+        hint = f"; try {suggestion!r}" if suggestion else ""
+        raise Bad(f"{show(value)} is not a kebab-case id (lower-case letters, digits and '-'){hint}")
+    return value
+
+
+def name_list(value: Any) -> list[str]:
+    """A list of alternative names (a single string is a list of one)."""
+    if isinstance(value, (str, int)) and not isinstance(value, bool):
+        value = [value]
+    if not isinstance(value, list):
+        raise Bad(f"expected a list of names, got {show(value)}")
+    out = []
+    for item in value:
+        if isinstance(item, bool) or not isinstance(item, (str, int)):
+            raise Bad(f"every alias must be text, got {show(item)} (quote numbers such as '1.5x')")
+        if not normalize(str(item)):
+            raise Bad(f"alias {show(item)} has no letters or digits")
+        out.append(str(item))
+    return out
+
+
+def reference(value: Any) -> str:
+    """The id or name of another preset."""
+    if isinstance(value, bool) or not isinstance(value, (str, int)) or not normalize(str(value)):
+        raise Bad(f"expected the name of a preset, got {show(value)}")
+    return str(value)
+
+
+def _length_with_default(unit: str, allow_inf: bool) -> Callable[[Any], float]:
+    def check(value: Any) -> float:
+        from camtool.units import UnitError, parse_length
+
+        if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+            raise Bad(f"expected a length such as 3m or 50mm, got {show(value)}")
+        try:
+            number = parse_length(value, default_unit=unit)
+        except UnitError as error:
+            raise Bad(str(error)) from None
+        if not (number > 0) or (math.isinf(number) and not allow_inf) or math.isnan(number):
+            raise Bad(f"must be > 0{' (or inf)' if allow_inf else ''}, got {value!r}")
+        return number
+
+    check.__doc__ = f"A length with a unit (a bare number is in {unit})."
+    return check
+
+
+def f_number_text(value: Any) -> float:
+    """An f-number written 8, f/8 or f8."""
+    from camtool.units import UnitError, parse_f_number
+
+    if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+        raise Bad(f"expected an f-number such as 8 or f/8, got {show(value)}")
+    try:
+        number = parse_f_number(value)
+    except UnitError as error:
+        raise Bad(str(error)) from None
+    if not (number > 0 and math.isfinite(number)):
+        raise Bad(f"must be > 0, got {value!r}")
+    return number
+
+
+def sensor_ref(value: Any) -> str | dict[str, Any]:
+    """A sensor: the name of a sensor preset, or an inline ``{width_mm, height_mm[, coc_mm]}``."""
+    if isinstance(value, Mapping):
+        record, problems = check_fields(value, INLINE_SENSOR_FIELDS, ("width_mm", "height_mm"))
+        if problems:
+            key, problem = problems[0]
+            raise Bad(f"{key}: {problem}")
+        return record
+    return reference(value)
+
+
+_ASPHERIC_TERM = re.compile(r"^a([0-9]+)$")
+
+
+def _aspheric(value: Any) -> dict[str, float]:
+    if not isinstance(value, Mapping):
+        raise Bad(f"expected a mapping such as {{a4: 1.2e-5, a6: ...}}, got {show(value)}")
+    out = {}
+    for key, coefficient in value.items():
+        match = _ASPHERIC_TERM.match(str(key).strip().lower())
+        if not match or not 2 <= int(match.group(1)) <= 30:
+            raise Bad(f"term {show(key)} is not one of a2 ... a30 (aN: coefficient of r^N)")
+        try:
+            out[str(key)] = finite(coefficient)
+        except Bad as error:
+            raise Bad(f"{key}: {error}") from None
+    return out
+
+
+def _radius(value: Any) -> float:
+    if isinstance(value, str) and value.strip().lower() in {"inf", ".inf", "+inf", "infinity", "flat"}:
+        return math.inf
+    number = _real(value, "mm")
+    if number == 0:
+        raise Bad("must not be 0 (write inf for a flat surface)")
+    return number
+
+
+def _thickness(value: Any) -> float:
+    number = finite(value)
+    if number < 0:
+        raise Bad(f"must be >= 0 mm, got {value!r}")
+    return number
+
+
+def _index(value: Any) -> float:
+    number = finite(value)
+    if number < 1.0:
+        raise Bad(f"a refractive index must be >= 1, got {value!r}")
+    return number
+
+
+SURFACE_FIELDS: dict[str, Callable[[Any], Any]] = {
+    "radius_mm": _radius,
+    "thickness_mm": _thickness,
+    "n": _index,
+    "semi_diameter_mm": positive_mm,
+    "stop": boolean,
+    "conic": finite,
+    "aspheric": _aspheric,
+    "name": text,
+    "glass": text,
+    "note": text,
+}
+
+
+def surfaces(value: Any) -> list[dict[str, Any]]:
+    """The surfaces of a prescription, from the object side; exactly one has ``stop: true``."""
+    if not isinstance(value, list) or not value:
+        raise Bad(f"expected a non-empty list of surfaces, got {show(value)}")
+    out = []
+    for number, raw in enumerate(value, start=1):
+        if not isinstance(raw, Mapping):
+            raise Bad(f"surface {number} must be a mapping, got {show(raw)}")
+        record, problems = check_fields(raw, SURFACE_FIELDS, ("radius_mm", "thickness_mm", "n"))
+        if problems:
+            key, problem = problems[0]
+            raise Bad(f"surface {number}, {key}: {problem}")
+        out.append(record)
+    stops = [i for i, s in enumerate(out, start=1) if s.get("stop")]
+    if len(stops) != 1:
+        found = "surfaces " + ", ".join(map(str, stops)) if stops else "none"
+        raise Bad(f"exactly one surface must have stop: true (found {found})")
+    if out[-1]["thickness_mm"] <= 0:
+        raise Bad("the last thickness_mm (the back focal distance) must be > 0")
+    return out
+
+
+# --- the keys of each kind ------------------------------------------------------------------
+
+_COMMON: dict[str, Callable[[Any], Any]] = {
+    "id": ident,
+    "name": text,
+    "aliases": name_list,
+    "source": text,
+    "notes": text,
+}
+
+INLINE_SENSOR_FIELDS: dict[str, Callable[[Any], Any]] = {
+    "width_mm": positive_mm,
+    "height_mm": positive_mm,
+    "coc_mm": positive_mm,
+    "name": text,
+}
+
+FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
+    "sensor": {
+        **_COMMON,
+        "width_mm": positive_mm,
+        "height_mm": positive_mm,
+        "coc_mm": positive_mm,
+        "category": text,
+        "approximate": boolean,
+    },
+    "camera": {
+        **_COMMON,
+        "sensor": sensor_ref,
+        "pixels_w": pixel_count,
+        "pixels_h": pixel_count,
+        "mount": text,
+        "category": text,
+        "approximate": boolean,
+    },
+    "lens": {
+        **_COMMON,
+        "focal_length_mm": positive_mm,
+        "focal_min_mm": positive_mm,
+        "focal_max_mm": positive_mm,
+        "f_number_min": positive,
+        "f_number_max": positive,
+        "f_number_min_tele": positive,
+        "min_focus_mm": positive_mm,
+        "max_magnification": positive,
+        "pupil_magnification": positive,
+        "hiatus_mm": finite,
+        "prescription": reference,
+        "sensor": reference,
+        "mount": text,
+        "category": text,
+        "approximate": boolean,
+    },
+    # The same top-level keys camtool.optics.prescription accepts, so a record
+    # can be handed to it unchanged.
+    "prescription": {
+        **_COMMON,
+        "description": text,
+        "kind": text,
+        "focal_length_mm": positive_mm,
+        "f_number": positive,
+        "wavelength_nm": positive,
+        "object_index": _index,
+        "surfaces": surfaces,
+    },
+    "scene": {
+        **_COMMON,
+        "camera": reference,
+        "sensor": reference,
+        "lens": reference,
+        "f_number": f_number_text,
+        "focal_length": _length_with_default("mm", allow_inf=False),
+        "focal_length_mm": positive_mm,
+        "distance": _length_with_default("m", allow_inf=True),
+        "distance_mm": positive_mm,
+        "subject_size": _length_with_default("mm", allow_inf=False),
+        "subject_size_mm": positive_mm,
+        "background": _length_with_default("m", allow_inf=True),
+        "background_mm": positive_mm,
+        "coc": _length_with_default("mm", allow_inf=False),
+        "coc_mm": positive_mm,
+    },
+}
+
+REQUIRED = {
+    "sensor": ("id", "width_mm", "height_mm"),
+    "camera": ("id", "sensor"),
+    "lens": ("id",),
+    "prescription": ("id", "surfaces"),
+    "scene": ("id",),
+}
+
+REFERENCES = {
+    "camera": {"sensor": "sensor"},
+    "lens": {"prescription": "prescription", "sensor": "sensor"},
+    "scene": {"camera": "camera", "sensor": "sensor", "lens": "lens"},
+}
+"""Keys whose value names another preset, and that preset's kind."""
+
+# Scene keys written with a unit, and the millimetre key each one fills.
+_SCENE_UNIT_KEYS = {"focal_length": "focal_length_mm", "distance": "distance_mm",
+                    "subject_size": "subject_size_mm", "background": "background_mm", "coc": "coc_mm"}
+
+
+def suggest(word: str, choices: list[str] | tuple[str, ...] | set[str]) -> str:
+    """' (did you mean X?)' for the closest choice, or '' when none is close."""
+    close = difflib.get_close_matches(word, sorted(choices), n=1, cutoff=0.6)
+    return f" (did you mean {close[0]}?)" if close else ""
+
+
+def check_fields(
+    raw: Mapping[Any, Any], fields: Mapping[str, Callable[[Any], Any]], required: tuple[str, ...] = ()
+) -> tuple[dict[str, Any], list[tuple[str, str]]]:
+    """Check every key of ``raw`` against ``fields``; return the clean record and the problems."""
+    record: dict[str, Any] = {}
+    problems: list[tuple[str, str]] = []
+    for key, value in raw.items():
+        name = str(key)
+        check = fields.get(name)
+        if check is None:
+            problems.append((name, "unknown key" + suggest(name, fields.keys())))
+            continue
+        if value is None:
+            problems.append((name, "has no value"))
+            continue
+        try:
+            record[name] = check(value)
+        except Bad as error:
+            problems.append((name, str(error)))
+    for name in required:
+        if name not in raw:
+            problems.append((name, "is required"))
+    return record, problems
+
+
+def check_record(kind: str, raw: Mapping[Any, Any]) -> tuple[dict[str, Any], list[tuple[str, str]]]:
+    """Validate one raw preset mapping of ``kind``; return its record and the ``(key, problem)`` list.
+
+    >>> record, problems = check_record("sensor", {"id": "tiny", "width_mm": -3, "height": 2})
+    >>> problems
+    [('width_mm', 'must be > 0 mm, got -3'), ('height', 'unknown key (did you mean height_mm?)'), ('height_mm', 'is required')]
+    """
+    record, problems = check_fields(raw, FIELDS[kind], REQUIRED[kind])
+    if not problems:
+        problems.extend(_CROSS_CHECKS.get(kind, _no_cross_check)(record))
+    return record, problems
+
+
+def _no_cross_check(record: dict[str, Any]) -> list[tuple[str, str]]:
+    return []
+
+
+def _check_camera(record: dict[str, Any]) -> list[tuple[str, str]]:
+    if ("pixels_w" in record) != ("pixels_h" in record):
+        missing = "pixels_h" if "pixels_w" in record else "pixels_w"
+        return [(missing, "give both pixels_w and pixels_h, or neither")]
+    return []
+
+
+def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
+    has_prime = "focal_length_mm" in record
+    has_zoom = "focal_min_mm" in record or "focal_max_mm" in record
+    if has_prime and has_zoom:
+        return [("focal_length_mm", "give focal_length_mm for a prime or focal_min_mm/focal_max_mm, not both")]
+    if not has_prime and not has_zoom:
+        return [("focal_length_mm", "is required (or focal_min_mm and focal_max_mm for a zoom)")]
+    if has_zoom:
+        for key in ("focal_min_mm", "focal_max_mm"):
+            if key not in record:
+                return [(key, "a zoom needs both focal_min_mm and focal_max_mm")]
+        if record["focal_min_mm"] > record["focal_max_mm"]:
+            return [("focal_max_mm", f"must be >= focal_min_mm ({record['focal_min_mm']:g})")]
+    widest, smallest = record.get("f_number_min"), record.get("f_number_max")
+    if widest is not None and smallest is not None and widest > smallest:
+        return [("f_number_max", f"must be >= f_number_min ({widest:g}): f_number_min is the widest aperture")]
+    tele = record.get("f_number_min_tele")
+    if tele is not None:
+        if not has_zoom:
+            return [("f_number_min_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
+        if widest is None or tele < widest:
+            return [("f_number_min_tele", "needs f_number_min and must be >= it")]
+    return []
+
+
+def _check_scene(record: dict[str, Any]) -> list[tuple[str, str]]:
+    problems = []
+    for written, mm in _SCENE_UNIT_KEYS.items():
+        if written in record:
+            if mm in record:
+                problems.append((written, f"give {written} or {mm}, not both"))
+            else:
+                record[mm] = record.pop(written)
+    return problems
+
+
+_CROSS_CHECKS: dict[str, Callable[[dict[str, Any]], list[tuple[str, str]]]] = {
+    "camera": _check_camera,
+    "lens": _check_lens,
+    "scene": _check_scene,
+}
+
+
+# --- the dataclasses ------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Sensor:
+    """A sensor or film format; sizes in mm, width the long side.
+
+    ``approximate`` marks a size that was derived (e.g. from a crop factor)
+    rather than published; ``origin`` is the file the preset came from.
+
+    >>> s = Sensor("full-frame", "Full frame", 36.0, 24.0)
+    >>> round(s.diagonal_mm, 3), round(s.crop_factor, 3)
+    (43.267, 1.0)
+    """
+
+    id: str
+    name: str
+    width_mm: float
+    height_mm: float
+    coc_mm: float | None = None
+    aliases: tuple[str, ...] = ()
+    category: str | None = None
+    approximate: bool = False
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "sensor"
+
+    @property
+    def diagonal_mm(self) -> float:
+        """Diagonal of the format in mm."""
+        return math.hypot(self.width_mm, self.height_mm)
+
+    @property
+    def crop_factor(self) -> float:
+        """Ratio of the 36 x 24 mm diagonal to this diagonal."""
+        return FULL_FRAME_DIAGONAL_MM / self.diagonal_mm
+
+    @property
+    def aspect_ratio(self) -> float:
+        """Width over height."""
+        return self.width_mm / self.height_mm
+
+
+@dataclass(frozen=True)
+class Camera:
+    """A camera body: its sensor (resolved to a :class:`Sensor`), pixel counts and mount.
+
+    >>> body = Camera("x", "X", Sensor("s", "S", 36.0, 24.0), 6000, 4000)
+    >>> round(body.pixel_pitch_mm * 1000, 3), body.megapixels
+    (6.0, 24.0)
+    """
+
+    id: str
+    name: str
+    sensor: Sensor
+    pixels_w: int | None = None
+    pixels_h: int | None = None
+    mount: str | None = None
+    aliases: tuple[str, ...] = ()
+    category: str | None = None
+    approximate: bool = False
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "camera"
+
+    @property
+    def pixel_pitch_mm(self) -> float | None:
+        """Sensor width over the pixel count across, in mm (None without pixel counts)."""
+        return None if not self.pixels_w else self.sensor.width_mm / self.pixels_w
+
+    @property
+    def megapixels(self) -> float | None:
+        """Pixel count in millions (None without pixel counts)."""
+        return None if not (self.pixels_w and self.pixels_h) else self.pixels_w * self.pixels_h / 1e6
+
+
+@dataclass(frozen=True)
+class Prescription:
+    """A lens prescription preset; ``data`` is the validated mapping for :mod:`camtool.optics`.
+
+    Only the structure is checked here (keys, types, one stop); tracing it is
+    :func:`camtool.optics.prescription.prescription_from_mapping`'s job.
+    """
+
+    id: str
+    name: str
+    data: dict[str, Any] = field(compare=False, hash=False, repr=False)
+    focal_length_mm: float | None = None
+    f_number: float | None = None
+    wavelength_nm: float | None = None
+    aliases: tuple[str, ...] = ()
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "prescription"
+
+    @property
+    def surfaces(self) -> list[dict[str, Any]]:
+        """The surface mappings, from the object side."""
+        return list(self.data["surfaces"])
+
+    @property
+    def stop_index(self) -> int:
+        """0-based index of the aperture stop."""
+        return next(i for i, s in enumerate(self.data["surfaces"]) if s.get("stop"))
+
+
+@dataclass(frozen=True)
+class Lens:
+    """A lens: focal length or range (mm), f-number range and close-focus data.
+
+    ``f_number_min`` is the widest aperture (smallest f-number), at the short
+    end for a variable-aperture zoom, whose widest f-number at the long end is
+    ``f_number_min_tele``. ``min_focus_mm`` is measured from the sensor plane.
+    ``prescription`` is the resolved prescription mapping (or None).
+
+    >>> zoom = Lens("z", "Z", 24.0, 70.0, 4.0, 22.0, f_number_min_tele=5.6)
+    >>> zoom.is_zoom, zoom.widest_f_number(24.0), zoom.widest_f_number(70.0)
+    (True, 4.0, 5.6)
+    """
+
+    id: str
+    name: str
+    focal_min_mm: float
+    focal_max_mm: float
+    f_number_min: float | None = None
+    f_number_max: float | None = None
+    f_number_min_tele: float | None = None
+    min_focus_mm: float | None = None
+    max_magnification: float | None = None
+    pupil_magnification: float | None = None
+    hiatus_mm: float | None = None
+    prescription_id: str | None = None
+    prescription: dict[str, Any] | None = field(default=None, compare=False, hash=False, repr=False)
+    sensor_id: str | None = None
+    mount: str | None = None
+    aliases: tuple[str, ...] = ()
+    category: str | None = None
+    approximate: bool = False
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "lens"
+
+    @property
+    def is_zoom(self) -> bool:
+        """True when the focal length can change."""
+        return self.focal_max_mm > self.focal_min_mm
+
+    @property
+    def focal_length_mm(self) -> float | None:
+        """The focal length of a prime; None for a zoom."""
+        return None if self.is_zoom else self.focal_min_mm
+
+    def widest_f_number(self, focal_length_mm: float) -> float | None:
+        """The smallest f-number at a focal length within the range.
+
+        For a variable-aperture zoom the value is interpolated linearly between
+        the two ends; real lenses step in thirds, so treat the middle as
+        approximate.
+        """
+        if self.f_number_min is None or self.f_number_min_tele is None or not self.is_zoom:
+            return self.f_number_min
+        t = (focal_length_mm - self.focal_min_mm) / (self.focal_max_mm - self.focal_min_mm)
+        t = min(1.0, max(0.0, t))
+        return self.f_number_min + t * (self.f_number_min_tele - self.f_number_min)
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A named shot: equipment references resolved to presets, distances in mm.
+
+    Any field may be None; options given on the command line override a scene.
+    ``sensor`` is the scene's own sensor, else the camera's.
+    """
+
+    id: str
+    name: str
+    camera: Camera | None = None
+    sensor: Sensor | None = None
+    lens: Lens | None = None
+    focal_length_mm: float | None = None
+    f_number: float | None = None
+    distance_mm: float | None = None
+    subject_size_mm: float | None = None
+    background_mm: float | None = None
+    coc_mm: float | None = None
+    aliases: tuple[str, ...] = ()
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "scene"
+
+
+Preset = Sensor | Camera | Lens | Prescription | Scene
