@@ -78,8 +78,8 @@ def extension_mm(focal_length_mm: Any, object_distance_mm: Any) -> Any:
     return focal_length_mm * magnification(focal_length_mm, object_distance_mm)
 
 
-def closest_focus_mm(focal_length_mm: Any, hiatus_mm: Any = 0.0) -> Any:
-    """Closest sensor-plane focus distance of a unit-focusing lens in mm: 4f + δ (1:1).
+def closest_focus_mm(focal_length_mm: Any, hiatus_mm: Any = 0.0, distance_from: str = "sensor") -> Any:
+    """Closest focus distance of a unit-focusing lens in mm: 4f + δ from the sensor, 2f from the lens (1:1).
 
     u + v is smallest, 4f, at u = v = 2f; any closer object has no real image
     on a sensor behind the lens.
@@ -88,9 +88,31 @@ def closest_focus_mm(focal_length_mm: Any, hiatus_mm: Any = 0.0) -> Any:
     --------
     >>> closest_focus_mm(50.0)
     200.0
+    >>> closest_focus_mm(50.0, distance_from="lens")
+    100.0
     """
     require_positive("focal_length_mm", focal_length_mm)
+    if distance_from == "lens":
+        return 2.0 * focal_length_mm
     return 4.0 * focal_length_mm + hiatus_mm
+
+
+def working_f_number(f_number: Any, magnification: Any, pupil_magnification: Any = 1.0) -> Any:
+    """Working (effective) f-number N·(1 + m/P) of a lens focused at magnification m.
+
+    P is the pupil magnification (exit/entrance pupil diameter), 1 for a
+    thin lens.
+
+    References
+    ----------
+    Wikipedia, "f-number", working f-number; camtool design §4.
+
+    Examples
+    --------
+    >>> working_f_number(8.0, 1.0)
+    16.0
+    """
+    return f_number * (1.0 + magnification / pupil_magnification)
 
 
 def lens_distances(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any = 0.0) -> LensPlaneDistances:

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import click
 
+from camtool.cli.command import Output, camtool_command, combine_params
+
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, output_options, sensor_options)
-from camtool.grid import combine
+                                 library_errors, sensor_options)
 from camtool.ladder import CHOICES, depth_of_field
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
-from camtool.render.output import write_rows
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
         "hyperfocal_mm", "coc_mm", "magnification", "model", "error_estimate", "distance_from"]
@@ -29,7 +29,7 @@ COLUMNS = [
 ]
 
 
-@click.command("dof")
+@camtool_command("dof", keys=KEYS)
 @focal_option
 @aperture_options
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
@@ -39,10 +39,8 @@ COLUMNS = [
 @distance_plane_option
 @click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True,
               help="approx: H·s/(H±s); thin: exact thin lens; auto: what the scene needs.")
-@output_options
-@click.pass_context
 def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, sensor, crop, coc, coc_rule,
-        pixel_pitch, distance_from, model, fmt, units, preset_files) -> None:
+        pixel_pitch, distance_from, model, fmt, units, preset_files) -> Output:
     """Depth of field: near and far limits, total depth, front/rear split and hyperfocal distance.
 
     \b
@@ -55,7 +53,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
     distances = required(ctx, distance, "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    count, (f, n, s, c) = combine(focal, apertures, distances, cocs)
+    count, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
     with library_errors(ctx):
         result = depth_of_field(model, f, n, c, s, distance_from)
     limits = result.limits
@@ -74,4 +72,4 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
             row["sharp_zone"] = sharp_zone_bar(row["near_mm"], row["distance_mm"], row["far_mm"],
                                                row["hyperfocal_mm"], low, high, width=24)
         note = footer(result.model, cocs, coc_origin, chosen.label, distance_from, "┃ focus, H hyperfocal, ▶ ∞")
-    write_rows(rows, COLUMNS, fmt, units, note, keys=KEYS)
+    return Output(rows, COLUMNS, KEYS, note)

@@ -4,16 +4,16 @@ from __future__ import annotations
 
 import click
 
+from camtool.cli.command import Output, camtool_command, combine_params
+
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, output_options, sensor_options)
+                                 library_errors, sensor_options)
 from camtool.cli.params import NumberType, flatten
-from camtool.grid import combine
 from camtool.inverse import focus_for_limits
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
-from camtool.render.output import write_rows
-from camtool.thinlens import closest_focus_mm, focus_for_magnification, focus_geometry
+from camtool.thinlens import closest_focus_mm, focus_for_magnification, focus_geometry, working_f_number
 
 FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
                 "f_number", "working_f_number", "closest_focus_mm", "distance_from"]
@@ -35,7 +35,7 @@ INVERSE_COLUMNS = [
 ]
 
 
-@click.command("focus")
+@camtool_command("focus", keys=FORWARD_KEYS + INVERSE_KEYS)
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres).")
@@ -47,10 +47,8 @@ INVERSE_COLUMNS = [
 @sensor_options
 @coc_options
 @distance_plane_option
-@output_options
-@click.pass_context
 def focus(ctx: click.Context, focal_length, distance, magnification, f_number, exact_stops, near, far, sensor, crop,
-          coc, coc_rule, pixel_pitch, distance_from, fmt, units, preset_files) -> None:
+          coc, coc_rule, pixel_pitch, distance_from, fmt, units, preset_files) -> Output:
     """Thin-lens focusing: image distance, extension, magnification, working f-number.
 
     With --near and --far it answers the inverse question: where to focus and
@@ -64,41 +62,40 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     """
     focal = required(ctx, focal_length, "-f")
     if near or far:
-        _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
-                 preset_files)
-        return
+        return _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
+                        preset_files)
     if bool(distance) == bool(magnification):
         raise click.UsageError("give either -s/--distance or -m/--magnification (or --near and --far)", ctx)
     apertures = f_numbers(f_number, exact_stops) or [float("nan")]
     wanted = flatten(distance) or flatten(magnification)
-    count, (f, w, n) = combine(focal, wanted, apertures)
+    count, (f, w, n) = combine_params(ctx, focal, wanted, apertures)
     with library_errors(ctx):
         geometry = focus_geometry(f, w, distance_from) if distance else focus_for_magnification(f, w)
-        nearest = closest_focus_mm(f)
+        nearest = closest_focus_mm(f, distance_from=distance_from)
     plane_distance = geometry.sensor_distance_mm if distance_from == "sensor" else geometry.object_mm
     values = {
         "focal_length_mm": f, "distance_mm": plane_distance, "image_distance_mm": geometry.image_mm,
         "extension_mm": geometry.extension_mm, "magnification": geometry.magnification,
-        "closest_focus_mm": nearest if distance_from == "sensor" else 2.0 * f, "distance_from": distance_from,
+        "closest_focus_mm": nearest, "distance_from": distance_from,
     }
     keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
     if f_number:
-        values.update({"f_number": n, "working_f_number": n * (1.0 + geometry.magnification)})
+        values.update({"f_number": n, "working_f_number": working_f_number(n, geometry.magnification)})
     else:
         keys = [k for k in keys if k not in ("f_number", "working_f_number")]
         columns = [c for c in columns if c.key != "working_f_number"]
     rows = rows_from(count, values)
     note = footer("thin", None, "", "unit focusing, m = v/u", distance_from) if fmt == "table" else ""
-    write_rows(rows, columns, fmt, units, note, keys=keys)
+    return Output(rows, columns, keys, note)
 
 
-def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
-             preset_files) -> None:
+def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
+             preset_files) -> Output:
     nears = required(ctx, near, "--near")
     fars = required(ctx, far, "--far")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    count, (f, a, b, c) = combine(focal, nears, fars, cocs)
+    count, (f, a, b, c) = combine_params(ctx, focal, nears, fars, cocs)
     with library_errors(ctx):
         solution = focus_for_limits(f, c, a, b, distance_from)
     rows = rows_from(count, {
@@ -106,4 +103,4 @@ def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, di
         "f_number": solution.f_number, "coc_mm": c, "distance_from": distance_from,
     })
     note = footer("thin", cocs, coc_origin, chosen.label, distance_from) if fmt == "table" else ""
-    write_rows(rows, INVERSE_COLUMNS, fmt, units, note, keys=INVERSE_KEYS)
+    return Output(rows, INVERSE_COLUMNS, INVERSE_KEYS, note)

@@ -4,15 +4,15 @@ from __future__ import annotations
 
 import click
 
+from camtool.cli.command import Output, camtool_command, combine_params
+
 from camtool.cli.common import footer, required, rows_from
 from camtool.cli.equipment import resolve_sensor
-from camtool.cli.options import DISTANCE_M, distance_plane_option, focal_option, library_errors, output_options, \
+from camtool.cli.options import DISTANCE_M, distance_plane_option, focal_option, library_errors, \
     sensor_options
 from camtool.cli.params import flatten
 from camtool.fov import field_of_view, field_size_mm
-from camtool.grid import combine
 from camtool.render.columns import ANGLE, NUMBER, SMALL, Column
-from camtool.render.output import write_rows
 from camtool.thinlens import focus_geometry
 
 KEYS = ["focal_length_mm", "horizontal_deg", "vertical_deg", "diagonal_deg", "equivalent_focal_length_mm",
@@ -33,16 +33,14 @@ DISTANCE_COLUMNS = [
 ]
 
 
-@click.command("fov")
+@camtool_command("fov", keys=KEYS + DISTANCE_KEYS)
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres): angles then include focus breathing, "
                    "and the field covered at that distance is shown.")
 @sensor_options
 @distance_plane_option
-@output_options
-@click.pass_context
-def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from, fmt, units, preset_files) -> None:
+def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from, fmt, units, preset_files) -> Output:
     """Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.
 
     Without -s the angles are for infinity focus, 2·atan(size / 2f). With -s the
@@ -57,7 +55,7 @@ def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from,
     focal = required(ctx, focal_length, "-f")
     distances = flatten(distance)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    count, (f, s) = combine(focal, distances or [float("inf")])
+    count, (f, s) = combine_params(ctx, focal, distances or [float("inf")])
     with library_errors(ctx):
         geometry = focus_geometry(f, s, distance_from)
         angles = field_of_view(chosen.width_mm, chosen.height_mm, f, geometry.magnification)
@@ -77,4 +75,4 @@ def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from,
     rows = rows_from(count, values)
     note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})",
                   distance_from if distances else None) if fmt == "table" else ""
-    write_rows(rows, columns, fmt, units, note, keys=keys)
+    return Output(rows, columns, keys, note)

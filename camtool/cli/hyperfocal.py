@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import click
 
+from camtool.cli.command import Output, camtool_command, combine_params
+
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, output_options, sensor_options)
-from camtool.grid import combine
+                                 library_errors, sensor_options)
 from camtool.ladder import CHOICES, depth_of_field
 from camtool.render.columns import FNUMBER, SMALL, Column
-from camtool.render.output import write_rows
 
 KEYS = ["focal_length_mm", "f_number", "hyperfocal_mm", "near_mm", "coc_mm", "model", "distance_from"]
 COLUMNS = [
@@ -23,7 +23,7 @@ COLUMNS = [
 ]
 
 
-@click.command("hyperfocal")
+@camtool_command("hyperfocal", keys=KEYS)
 @focal_option
 @aperture_options
 @sensor_options
@@ -31,10 +31,8 @@ COLUMNS = [
 @distance_plane_option
 @click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True,
               help="approx: H = f²/(N·c); thin (and auto): H = f²/(N·c) + f, exact.")
-@output_options
-@click.pass_context
 def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, crop, coc, coc_rule, pixel_pitch,
-               distance_from, model, fmt, units, preset_files) -> None:
+               distance_from, model, fmt, units, preset_files) -> Output:
     """Hyperfocal distance: focus there and everything from the near limit to infinity is sharp.
 
     \b
@@ -46,7 +44,7 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    count, (f, n, c) = combine(focal, apertures, cocs)
+    count, (f, n, c) = combine_params(ctx, focal, apertures, cocs)
     with library_errors(ctx):
         # The hyperfocal distance in the chosen plane is where the far limit first reaches infinity;
         # the limits of a focus at infinity carry it, and focusing there gives the near limit.
@@ -58,4 +56,4 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
         "model": at_h.model, "distance_from": distance_from,
     })
     note = footer(at_h.model, cocs, coc_origin, chosen.label, distance_from) if fmt == "table" else ""
-    write_rows(rows, COLUMNS, fmt, units, note, keys=KEYS)
+    return Output(rows, COLUMNS, KEYS, note)

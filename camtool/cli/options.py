@@ -1,7 +1,7 @@
 """Options shared by the commands, and the translation of library errors into click errors.
 
 Each decorator adds one family of options with the same names, help and
-defaults everywhere: output (``--format``, ``--units``, ``--presets``), the
+defaults everywhere (the output options are in :mod:`camtool.cli.command`): the
 lens (``-f``), the aperture (``-N``, ``--exact-stops``), the focus distance
 (``-s``, ``--distance-from``), the sensor (``--sensor``, ``--crop``) and the
 circle of confusion (``--coc``, ``--coc-rule``).
@@ -17,7 +17,6 @@ import click
 
 from camtool.cli.params import FNumberType, LengthType
 from camtool.errors import DomainError
-from camtool.render.output import FORMATS
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -46,15 +45,6 @@ def _stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
 
     return apply
 
-
-output_options = _stack(
-    click.option("--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True,
-                 envvar="CAMTOOL_FORMAT", help="Output: a table for people, JSON (an array of rows) or CSV for scripts."),
-    click.option("--units", type=click.Choice(["metric", "imperial"]), default="metric", show_default=True,
-                 help="Units of the table (JSON and CSV are always in mm, degrees and seconds)."),
-    click.option("--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
-                 help="Extra preset file (YAML); repeatable, later files win."),
-)
 
 focal_option = click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
                             help="Focal length, e.g. 50 or 50mm (bare numbers are mm); a list 24,35,50 gives a row each.")

@@ -1,0 +1,136 @@
+"""How a camtool command is put together: compute rows, then one writer for every mode.
+
+A command module defines one function that turns its parameters into an
+:class:`Output` (rows, the columns a table shows, the keys JSON/CSV carry,
+and a footer) and decorates it with :func:`camtool_command`. The decorator
+adds the shared output options (``--format``, ``--units``, ``--presets``,
+``--field``) and, for commands that take one, ``--batch FILE`` with
+``--on-error``; it writes the result with the one renderer. The function
+never prints.
+
+In a batch, rows of the input file are zipped into the list options instead
+of combined: :func:`combine_params` does either, as the context says.
+"""
+
+from __future__ import annotations
+
+import functools
+import sys
+from collections.abc import Callable, Sequence
+from typing import Any, NamedTuple
+
+import click
+
+from camtool.grid import combine
+from camtool.render.columns import Column
+from camtool.render.output import FORMATS, write_rows
+
+ZIP = "camtool.zip"
+
+
+class Output(NamedTuple):
+    """What a command computed: rows of raw values, table columns, JSON/CSV keys, table footer."""
+
+    rows: list[dict[str, Any]]
+    columns: Sequence[Column]
+    keys: Sequence[str]
+    footer: str = ""
+
+
+def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
+    """Rows from list options: every combination on the command line, row by row in a batch."""
+    if not ctx.meta.get(ZIP):
+        return combine(*lists)
+    import numpy as np
+
+    count = max(len(values) for values in lists)
+    columns = tuple(np.broadcast_to(np.asarray(values, dtype=float), (count,)).copy() for values in lists)
+    return count, columns
+
+
+def output_options(function: Callable[..., Any]) -> Callable[..., Any]:
+    """The output options every command shares."""
+    decorators = [
+        click.option("--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True,
+                     envvar="CAMTOOL_FORMAT",
+                     help="Output: a table for people, JSON (an array of rows) or CSV for scripts."),
+        click.option("--units", type=click.Choice(["metric", "imperial"]), default="metric", show_default=True,
+                     help="Units of the table (JSON and CSV are always in mm, degrees and seconds)."),
+        click.option("--field", "fields", multiple=True, metavar="KEY",
+                     help="Print only this JSON key's value, one row per line, tab-separated when "
+                          "repeated; no header (for $(...)). Infinity prints as inf."),
+        click.option("--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
+                     help="Extra preset file (YAML); repeatable, later files win."),
+    ]
+    for decorator in reversed(decorators):
+        function = decorator(function)
+    return function
+
+
+def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:
+    """``--batch FILE`` and ``--on-error``."""
+    function = click.option("--on-error", type=click.Choice(["stop", "skip"]), default="stop", show_default=True,
+                            help="With --batch: stop at the first bad row (exit 2), or report it and go on.")(function)
+    return click.option("--batch", type=click.File("r", encoding="utf-8"), metavar="FILE",
+                        help="Read one scene per row from FILE (CSV with a header, or JSON lines; - for stdin); "
+                             "columns are named like the long options, cells may carry units.")(function)
+
+
+def camtool_command(
+    name: str, keys: Sequence[str] = (), batch: bool = True
+) -> Callable[[Callable[..., Output]], click.Command]:
+    """Make a click command of a function that returns an :class:`Output`.
+
+    ``keys`` are every key the command can output; a batch file may carry
+    them as extra columns (camtool's own CSV fed back in) without error.
+    """
+
+    def decorate(compute: Callable[..., Output]) -> click.Command:
+        @functools.wraps(compute)
+        def run(ctx: click.Context, /, **params: Any) -> None:
+            fields = params.pop("fields")
+            source = params.pop("batch", None)
+            on_error = params.pop("on_error", "stop")
+            fmt, units = params["fmt"], params["units"]
+            if source is not None:
+                from camtool.cli.batch import run_batch
+
+                run_batch(ctx, compute, params, source, on_error, fields)
+                return
+            out = compute(ctx, **params)
+            emit(out, fmt, units, fields)
+
+        wrapped = output_options(run)
+        if batch:
+            wrapped = batch_options(wrapped)
+        command = click.command(name)(click.pass_context(wrapped))
+        command.output_keys = frozenset(keys)  # type: ignore[attr-defined]
+        return command
+
+    return decorate
+
+
+def check_fields(fields: Sequence[str], keys: Sequence[str]) -> None:
+    """A usage error unless every ``--field`` names a key of this command's output."""
+    unknown = [f for f in fields if f not in keys]
+    if unknown:
+        raise click.BadParameter(f"{unknown[0]!r} is not a key of this output; valid: {', '.join(keys)}",
+                                 param_hint="'--field'")
+
+
+def field_line(row: dict[str, Any], fields: Sequence[str]) -> str:
+    """One line of ``--field`` output: the values, tab-separated, infinity as ``inf``."""
+    values = []
+    for key in fields:
+        value = row.get(key)
+        values.append("" if value is None else repr(value) if isinstance(value, float) else str(value))
+    return "\t".join(values)
+
+
+def emit(out: Output, fmt: str, units: str, fields: Sequence[str] = ()) -> None:
+    """Write one command's output: ``--field`` values, or the chosen format."""
+    if fields:
+        check_fields(fields, out.keys)
+        sys.stdout.write("".join(field_line(row, fields) + "\n" for row in out.rows))
+        return
+    write_rows(out.rows, out.columns, fmt, units, out.footer, keys=out.keys)
