@@ -424,7 +424,7 @@ _ND_SPELLINGS = (
     (re.compile(rf"^{_ND_NUMBER}\s*(?:stops?|ev)$"), nd_from_stops),
     (re.compile(r"^(\d+)$"), nd_from_stops),
     (re.compile(r"^nd\s*(\d+)$"), nd_from_factor),
-    (re.compile(r"^(?:x\s*(\d+(?:\.\d*)?)|(\d+(?:\.\d*)?)\s*x)$"), nd_from_factor),
+    (re.compile(r"^(?:x\s*(\d+(?:\.\d+)?)|(\d+(?:\.\d+)?)\s*x)$"), nd_from_factor),
     (re.compile(r"^(?:nd|od)\s*(\d*\.\d+|\d+\.\d*)$"), nd_from_density),
     (re.compile(r"^od\s*(\d+)$"), nd_from_density),
     (re.compile(r"^(\d*\.\d+|\d+\.\d*)\s*(?:nd|od)?$"), nd_from_density),
