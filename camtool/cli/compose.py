@@ -1,0 +1,131 @@
+"""``camtool compose``: keep the subject the same size in the frame while focal length and distance change."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import click
+
+from camtool.cli.command import Output, camtool_command, combine_params
+from camtool.cli.common import f_numbers, footer, rows_from
+from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
+                                 library_errors, sensor_options)
+from camtool.cli.params import LengthType, NumberType, flatten
+from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, Column
+
+DEFAULT_FOCAL_LENGTHS_MM = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]
+SIZE_M = LengthType("m")
+
+KEYS = ["focal_length_mm", "f_number", "distance_mm", "magnification", "horizontal_deg", "vertical_deg",
+        "field_width_mm", "field_height_mm", "near_mm", "far_mm", "coc_mm", "background_mm", "background_scale",
+        "background_width_mm", "background_blur_mm", "background_blur_pct", "foreground_mm", "foreground_scale",
+        "foreground_width_mm", "foreground_blur_mm", "foreground_blur_pct", "distance_from"]
+COLUMNS = [
+    Column("focal_length_mm", "f", SMALL),
+    Column("distance_mm", "distance"),
+    Column("magnification", "m", NUMBER),
+    Column("horizontal_deg", "horizontal", ANGLE),
+    Column("vertical_deg", "vertical", ANGLE),
+    Column("field_width_mm", "field width"),
+    Column("field_height_mm", "field height"),
+]
+APERTURE_COLUMNS = [Column("f_number", "N", FNUMBER), Column("near_mm", "near"), Column("far_mm", "far")]
+
+
+def _plane_columns(name: str, short: str) -> list[Column]:
+    return [
+        Column(f"{name}_scale", f"{short} scale", NUMBER),
+        Column(f"{name}_width_mm", f"{short} width"),
+        Column(f"{name}_blur_mm", f"{short} blur", SMALL),
+        Column(f"{name}_blur_pct", f"{short} blur %", NUMBER),
+    ]
+
+
+def _single(ctx: click.Context, values: Sequence[Any], option: str) -> float | None:
+    flat = flatten(values) if isinstance(values, (list, tuple)) else [values]
+    flat = [v for v in flat if v is not None]
+    if len(flat) > 1:
+        raise click.UsageError(f"Option '{option}' takes one value here.", ctx)
+    return flat[0] if flat else None
+
+
+# No --batch: rows compare focal lengths with the first one, which a batch of unrelated scenes would not.
+@camtool_command("compose", batch=False)
+@focal_option
+@click.option("--subject-size", type=SIZE_M, help="Subject size along --fill-axis, e.g. 1.8m (bare numbers are metres).")
+@click.option("--fill", type=NumberType(0.001, 10), help="Fraction of the frame the subject fills, e.g. 0.8.")
+@click.option("--fill-axis", type=click.Choice(["height", "width"]), default="height", show_default=True,
+              help="Frame dimension --fill refers to.")
+@click.option("--magnification", type=NumberType(1e-9, 10), help="Magnification, instead of --subject-size and --fill.")
+@aperture_options
+@click.option("--background", type=DISTANCE_M,
+              help="Distance of a background plane behind the subject (bare numbers are metres; inf allowed).")
+@click.option("--foreground", type=SIZE_M,
+              help="Distance of a foreground plane in front of the subject (bare numbers are metres).")
+@sensor_options
+@coc_options
+@distance_plane_option
+def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, magnification, f_number, exact_stops,
+            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
+            preset_files) -> Output:
+    """Perspective composition: where to stand with each focal length to frame the subject the same.
+
+    For each focal length (default 24, 35, 50, 85, 135, 200 mm): the camera
+    distance s = f(1 + 1/m) (+ the image distance, from the sensor), angles of
+    view and field at the subject; with -N the near and far limits; with
+    --background/--foreground (and -N) how large that plane's objects look
+    relative to the first focal length, how much of it is visible and its blur
+    disc b = (f·m/N)·x/(s ± x) in mm and % of the frame width.
+
+    \b
+    Examples:
+      camtool compose --subject-size 1.8m --fill 0.8
+      camtool compose --subject-size 1.8m --fill 0.8 -N 2.8 --background 20m -f 35,85,200
+    """
+    from camtool.compose import composition, magnification_for_fill, plane_view
+    from camtool.ladder import depth_of_field
+
+    focal = flatten(focal_length) or DEFAULT_FOCAL_LENGTHS_MM
+    apertures = f_numbers(f_number, exact_stops)
+    size, share = _single(ctx, subject_size, "--subject-size"), _single(ctx, fill, "--fill")
+    given_m = _single(ctx, magnification, "--magnification")
+    behind, before = _single(ctx, background, "--background"), _single(ctx, foreground, "--foreground")
+    if (given_m is None) == (size is None or share is None):
+        raise click.UsageError("Give --subject-size and --fill, or --magnification.", ctx)
+    if (behind is not None or before is not None) and not apertures:
+        raise click.UsageError("--background and --foreground need -N for the blur disc.", ctx)
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch) if apertures else (None, "")
+    frame = chosen.height_mm if fill_axis == "height" else chosen.width_mm
+    count, columns = combine_params(ctx, focal, *([apertures, cocs] if apertures else []))
+    f, n, c = (columns + (None, None))[:3]
+    values: dict[str, Any] = {"f_number": n, "coc_mm": c, "distance_from": distance_from,
+                              "background_mm": behind, "foreground_mm": before}
+    with library_errors(ctx):
+        m = given_m if given_m is not None else magnification_for_fill(size, share, frame)
+        shot = composition(f, m, chosen.width_mm, chosen.height_mm)
+        distance = shot.distance_mm if distance_from == "sensor" else shot.lens_distance_mm
+        values.update({key: getattr(shot, key) for key in ("focal_length_mm", "magnification", "horizontal_deg",
+                                                            "vertical_deg", "field_width_mm", "field_height_mm")})
+        values["distance_mm"] = distance
+        if apertures:
+            limits = depth_of_field("auto", f, n, c, distance, distance_from).limits
+            values.update({"near_mm": limits.near_mm, "far_mm": limits.far_mm})
+        for name, offset in (("background", behind), ("foreground", None if before is None else -before)):
+            if offset is not None:
+                view = plane_view(f, n, m, chosen.width_mm, offset, reference_focal_length_mm=focal[0])
+                values.update({f"{name}_scale": view.scale, f"{name}_width_mm": view.visible_width_mm,
+                               f"{name}_blur_mm": view.blur_mm, f"{name}_blur_pct": view.blur_pct})
+    rows = rows_from(count, values)
+    shown = list(COLUMNS) + (APERTURE_COLUMNS if apertures else [])
+    shown += _plane_columns("background", "bg") if behind is not None else []
+    shown += _plane_columns("foreground", "fg") if before is not None else []
+    note = ""
+    if fmt == "table":
+        subject = f"m = {m:.4g}" if given_m is not None else f"subject {size / 1000:g} m fills {share:g} of the {fill_axis}"
+        scale = f"scale vs {focal[0]:g} mm" if behind is not None or before is not None else ""
+        note = footer("thin" if apertures else None, cocs, coc_origin, chosen.label, distance_from,
+                      " · ".join(part for part in (subject, scale) if part))
+    return Output(rows, shown, KEYS, note)
