@@ -25,6 +25,7 @@ COMMANDS = {
     "compose": "camtool.cli.compose",
     "exposure": "camtool.cli.exposure",
     "presets": "camtool.cli.presets",
+    "completion": "camtool.cli.completion",
 }
 
 

@@ -1,0 +1,101 @@
+"""--batch and --field: one output row per input row, in order; bad rows named by number and column."""
+
+from __future__ import annotations
+
+import json
+import random
+
+import pytest
+
+from camtool.dof import thin_dof
+from cli_helpers import run, run_json
+
+
+def batch(text: str, *args: str) -> tuple[int, str, str]:
+    from click.testing import CliRunner
+
+    from camtool.cli import cli
+
+    result = CliRunner().invoke(cli, [*args, "--batch", "-"], input=text, env={"COLUMNS": None})
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_csv_batch_matches_single_calls_for_1000_random_scenes() -> None:
+    rng = random.Random(20261122)
+    scenes = []
+    for _ in range(1000):
+        f = rng.choice([14, 24, 35, 50, 85, 135, 200, 400])
+        n = rng.choice(["1.4", "f/2", "f2.8", "4", "5.6", "8", "11", "16", "22"])
+        s = rng.choice([f"{rng.uniform(0.1, 100):.3f}m", f"{rng.uniform(5, 300):.1f}ft", "inf"])
+        scenes.append((f, n, s))
+    # keep only reachable focus distances (at least 4f from the sensor)
+    from camtool.units import parse_length
+
+    scenes = [sc for sc in scenes if parse_length(sc[2], "m") >= 4 * sc[0] * 1.0001]
+    text = "focal-length,f-number,distance\n" + "".join(f"{f},{n},{s}\n" for f, n, s in scenes)
+    code, out, err = batch(text, "dof", "--format", "json")
+    assert code == 0, err
+    rows = json.loads(out)
+    assert len(rows) == len(scenes)
+    for (f, n, s), row in zip(scenes, rows):
+        expected = thin_dof(float(f), row["f_number"], row["coc_mm"], parse_length(s, "m"))
+        assert row["near_mm"] == pytest.approx(expected.near_mm, rel=1e-13)
+    # a sample of true single invocations (all 1000 would only repeat the same path)
+    for (f, n, s), row in list(zip(scenes, rows))[::97]:
+        (single,) = run_json("dof", "-f", str(f), "-N", n, "-s", s)
+        assert single == row
+
+
+def test_jsonl_batch_with_per_row_sensor_keeps_order() -> None:
+    text = "\n".join(json.dumps(r) for r in [
+        {"focal_length": 50, "f_number": 8, "distance": "3m", "sensor": "36x24"},
+        {"focal_length": 25, "f_number": 4, "distance": "3m", "sensor": "18x12"},
+        {"focal_length": 50, "f_number": 11, "distance": "5m", "sensor": "36x24"},
+    ]) + "\n"
+    code, out, _ = batch(text, "dof", "--format", "json")
+    rows = json.loads(out)
+    assert code == 0
+    assert [r["f_number"] for r in rows] == [8.0, 4.0, 11.0]
+    assert rows[1]["coc_mm"] == pytest.approx(rows[0]["coc_mm"] / 2)
+
+
+def test_command_line_options_apply_to_every_row_and_csv_feeds_back() -> None:
+    code, out, _ = batch("distance\n2\n3\n", "dof", "-f", "50", "-N", "8", "--format", "csv")
+    assert code == 0 and len(out.strip().splitlines()) == 3
+    code2, again, _ = batch(out, "dof", "--format", "csv")
+    assert again == out
+
+
+def test_bad_row_stops_with_its_number_and_column() -> None:
+    code, out, err = batch("f-number,distance\n8,3\nx,3\n", "dof", "-f", "50", "--format", "json")
+    assert code == 2 and out == ""
+    assert err == ("Error: --batch row 2, column 'f-number': Invalid value for '-N' / '--f-number': "
+                   "'x' is not an f-number (examples: 8, f/8, f8)\n")
+
+
+def test_skip_reports_and_goes_on() -> None:
+    code, out, err = batch("f-number,distance\n8,3\nx,3\n8,0.01\n4,2\n", "dof", "-f", "50", "--format", "json",
+                           "--on-error", "skip")
+    assert code == 0
+    assert [r["f_number"] for r in json.loads(out)] == [8.0, 4.0]
+    assert err.count("(skipped)") == 2 and "row 3" in err
+
+
+def test_unknown_column() -> None:
+    code, _, err = batch("focal,f-number\n50,8\n", "dof", "-s", "3")
+    assert code == 2 and "column 'focal' names no option" in err
+
+
+def test_field_values_for_shell() -> None:
+    result = run("dof", "-f", "24", "-N", "8,16", "-s", "inf", "--field", "near_mm", "--field", "far_mm")
+    lines = result.stdout.splitlines()
+    assert len(lines) == 2 and all(line.endswith("\tinf") for line in lines)
+    assert float(lines[0].split("\t")[0]) == pytest.approx(thin_dof(24.0, 8.0, 43.266615305567875 / 1500,
+                                                                    float("inf")).near_mm)
+
+
+def test_unknown_field_lists_keys() -> None:
+    result = run("hyperfocal", "-f", "24", "-N", "8", "--field", "far_mm")
+    assert result.exit_code == 2
+    assert result.stderr.startswith("Error: Invalid value for '--field': 'far_mm' is not a key of this output; "
+                                    "valid: focal_length_mm, f_number, hyperfocal_mm")
