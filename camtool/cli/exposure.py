@@ -132,6 +132,8 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     if not given.keys() & {"ev100", "ev"} and not ("f_number" in given and "shutter_s" in given):
         raise click.UsageError("Give a light level (--ev100, --ev, --light, --luminance, --illuminance) "
                                "or both -N and -t.", ctx)
+    if given.keys() & {"ev100", "ev"} and {"f_number", "shutter_s", "iso"} <= given.keys():
+        raise click.UsageError("With a light level, give at most two of -N, -t, --iso: the third is solved.", ctx)
     count, columns = combine_params(ctx, *given.values())
     value = dict(zip(given, columns))
     with library_errors(ctx):
