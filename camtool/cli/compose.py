@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import contextlib
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 import click
@@ -11,8 +12,9 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, sensor_options)
+                                 library_errors, sensor_options, show_length)
 from camtool.cli.params import LengthType, NumberType, flatten
+from camtool.errors import DomainError
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, Column
 
 DEFAULT_FOCAL_LENGTHS_MM = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]
@@ -49,6 +51,20 @@ def _single(ctx: click.Context, values: Sequence[Any], option: str) -> float | N
     if len(flat) > 1:
         raise click.UsageError(f"Option '{option}' takes one value here.", ctx)
     return flat[0] if flat else None
+
+
+@contextlib.contextmanager
+def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator[None]:
+    """A foreground too close to the camera as a usage error on its own option."""
+    try:
+        yield
+    except DomainError as error:
+        if error.param != "offset_mm":
+            raise
+        param = next((p for p in ctx.command.params if p.name == name), None)
+        raise click.BadParameter(f"{show_length(distance_mm, True)} is outside the valid range: "
+                                 "less than the distance from the subject to the lens's front focal point",
+                                 ctx=ctx, param=param) from None
 
 
 # No --batch: rows compare focal lengths with the first one, which a batch of unrelated scenes would not.
@@ -115,7 +131,8 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
             values.update({"near_mm": limits.near_mm, "far_mm": limits.far_mm})
         for name, offset in (("background", behind), ("foreground", None if before is None else -before)):
             if offset is not None:
-                view = plane_view(f, n, m, chosen.width_mm, offset, reference_focal_length_mm=focal[0])
+                with _plane_errors(ctx, name, behind if name == "background" else before):
+                    view = plane_view(f, n, m, chosen.width_mm, offset, reference_focal_length_mm=focal[0])
                 values.update({f"{name}_scale": view.scale, f"{name}_width_mm": view.visible_width_mm,
                                f"{name}_blur_mm": view.blur_mm, f"{name}_blur_pct": view.blur_pct})
     rows = rows_from(count, values)
