@@ -139,11 +139,13 @@ def thick_dof(
 
     With w = u − f, k = N·c·w and x = w + f/P (focus from the entrance pupil):
 
-        front = x·k/(f² + k)      near = focus − front
+        front = x·k/(f² + k)      near = o + x·f²/(f² + k)
         rear  = x·k/(f² − k)      far  = focus + rear   (∞ for focus ≥ hyperfocal)
 
-    measured in whichever plane the focus distance was; the lens-to-sensor
-    spacing stays at its focus setting. The hyperfocal distance from H is
+    with o the distance of the entrance pupil from the reference plane
+    (sensor: v + δ + e; H: e; E: 0), so every distance is in whichever plane
+    the focus distance was; the lens-to-sensor spacing stays at its focus
+    setting. The hyperfocal distance from H is
     u_H = f²/(N·c) + f (from the sensor: u_H + f + N·c + δ; from E: u_H − e),
     or the closest focus when that is nearer. Magnification m = f/(u − f).
 
@@ -214,7 +216,7 @@ def thick_dof(
         front = xp.where(finite, x * k / (f2 + k), xp.inf)
         # near from E: x·f²/(f² + k), with numerator and denominator divided by w (finite at u = ∞)
         near_pupil = f2 * (1.0 + f / (p * w)) / (f2 / w + nc)
-        near = xp.where(finite, distance_mm - front, to_pupil + near_pupil)
+        near = to_pupil + near_pupil  # not focus − front: that cancels badly far away
         u_hyp = xp.maximum(f2 / nc + f, 2.0 * f)
         if distance_from == "sensor":
             hyperfocal = u_hyp + f / (1.0 - f / u_hyp) + hiatus_mm
