@@ -390,3 +390,34 @@ def test_meter_domain() -> None:
         metering.ev_from_illuminance(-1.0)
     with pytest.raises(DomainError):
         metering.ev_from_luminance(np.array([1.0, float("nan")]))
+
+
+# --- a whole exposure -----------------------------------------------------------
+
+
+def test_plan_from_settings_adds_the_light_lost_at_the_lens() -> None:
+    # f/8 at 1/125 s through a 3-stop ND at 1:1 (2 stops): the scene must be 5 stops brighter.
+    p = exposure.plan_exposure(f_number=8.0, shutter_s=1 / 125, nd_stops=3.0, magnification=1.0)
+    assert p.solved == "ev100"
+    assert p.ev100 == pytest.approx(exposure_value(8.0, 1 / 125) + 5.0)
+    assert p.iso == 100.0
+
+
+def test_plan_from_light_solves_with_filters_and_film() -> None:
+    # EV100 12 at f/8, ISO 100: 1/64 s; 10 stops of ND make it 16 s; HP5 Plus then needs 16^1.31 s.
+    p = exposure.plan_exposure(12.0, f_number=8.0, nd_stops=10.0, reciprocity_p=1.31)
+    assert p.shutter_s == pytest.approx(16.0, rel=1e-12)
+    assert p.corrected_shutter_s == pytest.approx(16.0**1.31, rel=1e-12)
+    assert p.reciprocity_stops == pytest.approx(0.31 * 4.0, rel=1e-12)
+    assert (p.shutter_nominal_s, p.f_number_nominal, p.iso_nominal) == (15.0, 8.0, 100.0)
+
+
+def test_plan_on_arrays() -> None:
+    p = exposure.plan_exposure(np.array([10.0, 12.0]), f_number=4.0, iso=np.array([100.0, 400.0]))
+    np.testing.assert_allclose(p.shutter_s, [1 / 64, 1 / 1024])
+    np.testing.assert_array_equal(p.shutter_nominal_s, [1 / 60, 1 / 1000])
+
+
+def test_plan_needs_light_or_both_settings() -> None:
+    with pytest.raises(DomainError, match="both needed"):
+        exposure.plan_exposure(f_number=8.0)
