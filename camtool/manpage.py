@@ -40,8 +40,9 @@ UNITS = (
 
 
 def escape(text: str) -> str:
-    """Escape text for roff: backslashes, hyphens, and a leading dot or quote."""
+    """Escape text for roff: backslashes, hyphens, non-ASCII characters, and a leading dot or quote."""
     text = text.replace("\\", "\\e").replace("-", "\\-")
+    text = "".join(c if ord(c) < 128 else f"\\[u{ord(c):04X}]" for c in text)
     return "\n".join(("\\&" + line) if line[:1] in (".", "'") else line for line in text.split("\n"))
 
 

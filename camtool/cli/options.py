@@ -89,7 +89,10 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
 def domain_message(error: DomainError, name: str) -> str:
     """'<value> is outside the valid range: <range>' with lengths shown in a sensible unit."""
     metres = name in SHOWN_IN_METRES
-    value = show_length(error.value, metres) if error.param.endswith("_mm") else f"{error.value:g}"
+    if isinstance(error.value, (int, float)):
+        value = show_length(error.value, metres) if error.param.endswith("_mm") else f"{error.value:g}"
+    else:
+        value = str(error.value)
     valid = error.valid
     if error.limit is not None:
         valid = valid.replace("{limit}", show_length(error.limit, metres))
