@@ -1,0 +1,448 @@
+"""Import the lensfun database installed on this system as a camtool preset file.
+
+lensfun (used by darktable and RawTherapee; Debian package
+``liblensfun-data-v1``) describes cameras and lenses in XML files under
+``/usr/share/lensfun/version_1/``, with newer copies in
+``/var/lib/lensfun-updates`` and ``~/.local/share/lensfun``. camtool ships no
+copy of it (its licence is CC BY-SA 3.0); this module reads the user's own
+copy at run time with :mod:`xml.etree.ElementTree` and writes
+``$XDG_DATA_HOME/camtool/lensfun.yaml``, which :func:`camtool.presets.load_db`
+reads as the "lensfun" tier.
+
+What is kept:
+
+- each ``<camera>`` becomes a *sensor* preset named after the body. lensfun
+  gives only a crop factor, so the size is derived from it: diagonal
+  43.27 mm / crop, in the aspect ratio of the body's fixed lens when lensfun
+  gives one, else 3:2 for crop factors 0.9 to 1.8 (35 mm and APS bodies) and
+  4:3 otherwise (medium format, Four Thirds, compacts); every such sensor is
+  marked ``approximate``;
+- each ``<lens>`` becomes a lens preset with its focal length or range and
+  widest f-number, taken from ``<focal>`` / ``<aperture>`` when present, else
+  parsed from the model name (``18-55mm f/3.5-5.6``, ``1:2``, ``2.8/50``),
+  else from the range of its calibration data, as lensfun itself does.
+
+Entries that clash with camtool's shipped presets or with an earlier entry,
+or whose focal length cannot be found, are skipped and counted; a file that
+cannot be parsed is reported and skipped, never failing the import.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+from xml.etree import ElementTree
+
+from camtool.presets import paths
+from camtool.presets.schema import FULL_FRAME_DIAGONAL_MM, normalize, slugify
+
+_NUMBER = r"(\d+(?:[.,]\d+)?)"
+_FOCAL_IN_NAME = re.compile(rf"(?<![\d.]){_NUMBER}(?:\s*-\s*{_NUMBER})?\s*mm", re.IGNORECASE)
+_APERTURE_IN_NAME = re.compile(rf"(?:(?<![a-z])|(?<=mm))f\s*/?\s*{_NUMBER}(?:\s*-\s*{_NUMBER})?", re.IGNORECASE)
+_RATIO_IN_NAME = re.compile(rf"(?<![\d.])1\s*:\s*{_NUMBER}(?:\s*-\s*{_NUMBER})?")
+_ZEISS_STYLE = re.compile(rf"(?<![\d.]){_NUMBER}\s*/\s*(\d+)(?![\d.])")
+_ASPECT = re.compile(r"^\s*(\d+(?:\.\d+)?)\s*:\s*(\d+(?:\.\d+)?)\s*$")
+_GENERIC_LENS_NAMES = {"fixedlens", "standard"}
+
+
+@dataclass
+class ImportResult:
+    """What an import did: counts, the reasons entries were skipped, files that failed."""
+
+    sensors: int = 0
+    lenses: int = 0
+    files: int = 0
+    skipped: Counter[str] = field(default_factory=Counter)
+    bad_files: list[tuple[str, str]] = field(default_factory=list)
+    path: str | None = None
+
+    @property
+    def imported(self) -> int:
+        """Presets written (sensors plus lenses)."""
+        return self.sensors + self.lenses
+
+    @property
+    def skipped_total(self) -> int:
+        """Entries and files left out."""
+        return sum(self.skipped.values()) + len(self.bad_files)
+
+
+class LensfunImportError(Exception):
+    """Nothing could be imported (no lensfun data found, or the output cannot be written)."""
+
+
+def default_dirs() -> list[Path]:
+    """The lensfun data directories on this system that hold XML files, least important first."""
+    data_home = Path(os.environ.get("XDG_DATA_HOME", "") or Path.home() / ".local" / "share")
+    bases = [Path("/usr/share/lensfun"), Path("/usr/local/share/lensfun"), Path("/var/lib/lensfun-updates"),
+             data_home / "lensfun", data_home / "lensfun" / "updates"]
+    found = []
+    for base in bases:
+        for candidate in (base / "version_1", base):
+            if candidate.is_dir() and any(candidate.glob("*.xml")):
+                found.append(candidate)
+                break
+    return found
+
+
+def parse_focal(name: str) -> tuple[float, float] | None:
+    """Focal length range in mm from a lens model name.
+
+    >>> parse_focal("Canon EF-S 18-55mm f/3.5-5.6 IS STM")
+    (18.0, 55.0)
+    >>> parse_focal("XF18mmF2 R"), parse_focal("Touit 2.8/50M"), parse_focal("fixed lens")
+    ((18.0, 18.0), (50.0, 50.0), None)
+    """
+    match = _FOCAL_IN_NAME.search(name)
+    if match:
+        low = _float(match.group(1))
+        return low, _float(match.group(2)) if match.group(2) else low
+    match = _ZEISS_STYLE.search(name)
+    if match:
+        focal = _float(match.group(2))
+        return focal, focal
+    return None
+
+
+def parse_aperture(name: str) -> float | None:
+    """The widest f-number from a lens model name (``f/2.8``, ``F4``, ``1:2``, ``2.8/50``).
+
+    >>> parse_aperture("Nikon AF-S DX Zoom-Nikkor 16-85mm f/3.5-5.6G ED VR")
+    3.5
+    >>> parse_aperture("smc Pentax-M 35mm 1:2"), parse_aperture("XF18mmF2 R"), parse_aperture("FE 24mm")
+    (2.0, 2.0, None)
+    """
+    for pattern in (_APERTURE_IN_NAME, _RATIO_IN_NAME):
+        match = pattern.search(name)
+        if match:
+            return _float(match.group(1))
+    match = _ZEISS_STYLE.search(name)
+    return _float(match.group(1)) if match else None
+
+
+def parse_aperture_tele(name: str) -> float | None:
+    """The widest f-number at the long end of a variable-aperture zoom, from its name.
+
+    >>> parse_aperture_tele("Canon EF-S 18-55mm f/3.5-5.6 IS STM"), parse_aperture_tele("FE 50mm F1.8")
+    (5.6, None)
+    """
+    for pattern in (_APERTURE_IN_NAME, _RATIO_IN_NAME):
+        match = pattern.search(name)
+        if match:
+            return _float(match.group(2)) if match.group(2) else None
+    return None
+
+
+def sensor_size(crop_factor: float, aspect: float | None = None) -> tuple[float, float]:
+    """Width and height in mm of a format with this crop factor (aspect = width / height).
+
+    >>> tuple(round(x, 2) for x in sensor_size(1.0))
+    (36.0, 24.0)
+    >>> tuple(round(x, 2) for x in sensor_size(2.0))
+    (17.31, 12.98)
+    """
+    if aspect is None:
+        aspect = 1.5 if 0.9 <= crop_factor <= 1.8 else 4.0 / 3.0
+    diagonal = FULL_FRAME_DIAGONAL_MM / crop_factor
+    height = diagonal / math.hypot(aspect, 1.0)
+    return aspect * height, height
+
+
+def _float(text: str) -> float:
+    return float(text.replace(",", "."))
+
+
+def _text(element: ElementTree.Element, tag: str) -> str | None:
+    """The text of the first child ``tag`` without a ``lang`` attribute (lensfun's default language)."""
+    fallback = None
+    for child in element.findall(tag):
+        value = " ".join((child.text or "").split())
+        if not value:
+            continue
+        if "lang" not in child.attrib:
+            return value
+        fallback = fallback or value
+    return fallback
+
+
+def _positive(value: Any) -> float | None:
+    try:
+        number = _float(str(value))
+    except (TypeError, ValueError):
+        return None
+    return number if number > 0 and math.isfinite(number) else None
+
+
+def _aspect(text: str | None) -> float | None:
+    match = _ASPECT.match(text or "")
+    if not match:
+        return None
+    width, height = float(match.group(1)), float(match.group(2))
+    return width / height if width > 0 and height > 0 else None
+
+
+def _display_name(maker: str | None, model: str) -> str:
+    if maker and not normalize(model).startswith(normalize(maker)):
+        return f"{maker} {model}"
+    return model
+
+
+class _Collector:
+    """Accumulates records from the XML files, skipping clashes."""
+
+    def __init__(self, taken: dict[str, set[str]]) -> None:
+        self.taken = taken
+        self.sensors: list[dict[str, Any]] = []
+        self.lenses: list[dict[str, Any]] = []
+        self.keys: dict[str, set[str]] = {"sensor": set(), "lens": set()}
+        self.result = ImportResult()
+        self.mount_cameras: dict[str, list[tuple[str, str]]] = {}
+        self.mount_aspect: dict[str, float] = {}
+
+    def add(self, kind: str, record: dict[str, Any]) -> bool:
+        key = normalize(record["id"])
+        if not key:
+            self.result.skipped[f"{kind}: no usable name"] += 1
+            return False
+        if key in self.taken.get(kind, set()):
+            self.result.skipped[f"{kind}: already in camtool's shipped presets"] += 1
+            return False
+        if key in self.keys[kind]:
+            self.result.skipped[f"{kind}: listed more than once"] += 1
+            return False
+        self.keys[kind].add(key)
+        (self.sensors if kind == "sensor" else self.lenses).append(record)
+        return True
+
+
+def _scan(root: ElementTree.Element, collector: _Collector) -> None:
+    """First pass over a file: fixed-lens mounts and their aspect ratios."""
+    for camera in root.iter("camera"):
+        mount, model = _text(camera, "mount"), _text(camera, "model")
+        if mount and model:
+            name = _display_name(_text(camera, "maker"), model)
+            collector.mount_cameras.setdefault(mount, []).append((name, slugify(name)))
+    for lens in root.iter("lens"):
+        aspect = _aspect(_text(lens, "aspect-ratio"))
+        for mount in lens.findall("mount"):
+            if aspect and mount.text:
+                collector.mount_aspect.setdefault(mount.text.strip(), aspect)
+
+
+def _cameras(root: ElementTree.Element, source: str, collector: _Collector) -> None:
+    for camera in root.iter("camera"):
+        model = _text(camera, "model")
+        crop = _positive(_text(camera, "cropfactor"))
+        if not model or crop is None:
+            collector.result.skipped["camera: no model or crop factor"] += 1
+            continue
+        name = _display_name(_text(camera, "maker"), model)
+        variant = _text(camera, "variant")
+        if variant:
+            name = f"{name} ({variant})"
+        mount = _text(camera, "mount")
+        aspect = collector.mount_aspect.get(mount or "")
+        width, height = sensor_size(crop, aspect)
+        ratio = "lens data" if aspect else ("3:2" if 0.9 <= crop <= 1.8 else "4:3")
+        record = {"id": slugify(name), "name": name, "width_mm": round(width, 3), "height_mm": round(height, 3),
+                  "approximate": True, "category": "digital",
+                  "source": f"lensfun {source}: crop factor {crop:g}, size derived (aspect from {ratio})"}
+        if mount:
+            record["notes"] = f"lensfun mount {mount}"
+        if collector.add("sensor", record):
+            collector.result.sensors += 1
+
+
+def _calibration_range(lens: ElementTree.Element, attribute: str) -> list[float]:
+    values = []
+    for element in lens.iter():
+        value = _positive(element.attrib.get(attribute))
+        if value is not None and element.tag in {"distortion", "tca", "vignetting"}:
+            values.append(value)
+    return values
+
+
+def _lenses(root: ElementTree.Element, source: str, collector: _Collector) -> None:
+    for lens in root.iter("lens"):
+        model = _text(lens, "model")
+        if not model:
+            collector.result.skipped["lens: no model"] += 1
+            continue
+        mounts = [m.text.strip() for m in lens.findall("mount") if m.text and m.text.strip()]
+        maker = _text(lens, "maker")
+        sensor_id = None
+        if normalize(model) in _GENERIC_LENS_NAMES or "(standard)" in model.lower():
+            bodies = [b for mount in mounts for b in collector.mount_cameras.get(mount, [])]
+            if normalize(model) in _GENERIC_LENS_NAMES and len(bodies) == 1:
+                name = f"{bodies[0][0]} fixed lens"
+                sensor_id = bodies[0][1]
+            elif normalize(model) in _GENERIC_LENS_NAMES:
+                name = f"{maker or ''} fixed lens {mounts[0] if mounts else ''}".strip()
+            else:
+                name = _display_name(maker, model)
+        else:
+            name = _display_name(maker, model)
+        focal = _element_range(lens, "focal") or parse_focal(model)
+        if focal is None:
+            calibrated = _calibration_range(lens, "focal")
+            focal = (min(calibrated), max(calibrated)) if calibrated else None
+        if focal is None:
+            collector.result.skipped["lens: focal length unknown"] += 1
+            continue
+        aperture_range = _element_range(lens, "aperture")
+        aperture = aperture_range[0] if aperture_range else parse_aperture(model)
+        if aperture is None:
+            calibrated = _calibration_range(lens, "aperture")
+            aperture = min(calibrated) if calibrated else None
+        record: dict[str, Any] = {"id": slugify(name), "name": name}
+        low, high = sorted(focal)
+        if high > low:
+            record.update(focal_min_mm=low, focal_max_mm=high)
+        else:
+            record["focal_length_mm"] = low
+        if aperture is not None:
+            record["f_number_min"] = aperture
+            tele = parse_aperture_tele(model) if not aperture_range else None
+            if tele is not None and tele > aperture and high > low:
+                record["f_number_min_tele"] = tele
+            if aperture_range and aperture_range[1] > aperture:
+                record["f_number_max"] = aperture_range[1]
+        if mounts:
+            record["mount"] = mounts[0]
+        if sensor_id and normalize(sensor_id) in collector.keys["sensor"]:
+            record["sensor"] = sensor_id
+        crop = _positive(_text(lens, "cropfactor"))
+        record["source"] = f"lensfun {source}" + (f" (calibrated at crop factor {crop:g})" if crop else "")
+        if collector.add("lens", record):
+            collector.result.lenses += 1
+
+
+def _element_range(lens: ElementTree.Element, tag: str) -> tuple[float, float] | None:
+    element = lens.find(tag)
+    if element is None:
+        return None
+    low = _positive(element.attrib.get("min") or element.attrib.get("value"))
+    high = _positive(element.attrib.get("max")) or low
+    if low is None or high is None:
+        return None
+    return (low, high) if high >= low else (high, low)
+
+
+def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | None = None
+                 ) -> tuple[list[dict[str, Any]], list[dict[str, Any]], ImportResult]:
+    """Read every ``*.xml`` of ``dirs`` (default :func:`default_dirs`); return sensors, lenses, result.
+
+    ``taken`` maps a kind to lookup keys that must not be reused (camtool's
+    shipped presets); clashing entries are skipped and counted.
+    """
+    directories = default_dirs() if dirs is None else [Path(d) for d in dirs]
+    files = [f for d in directories for f in sorted(Path(d).glob("*.xml"))]
+    collector = _Collector(taken or {})
+    parsed = []
+    for path in files:
+        try:
+            root = ElementTree.parse(path).getroot()
+        except (ElementTree.ParseError, OSError, ValueError) as error:
+            collector.result.bad_files.append((str(path), " ".join(str(error).split())))
+            continue
+        collector.result.files += 1
+        parsed.append((path, root))
+        _scan(root, collector)
+    # Later directories (updates, the user's own) come first so that they win the clashes.
+    for path, root in reversed(parsed):
+        try:
+            _cameras(root, path.name, collector)
+        except (ValueError, TypeError, AttributeError) as error:
+            collector.result.bad_files.append((str(path), f"cameras: {error}"))
+    for path, root in reversed(parsed):
+        try:
+            _lenses(root, path.name, collector)
+        except (ValueError, TypeError, AttributeError) as error:
+            collector.result.bad_files.append((str(path), f"lenses: {error}"))
+    return collector.sensors, collector.lenses, collector.result
+
+
+def _shipped_keys() -> dict[str, set[str]]:
+    from camtool.presets.loader import read_file
+
+    keys: dict[str, set[str]] = {"sensor": set(), "lens": set()}
+    for path in paths.shipped_files():
+        records = read_file(path).records
+        for kind in keys:
+            for record in records.get(kind, ()):
+                keys[kind].update(record["_keys"])
+    return keys
+
+
+def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.PathLike[str] | None = None
+                   ) -> ImportResult:
+    """Read the system's lensfun database and write it as a camtool preset file, atomically.
+
+    ``dirs`` defaults to :func:`default_dirs`, ``out`` to
+    ``$XDG_DATA_HOME/camtool/lensfun.yaml``. The file is written to a
+    temporary name, validated, then moved into place, so a failed import
+    leaves the previous file untouched. Raises :class:`LensfunImportError`
+    when no lensfun XML is found or nothing can be imported.
+    """
+    directories = default_dirs() if dirs is None else [Path(d) for d in dirs]
+    if not directories or not any(Path(d).glob("*.xml") for d in directories):
+        where = ", ".join(map(str, directories)) or "the usual places"
+        raise LensfunImportError(
+            f"no lensfun XML files found in {where} (install liblensfun-data-v1 or give --dir)")
+    sensors, lenses, result = read_lensfun(directories, _shipped_keys())
+    if not sensors and not lenses:
+        raise LensfunImportError(f"nothing imported from {', '.join(map(str, directories))}")
+    target = Path(out) if out is not None else paths.lensfun_file()
+    _write_atomically(target, _render(sensors, lenses, directories))
+    result.path = str(target)
+    return result
+
+
+def _render(sensors: list[dict[str, Any]], lenses: list[dict[str, Any]], dirs: list[Path]) -> str:
+    import yaml
+
+    dumper = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
+    body = yaml.dump({"sensors": sensors, "lenses": lenses}, Dumper=dumper, sort_keys=False, allow_unicode=True,
+                     width=120, default_flow_style=None)
+    header = (
+        "# camtool presets imported from the lensfun database on this system\n"
+        f"# by `camtool presets import-lensfun` from: {', '.join(map(str, dirs))}\n"
+        "# lensfun data is licensed CC BY-SA 3.0 (https://lensfun.github.io/). Sensor sizes are derived\n"
+        "# from crop factors and marked approximate. Re-run the import to refresh; do not edit.\n"
+    )
+    return header + body
+
+
+def _write_atomically(target: Path, text: str) -> None:
+    import tempfile
+
+    from camtool.presets.errors import PresetFileError
+    from camtool.presets.loader import parse_file, read_file
+
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        handle = tempfile.NamedTemporaryFile("w", encoding="utf-8", dir=target.parent, prefix=".lensfun-",
+                                             suffix=".yaml.tmp", delete=False)
+    except OSError as error:
+        raise LensfunImportError(f"cannot write {target}: {error.strerror or error}") from None
+    try:
+        with handle:
+            handle.write(text)
+        problems = parse_file(handle.name).problems
+        if problems:
+            raise LensfunImportError(f"the imported presets do not validate: {problems[0].error(str(target))}")
+        os.replace(handle.name, target)
+    except OSError as error:
+        raise LensfunImportError(f"cannot write {target}: {error.strerror or error}") from None
+    finally:
+        if os.path.exists(handle.name):
+            os.unlink(handle.name)
+    try:
+        read_file(str(target), cache_dir=str(paths.cache_dir()))
+    except PresetFileError:
+        pass
