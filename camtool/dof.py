@@ -100,12 +100,13 @@ def approx_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: An
     s = distance_mm
     with quiet(xp):
         ratio = h0 / s  # 0 at infinity
-        near = h0 / (1.0 + ratio)
-        front = s / (ratio + 1.0)
+        denominator = 1.0 + ratio
+        near = h0 / denominator
+        front = s / denominator
         beyond = s >= h0
-        gap = xp.where(beyond, 1.0, ratio - 1.0)
-        far = xp.where(beyond, xp.inf, xp.minimum(h0 / gap, _FAR_CAP_MM))
-        rear = xp.where(beyond, xp.inf, xp.minimum(s / gap, _FAR_CAP_MM))
+        gap = xp.where(beyond, 1.0, ratio - 1.0)  # > 0 where used: s < h0
+        far = xp.where(beyond, xp.inf, h0 / gap)
+        rear = xp.where(beyond, xp.inf, s / gap)
         past_f = s > focal_length_mm
         m = xp.where(past_f, focal_length_mm / xp.where(past_f, s - focal_length_mm, 1.0), 0.0)
     return DofLimits(near, far, front, rear, front + rear, broadcast(h0, s, focal_length_mm), m)
@@ -164,16 +165,18 @@ def thin_dof(
     else:
         raise ValueError(f"distance_from must be one of {DISTANCE_PLANES}, not {distance_from!r}")
     with quiet(xp):
-        recip = (h0 - f) / u  # > -1/2 because u ≥ 2f
-        near = h0 / (1.0 + recip) + offset
-        front = (u - f) / (1.0 + recip)
-        beyond = distance_mm >= hyperfocal
+        u_minus_f = u - f
+        denominator = 1.0 + (h0 - f) / u  # > 1/2 because u ≥ 2f; 1 at infinity
+        near = h0 / denominator
+        front = u_minus_f / denominator
         gap = h - u
         usable = gap > 0
         safe_gap = xp.where(usable, gap, 1.0)
-        far_lens = xp.where(usable, xp.minimum(u * h0 / safe_gap, _FAR_CAP_MM), _FAR_CAP_MM)
-        rear = xp.where(usable, xp.minimum(u * (u - f) / safe_gap, _FAR_CAP_MM), _FAR_CAP_MM)
-        far = xp.where(beyond, xp.inf, far_lens + offset)
-        rear = xp.where(beyond, xp.inf, rear)
-        m = f / (u - f)
+        beyond = distance_mm >= hyperfocal
+        far = xp.where(beyond, xp.inf, xp.where(usable, u * h0 / safe_gap, _FAR_CAP_MM))
+        rear = xp.where(beyond, xp.inf, xp.where(usable, u * u_minus_f / safe_gap, _FAR_CAP_MM))
+        m = f / u_minus_f
+        if distance_from == "sensor":
+            near = near + offset
+            far = far + offset
     return DofLimits(near, far, front, rear, front + rear, broadcast(hyperfocal, u), m)
