@@ -14,7 +14,6 @@ same id, aliases and all.
 
 from __future__ import annotations
 
-import difflib
 import os
 from collections.abc import Iterable, Sequence
 from typing import Any
@@ -166,6 +165,8 @@ class Database:
         key = normalize(name)
         candidates = {**{k: e for k, e in index.names.items() if e is not None}, **index.keys}
         out: list[str] = []
+        import difflib
+
         for match in difflib.get_close_matches(key, list(candidates), n=limit * 2, cutoff=0.6):
             if candidates[match].id not in out:
                 out.append(candidates[match].id)
@@ -191,7 +192,7 @@ class Database:
         for tier in self.tiers:
             tier_keys: dict[str, _Entry] = {}
             for path in tier.files:
-                for record in self._files[path].records.get(kind, ()):
+                for record in self._files[path].records_of(kind):
                     entry = _Entry(record, path, tier.name)
                     for position, key in enumerate(record["_keys"]):
                         other = tier_keys.get(key)
@@ -327,7 +328,7 @@ def load_db(extra_files: Iterable[str | os.PathLike[str]] = (), *, use_cache: bo
     (36.0, 'four-thirds')
     """
     tiers = paths.tiers(tuple(os.fspath(p) for p in extra_files), lensfun=lensfun)
-    cache = str(paths.cache_dir()) if use_cache and not os.environ.get("CAMTOOL_NO_CACHE") else None
+    cache = paths.cache_dir() if use_cache and not os.environ.get("CAMTOOL_NO_CACHE") else None
     files: dict[str, FileData] = {}
     for tier in tiers:
         for path in tier.files:

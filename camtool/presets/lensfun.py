@@ -443,6 +443,6 @@ def _write_atomically(target: Path, text: str) -> None:
         if os.path.exists(handle.name):
             os.unlink(handle.name)
     try:
-        read_file(str(target), cache_dir=str(paths.cache_dir()))
+        read_file(str(target), cache_dir=paths.cache_dir())
     except PresetFileError:
         pass

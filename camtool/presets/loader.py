@@ -17,13 +17,12 @@ from __future__ import annotations
 import json
 import os
 import zlib
-from dataclasses import dataclass, field
 from typing import Any
 
 from camtool.presets.errors import PresetFileError
 from camtool.presets.schema import REFERENCES, SECTIONS, check_record, normalize, show, suggest
 
-CACHE_FORMAT = 3
+CACHE_FORMAT = 4
 """Bumped whenever the record layout changes, so old cache files are ignored."""
 
 MAX_NODES = 2_000_000
@@ -33,15 +32,18 @@ MAX_BYTES = 64 * 1024 * 1024
 """Largest preset file read."""
 
 
-@dataclass
 class Problem:
     """One problem found in a file (see :class:`PresetFileError` for the fields)."""
 
-    problem: str
-    line: int | None = None
-    kind: str | None = None
-    preset_id: str | None = None
-    key: str | None = None
+    __slots__ = ("problem", "line", "kind", "preset_id", "key")
+
+    def __init__(self, problem: str, line: int | None = None, kind: str | None = None,
+                 preset_id: str | None = None, key: str | None = None) -> None:
+        self.problem = problem
+        self.line = line
+        self.kind = kind
+        self.preset_id = preset_id
+        self.key = key
 
     def error(self, path: str) -> PresetFileError:
         """The problem as an exception naming ``path``."""
@@ -49,18 +51,55 @@ class Problem:
                                key=self.key)
 
 
-@dataclass
 class FileData:
-    """The validated records of one file, grouped by kind.
+    """The validated records of one file, grouped by kind, read from the cache one kind at a time.
 
     Each record is a dict of checked values plus ``_line`` (the line of the
     entry), ``_refs`` (line of each key that names another preset) and
     ``_keys`` (its normalized id and aliases, the lookup keys).
     """
 
-    path: str
-    records: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
-    problems: list[Problem] = field(default_factory=list)
+    def __init__(self, path: str, records: dict[str, list[dict[str, Any]]] | None = None,
+                 cached: tuple[str, int, dict[str, list[int]]] | None = None) -> None:
+        self.path = path
+        self.problems: list[Problem] = []
+        self._records = records if records is not None else {}
+        self._cached = cached
+
+    def records_of(self, kind: str) -> list[dict[str, Any]]:
+        """The records of one kind (read from the cache on first use)."""
+        records = self._records.get(kind)
+        if records is None:
+            records = self._records[kind] = self._load_kind(kind)
+        return records
+
+    @property
+    def records(self) -> dict[str, list[dict[str, Any]]]:
+        """Every kind's records (kinds without presets left out)."""
+        if self._cached is not None:
+            for kind in self._cached[2]:
+                self.records_of(kind)
+        return {kind: records for kind, records in self._records.items() if records}
+
+    def _load_kind(self, kind: str) -> list[dict[str, Any]]:
+        if self._cached is None:
+            return []
+        cache_path, body_start, sections = self._cached
+        if kind not in sections:
+            return []
+        offset, length = sections[kind]
+        try:
+            with open(cache_path, "rb") as handle:
+                handle.seek(body_start + offset)
+                records = json.loads(handle.read(length))
+            if isinstance(records, list):
+                return records
+        except (OSError, ValueError):
+            pass
+        # The cache vanished or changed under us: parse the file itself.
+        fresh = read_file(self.path)
+        self._records, self._cached = fresh._records, None
+        return self._records.get(kind, [])
 
 
 def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
@@ -78,7 +117,7 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     if cache_path:
         cached = _read_cache(cache_path, stamp)
         if cached is not None:
-            return FileData(path, cached)
+            return FileData(path, cached=cached)
     data = parse_file(path)
     if data.problems:
         first = data.problems[0]
@@ -89,7 +128,7 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
                             first.line, first.kind, first.preset_id, first.key)
         raise first.error(path)
     if cache_path:
-        _write_cache(cache_path, stamp, data.records)
+        _write_cache(cache_path, stamp, data._records)
     return data
 
 
@@ -268,7 +307,7 @@ def _collect_entry(kind: str, entry: dict[Any, Any], node: Any, data: FileData) 
     if kind == "prescription":
         record["_data"] = {k: v for k, v in entry.items() if not str(k).startswith("_")}
         record["_data"]["surfaces"] = record["surfaces"]
-    data.records.setdefault(kind, []).append(record)
+    data._records.setdefault(kind, []).append(record)
 
 
 def _cache_path(cache_dir: str, path: str) -> str:
@@ -276,25 +315,40 @@ def _cache_path(cache_dir: str, path: str) -> str:
     return os.path.join(cache_dir, f"{base}-{zlib.crc32(path.encode('utf-8', 'surrogateescape')):08x}.json")
 
 
-def _read_cache(cache_path: str, stamp: list[Any]) -> dict[str, list[dict[str, Any]]] | None:
+def _read_cache(cache_path: str, stamp: list[Any]) -> tuple[str, int, dict[str, list[int]]] | None:
+    """The header of a fresh cache file: its path, where the records start, and each kind's byte range.
+
+    The cache holds one JSON header line followed by one JSON list per kind,
+    so a lookup parses only the kinds it needs.
+    """
     try:
-        with open(cache_path, encoding="utf-8") as handle:
-            cached = json.load(handle)
+        with open(cache_path, "rb") as handle:
+            header_line = handle.readline()
+        header = json.loads(header_line)
     except (OSError, ValueError):
         return None
-    if not isinstance(cached, dict) or cached.get("stamp") != stamp:
+    if not isinstance(header, dict) or header.get("stamp") != stamp or not isinstance(header.get("sections"), dict):
         return None
-    records = cached.get("records")
-    return records if isinstance(records, dict) else None
+    return cache_path, len(header_line), header["sections"]
 
 
 def _write_cache(cache_path: str, stamp: list[Any], records: dict[str, list[dict[str, Any]]]) -> None:
     """Write the cache atomically; a cache that cannot be written is silently skipped."""
     temporary = f"{cache_path}.{os.getpid()}.tmp"
     try:
+        sections: dict[str, list[int]] = {}
+        blobs = []
+        offset = 0
+        for kind, kind_records in records.items():
+            blob = json.dumps(kind_records, separators=(",", ":")).encode("utf-8")
+            sections[kind] = [offset, len(blob)]
+            blobs.append(blob)
+            offset += len(blob)
+        header = json.dumps({"stamp": stamp, "sections": sections}, separators=(",", ":")).encode("utf-8")
         os.makedirs(os.path.dirname(cache_path), exist_ok=True)
-        with open(temporary, "w", encoding="utf-8") as handle:
-            json.dump({"stamp": stamp, "records": records}, handle, separators=(",", ":"))
+        with open(temporary, "wb") as handle:
+            handle.write(header + b"\n")
+            handle.writelines(blobs)
         os.replace(temporary, cache_path)
     except (OSError, TypeError, ValueError):
         try:

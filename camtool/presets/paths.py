@@ -19,29 +19,30 @@ it and in its ``presets/`` subdirectory is read, in name order.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
-from pathlib import Path
+from typing import NamedTuple
 
 import camtool
 
 _SUFFIXES = (".yaml", ".yml")
 
+# Plain strings rather than pathlib: this module is on the start-up path of every
+# command that names a preset, and pathlib costs a few milliseconds to import.
 
-@dataclass(frozen=True)
-class Tier:
+
+class Tier(NamedTuple):
     """One level of the search order: a name for messages and its files in load order."""
 
     name: str
     files: tuple[str, ...]
 
 
-def _xdg(variable: str, default: str) -> Path:
+def _xdg(variable: str, default: str) -> str:
     """An XDG base directory; relative values are ignored, as the specification says."""
     value = os.environ.get(variable, "")
-    return Path(value) if value and os.path.isabs(value) else Path.home() / default
+    return value if value and os.path.isabs(value) else os.path.join(os.path.expanduser("~"), default)
 
 
-def shipped_dir() -> Path:
+def shipped_dir() -> str:
     """The shipped ``lens_db`` directory.
 
     In a wheel it is ``camtool/lens_db`` (the location
@@ -49,41 +50,41 @@ def shipped_dir() -> Path:
     the file system, computed here without importing importlib.resources); from
     a source tree it is the repository's ``lens_db/``.
     """
-    package = Path(camtool.__file__).resolve().parent
-    for candidate in (package / "lens_db", package.parent / "lens_db"):
-        if candidate.is_dir():
+    package = os.path.dirname(os.path.realpath(camtool.__file__))
+    for candidate in (os.path.join(package, "lens_db"), os.path.join(os.path.dirname(package), "lens_db")):
+        if os.path.isdir(candidate):
             return candidate
-    return package / "lens_db"
+    return os.path.join(package, "lens_db")
 
 
-def data_dir() -> Path:
+def data_dir() -> str:
     """camtool's data directory: ``$XDG_DATA_HOME/camtool`` (default ``~/.local/share/camtool``)."""
-    return _xdg("XDG_DATA_HOME", ".local/share") / "camtool"
+    return os.path.join(_xdg("XDG_DATA_HOME", ".local/share"), "camtool")
 
 
-def lensfun_file() -> Path:
+def lensfun_file() -> str:
     """Where ``import-lensfun`` writes its presets and where :func:`load_db` reads them."""
-    return data_dir() / "lensfun.yaml"
+    return os.path.join(data_dir(), "lensfun.yaml")
 
 
-def cache_dir() -> Path:
+def cache_dir() -> str:
     """The cache of parsed preset files: ``$XDG_CACHE_HOME/camtool/presets``."""
-    return _xdg("XDG_CACHE_HOME", ".cache") / "camtool" / "presets"
+    return os.path.join(_xdg("XDG_CACHE_HOME", ".cache"), "camtool", "presets")
 
 
-def config_home() -> Path:
+def config_home() -> str:
     """The user's configuration directory: ``$XDG_CONFIG_HOME/camtool`` (default ``~/.config/camtool``)."""
-    return _xdg("XDG_CONFIG_HOME", ".config") / "camtool"
+    return os.path.join(_xdg("XDG_CONFIG_HOME", ".config"), "camtool")
 
 
-def config_dirs() -> list[Path]:
+def config_dirs() -> list[str]:
     """``camtool`` in each of ``$XDG_CONFIG_DIRS``, least important first (the reverse of the variable)."""
     value = os.environ.get("XDG_CONFIG_DIRS", "") or "/etc/xdg"
-    dirs = [Path(d) / "camtool" for d in value.split(os.pathsep) if d and os.path.isabs(d)]
+    dirs = [os.path.join(d, "camtool") for d in value.split(os.pathsep) if d and os.path.isabs(d)]
     return list(reversed(dirs))
 
 
-def yaml_files(directory: Path, recurse_into: tuple[str, ...] = ("presets",)) -> list[str]:
+def yaml_files(directory: str, recurse_into: tuple[str, ...] = ("presets",)) -> list[str]:
     """The preset files of a configuration directory, in name order (none if it does not exist)."""
     out: list[str] = []
     try:
@@ -94,22 +95,21 @@ def yaml_files(directory: Path, recurse_into: tuple[str, ...] = ("presets",)) ->
         if entry.name.endswith(_SUFFIXES) and entry.is_file():
             out.append(entry.path)
     for sub in recurse_into:
-        out.extend(yaml_files(directory / sub, ()))
+        out.extend(yaml_files(os.path.join(directory, sub), ()))
     return out
 
 
 def shipped_files() -> list[str]:
     """The shipped preset files: ``lens_db/*.yaml`` then ``lens_db/prescriptions/*.yaml``."""
-    root = shipped_dir()
-    return yaml_files(root, ("prescriptions",))
+    return yaml_files(shipped_dir(), ("prescriptions",))
 
 
 def tiers(extra_files: tuple[str, ...] | list[str] = (), *, lensfun: bool = True) -> list[Tier]:
     """The search order as :class:`Tier` objects, least important first."""
     out = [Tier("shipped", tuple(shipped_files()))]
     imported = lensfun_file()
-    if lensfun and imported.is_file():
-        out.append(Tier("lensfun", (str(imported),)))
+    if lensfun and os.path.isfile(imported):
+        out.append(Tier("lensfun", (imported,)))
     for directory in config_dirs():
         files = yaml_files(directory)
         if files:

@@ -11,7 +11,6 @@ Every check reports ``(key, problem)`` pairs instead of raising, so that
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from collections.abc import Callable, Mapping
@@ -425,6 +424,8 @@ _SCENE_UNIT_KEYS = {"focal_length": "focal_length_mm", "distance": "distance_mm"
 
 def suggest(word: str, choices: list[str] | tuple[str, ...] | set[str]) -> str:
     """' (did you mean X?)' for the closest choice, or '' when none is close."""
+    import difflib
+
     close = difflib.get_close_matches(word, sorted(choices), n=1, cutoff=0.6)
     return f" (did you mean {close[0]}?)" if close else ""
 
