@@ -103,3 +103,11 @@ def test_zsh_and_fish_scripts() -> None:
         result = sh(f"camtool completion {shell}")
         assert result.returncode == 0 and marker in result.stdout
     assert sh("_CAMTOOL_COMPLETE=bash_source camtool").stdout == sh("camtool completion bash").stdout
+
+
+def test_man_page_is_installed_beside_the_entry_point() -> None:
+    if shutil.which("man") is None:
+        pytest.skip("no man on this machine")
+    result = sh("man -w camtool-dof", {"MANPATH": ""})
+    assert result.returncode == 0
+    assert result.stdout.strip().endswith("share/man/man1/camtool-dof.1")

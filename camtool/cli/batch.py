@@ -95,9 +95,15 @@ class _Columns:
                 self.aliases.setdefault(key, target)
 
         self.ignored = getattr(command, "output_keys", frozenset())
+        self.known: dict[str, tuple[str, str | None] | None] = {}
 
     def resolve(self, column: str) -> tuple[str, str | None] | None:
         """(parameter name, unit of bare numbers) for a column; None for an output key to pass over."""
+        if column not in self.known:
+            self.known[column] = self._resolve(column)
+        return self.known[column]
+
+    def _resolve(self, column: str) -> tuple[str, str | None] | None:
         key = _normalise(column)
         if key in self.aliases:
             return self.aliases[key]

@@ -13,7 +13,9 @@ Row = dict[str, Any]
 
 def plain(value: Any) -> Any:
     """A JSON/CSV-ready value: floats stay raw, infinity becomes ``None``; NaN is a bug, not output."""
-    if isinstance(value, float):
+    if type(value) is float:
+        if value - value == 0.0:  # finite: the common case, one comparison
+            return value
         if math.isnan(value):
             raise ValueError("internal error: a NaN reached the output")
         return None if math.isinf(value) else value
