@@ -390,14 +390,14 @@ def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.Pat
     when no lensfun XML is found or nothing can be imported.
     """
     directories = default_dirs() if dirs is None else [Path(d) for d in dirs]
-    if not directories or not any(Path(d).glob("*.xml") for d in directories):
+    if not any(any(Path(d).glob("*.xml")) for d in directories):
         where = ", ".join(map(str, directories)) or "the usual places"
         raise LensfunImportError(
             f"no lensfun XML files found in {where} (install liblensfun-data-v1 or give --dir)")
     sensors, lenses, result = read_lensfun(directories, _shipped_keys())
     if not sensors and not lenses:
         raise LensfunImportError(f"nothing imported from {', '.join(map(str, directories))}")
-    target = Path(out) if out is not None else paths.lensfun_file()
+    target = Path(out if out is not None else paths.lensfun_file())
     _write_atomically(target, _render(sensors, lenses, directories))
     result.path = str(target)
     return result
