@@ -67,6 +67,25 @@ def output_options(function: Callable[..., Any]) -> Callable[..., Any]:
     return function
 
 
+def equipment_options(function: Callable[..., Any]) -> Callable[..., Any]:
+    """``--camera``, ``--lens`` and ``--scene``: presets that supply sensor, lens data and settings."""
+    from camtool.cli.options import preset_completion
+
+    decorators = [
+        click.option("--camera", metavar="NAME", shell_complete=preset_completion("camera"),
+                     help="Camera preset: its sensor and pixel pitch (for --coc-rule px:K)."),
+        click.option("--lens", metavar="NAME", shell_complete=preset_completion("lens"),
+                     help="Lens preset: focal length of a prime (a zoom needs -f in its range), f-number range, "
+                          "closest focus, and pupil magnification, hiatus and prescription where known."),
+        click.option("--scene", metavar="NAME", shell_complete=preset_completion("scene"),
+                     help="Scene preset: camera or sensor, lens, f-number, distance, subject size, background; "
+                          "options given explicitly override it."),
+    ]
+    for decorator in reversed(decorators):
+        function = decorator(function)
+    return function
+
+
 def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:
     """``--batch FILE`` and ``--on-error``."""
     function = click.option("--on-error", type=click.Choice(["stop", "skip"]), default="stop", show_default=True,
@@ -86,6 +105,11 @@ def camtool_command(
     """
 
     def decorate(compute: Callable[..., Output]) -> click.Command:
+        def equipped(ctx: click.Context, /, **params: Any) -> Output:
+            from camtool.cli.equipment import apply_equipment
+
+            return compute(ctx, **apply_equipment(ctx, params))
+
         @functools.wraps(compute)
         def run(ctx: click.Context, /, **params: Any) -> None:
             fields = params.pop("fields")
@@ -95,12 +119,11 @@ def camtool_command(
             if source is not None:
                 from camtool.cli.batch import run_batch
 
-                run_batch(ctx, compute, params, source, on_error, fields)
+                run_batch(ctx, equipped, params, source, on_error, fields)
                 return
-            out = compute(ctx, **params)
-            emit(out, fmt, units, fields)
+            emit(equipped(ctx, **params), fmt, units, fields)
 
-        wrapped = output_options(run)
+        wrapped = equipment_options(output_options(run))
         if batch:
             wrapped = batch_options(wrapped)
         command = click.command(name)(click.pass_context(wrapped))

@@ -78,6 +78,11 @@ def resolve_sensor(
                                      param=_param(ctx, "crop"))
         w, h = 36.0 / crop, 24.0 / crop
         return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
+    camera = ctx.meta.get(CAMERA)
+    if sensor is None and camera is not None:
+        body = camera.sensor
+        return SensorChoice(body.width_mm, body.height_mm, f"{camera.name} ({body.width_mm:g} × {body.height_mm:g} mm)",
+                            body.coc_mm, camera.pixel_pitch_mm)
     if sensor is None:
         return FULL_FRAME
     match = _INLINE.match(sensor)
@@ -88,8 +93,9 @@ def resolve_sensor(
                                      param=_param(ctx, "sensor"))
         return SensorChoice(max(w, h), min(w, h), f"{max(w, h):g} × {min(w, h):g} mm")
     preset = lookup(ctx, "sensor", sensor, "sensor", preset_files)
+    pitch = camera.pixel_pitch_mm if camera is not None else None
     return SensorChoice(preset.width_mm, preset.height_mm,
-                        f"{preset.name} {preset.width_mm:g} × {preset.height_mm:g} mm", preset.coc_mm)
+                        f"{preset.name} {preset.width_mm:g} × {preset.height_mm:g} mm", preset.coc_mm, pitch)
 
 
 def resolve_coc(
@@ -113,3 +119,85 @@ def resolve_coc(
 
 def _param(ctx: click.Context, name: str) -> click.Parameter | None:
     return next((p for p in ctx.command.params if p.name == name), None)
+
+
+CAMERA, LENS = "camtool.camera", "camtool.lens"
+
+# Scene preset fields -> (command parameter, value for the parameter)
+_SCENE_FIELDS = {
+    "focal_length_mm": "focal_length", "f_number": "f_number", "distance_mm": "distance",
+    "subject_size_mm": "subject_size", "background_mm": "background", "coc_mm": "coc",
+}
+_LIST_PARAMS = {"focal_length", "f_number", "distance", "coc"}
+
+
+def _empty(value: Any) -> bool:
+    return value is None or (isinstance(value, (list, tuple)) and not value)
+
+
+def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any]:
+    """Resolve ``--scene``, ``--camera`` and ``--lens`` into the command's own parameters.
+
+    A scene fills every parameter the user left empty (explicit options win);
+    a camera supplies the sensor and pixel pitch; a lens supplies the focal
+    length of a prime and is checked against the focal length, f-number and
+    focus distance asked for. The resolved camera and lens are kept in
+    ``ctx.meta`` for the sensor and lens-data helpers.
+    """
+    params = dict(params)
+    scene_name, camera_name, lens_name = params.pop("scene", None), params.pop("camera", None), params.pop("lens", None)
+    files = tuple(params.get("preset_files") or ())
+    ctx.meta[CAMERA] = ctx.meta[LENS] = None
+    if scene_name:
+        scene = lookup(ctx, "scene", scene_name, "scene", files)
+        for field, name in _SCENE_FIELDS.items():
+            value = getattr(scene, field, None)
+            if value is not None and name in params and _empty(params[name]):
+                params[name] = [[value]] if name in _LIST_PARAMS else value
+        if scene.camera is not None and camera_name is None and _empty(params.get("sensor")):
+            camera_name = scene.camera.id
+        elif scene.sensor is not None and "sensor" in params and _empty(params.get("sensor")):
+            params["sensor"] = scene.sensor.id
+        if scene.lens is not None and lens_name is None:
+            lens_name = scene.lens.id
+    if camera_name:
+        ctx.meta[CAMERA] = lookup(ctx, "camera", camera_name, "camera", files)
+    if lens_name:
+        lens = lookup(ctx, "lens", lens_name, "lens", files)
+        ctx.meta[LENS] = lens
+        _check_lens(ctx, lens, params)
+    return params
+
+
+def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
+    """Fill a prime's focal length; refuse a focal length, f-number or distance the lens cannot do."""
+    if "focal_length" in params:
+        focal = flatten(params["focal_length"])
+        if not focal:
+            if lens.is_zoom:
+                raise click.UsageError(f"--lens {lens.id} is a zoom ({lens.focal_min_mm:g}–{lens.focal_max_mm:g} mm): "
+                                       "give the focal length with -f", ctx)
+            params["focal_length"] = [[lens.focal_min_mm]]
+            focal = [lens.focal_min_mm]
+        for f in focal:
+            if not lens.focal_min_mm * 0.995 <= f <= lens.focal_max_mm * 1.005:
+                span = (f"{lens.focal_min_mm:g}–{lens.focal_max_mm:g} mm" if lens.is_zoom
+                        else f"{lens.focal_min_mm:g} mm")
+                raise click.BadParameter(f"{f:g} mm is outside the valid range of --lens {lens.id}: {span}",
+                                         ctx=ctx, param=_param(ctx, "focal_length"))
+    else:
+        focal = [lens.focal_min_mm]
+    for n in flatten(params.get("f_number")):
+        for f in focal:
+            widest = lens.widest_f_number(f) or n
+            slowest = lens.f_number_max or n
+            if not widest * 0.99 <= n <= slowest * 1.01:
+                raise click.BadParameter(
+                    f"f/{n:g} is outside the valid range of --lens {lens.id} at {f:g} mm: "
+                    f"f/{widest:g} to f/{slowest:g}", ctx=ctx, param=_param(ctx, "f_number"))
+    if lens.min_focus_mm and params.get("distance_from", "sensor") == "sensor":
+        for d in flatten(params.get("distance")):
+            if d < lens.min_focus_mm:
+                raise click.BadParameter(
+                    f"{d / 1000:.4g} m is outside the valid range of --lens {lens.id}: at least its closest focus, "
+                    f"{lens.min_focus_mm / 1000:.4g} m from the sensor", ctx=ctx, param=_param(ctx, "distance"))

@@ -60,8 +60,26 @@ distance_plane_option = click.option(
     "--distance-from", "distance_from", type=click.Choice(["sensor", "lens"]), default="sensor", show_default=True,
     help="Reference plane of all distances: the sensor (focal-plane mark, as lens scales and specs) or the lens.")
 
+def preset_completion(kind: str) -> Callable[[click.Context, click.Parameter, str], list[Any]]:
+    """Shell completion of preset names of one kind (loads the preset database only when completing)."""
+
+    def complete(ctx: click.Context, param: click.Parameter, incomplete: str) -> list[Any]:
+        from click.shell_completion import CompletionItem
+
+        from camtool.presets import load_db
+
+        try:
+            names = load_db().names(kind)
+        except Exception:  # a broken preset file must not break the shell
+            return []
+        prefix = incomplete.lower()
+        return [CompletionItem(name) for name in names if name.lower().startswith(prefix)]
+
+    return complete
+
+
 sensor_options = _stack(
-    click.option("--sensor", metavar="NAME|WxH",
+    click.option("--sensor", metavar="NAME|WxH", shell_complete=preset_completion("sensor"),
                  help="Sensor preset (full-frame, aps-c, m43, ...) or size in mm (36x24). Default: full frame."),
     click.option("--crop", type=float, help="Crop factor relative to 36 x 24 mm, instead of --sensor."),
 )

@@ -1,0 +1,122 @@
+"""camtool presets and the equipment options (--camera, --lens, --scene) through click."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from camtool.dof import thin_dof
+from cli_helpers import run, run_json
+
+DATA = Path(__file__).parent / "data"
+
+
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    for var, sub in (("XDG_CONFIG_HOME", "config"), ("XDG_DATA_HOME", "data"), ("XDG_CACHE_HOME", "cache")):
+        monkeypatch.setenv(var, str(tmp_path / sub))
+    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+
+
+def test_sensor_preset_by_name_and_alias() -> None:
+    (row,) = run_json("dof", "-f", "25", "-N", "4", "-s", "3", "--sensor", "Micro Four Thirds")
+    (alias,) = run_json("dof", "-f", "25", "-N", "4", "-s", "3", "--sensor", "m43")
+    assert row == alias
+    # Micro Four Thirds 17.3 x 13.0 mm (Wikipedia, Image sensor format); d/1500 of its 21.64 mm diagonal
+    assert row["coc_mm"] == pytest.approx(math.hypot(17.3, 13.0) / 1500, rel=1e-3)
+
+
+def test_unknown_sensor_suggests() -> None:
+    result = run("dof", "-f", "50", "-N", "8", "-s", "3", "--sensor", "ful-frame")
+    assert result.exit_code == 2
+    assert result.stderr.startswith("Error: Invalid value for '--sensor': unknown sensor 'ful-frame'; did you mean full-frame")
+
+
+def test_camera_gives_sensor_and_pixel_pitch() -> None:
+    (row,) = run_json("dof", "-f", "50", "-N", "8", "-s", "3", "--camera", "nikon-z-8", "--coc-rule", "px:2")
+    # Nikon Z 8: 8256 px across the 36 mm preset width -> 4.36 µm pitch; px:2 = 8.72 µm
+    assert row["coc_mm"] == pytest.approx(2 * 36.0 / 8256)
+
+
+def test_prime_lens_supplies_focal_length_and_checks_range() -> None:
+    (row,) = run_json("dof", "--lens", "sony-fe-85mm-f1.8", "-N", "2", "-s", "3", "--coc", "0.03")
+    assert row["focal_length_mm"] == 85.0
+    assert row["near_mm"] == pytest.approx(thin_dof(85.0, 2.0, 0.03, 3000.0).near_mm)
+    wide = run("dof", "--lens", "sony-fe-85mm-f1.8", "-N", "1.4", "-s", "3")
+    assert wide.exit_code == 2
+    assert wide.stderr == ("Error: Invalid value for '-N' / '--f-number': f/1.4 is outside the valid range of "
+                           "--lens sony-fe-85mm-f1.8 at 85 mm: f/1.8 to f/22\n")
+    close = run("dof", "--lens", "sony-fe-85mm-f1.8", "-N", "2", "-s", "0.5")
+    assert close.exit_code == 2 and "at least its closest focus, 0.8 m from the sensor" in close.stderr
+
+
+def test_zoom_needs_focal_length_in_range() -> None:
+    assert run("dof", "--lens", "nikon-z-24-70mm-f4-s", "-N", "4", "-s", "3").stderr == (
+        "Error: --lens nikon-z-24-70mm-f4-s is a zoom (24–70 mm): give the focal length with -f\n")
+    out = run("dof", "--lens", "nikon-z-24-70mm-f4-s", "-f", "100", "-N", "4", "-s", "3")
+    assert out.exit_code == 2 and "24–70 mm" in out.stderr
+    assert run_json("dof", "--lens", "nikon-z-24-70mm-f4-s", "-f", "50", "-N", "4", "-s", "3")[0]["focal_length_mm"] == 50
+
+
+def test_unknown_lens_did_you_mean() -> None:
+    result = run("dof", "--lens", "sony-fe-85", "-N", "2", "-s", "3")
+    assert result.exit_code == 2
+    assert result.stderr.startswith("Error: Invalid value for '--lens': unknown lens 'sony-fe-85'; did you mean ")
+
+
+def test_scene_fills_and_options_override() -> None:
+    (scene,) = run_json("dof", "--scene", "landscape-24")
+    assert (scene["focal_length_mm"], scene["f_number"], scene["distance_mm"]) == (24.0, 11.0, 3000.0)
+    (override,) = run_json("dof", "--scene", "landscape-24", "-N", "16")
+    assert (override["focal_length_mm"], override["f_number"]) == (24.0, 16.0)
+
+
+def test_user_preset_file_and_broken_file(tmp_path: Path) -> None:
+    good = tmp_path / "mine.yaml"
+    good.write_text("sensors:\n  - id: my-sensor\n    width_mm: 20\n    height_mm: 10\n    source: test\n")
+    (row,) = run_json("dof", "-f", "50", "-N", "8", "-s", "3", "--sensor", "my-sensor", "--presets", str(good))
+    assert row["coc_mm"] == pytest.approx(math.hypot(20, 10) / 1500)
+    broken = tmp_path / "broken.yaml"
+    broken.write_text("sensors:\n  - id: x\n    width_mm: [1\n")
+    result = run("dof", "-f", "50", "-N", "8", "-s", "3", "--sensor", "x", "--presets", str(broken))
+    assert result.exit_code == 1
+    assert result.stderr.startswith(f"Error: {broken}:") and result.stderr.count("\n") == 1
+
+
+def test_presets_list_show_validate(tmp_path: Path) -> None:
+    rows = json.loads(run("presets", "list", "--kind", "scene", "--format", "json").stdout)
+    assert {r["id"] for r in rows} >= {"landscape-24", "portrait-85"}
+    (lens,) = json.loads(run("presets", "show", "dgauss100-lens", "--format", "json").stdout)
+    # first-order data of the shared double Gauss (reference table of oracle-README: f = 100.003757028, P = 1.14640104669)
+    assert lens["efl_mm"] == pytest.approx(100.003757028, rel=1e-9)
+    assert lens["pupil_magnification_paraxial"] == pytest.approx(1.14640104669, rel=1e-9)
+    assert lens["origin"].endswith("lenses.yaml")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("sensors:\n  - id: x\n    width_mm: -3\n")
+    result = run("presets", "validate", str(bad))
+    assert result.exit_code == 1
+    assert "width_mm: must be > 0 mm, got -3" in result.stderr
+    assert run("presets", "validate", str(Path(__file__).parent.parent / "lens_db" / "sensors.yaml")).exit_code == 0
+
+
+def test_import_lensfun_from_fixtures(tmp_path: Path) -> None:
+    fixtures = DATA / "lensfun"
+    out = tmp_path / "lf.yaml"
+    result = run("presets", "import-lensfun", "--dir", str(fixtures), "--out", str(out))
+    assert result.exit_code == 0, result.stderr
+    assert result.stdout.startswith("imported ") and out.exists()
+
+
+def test_preset_names_complete() -> None:
+    from click.shell_completion import ShellComplete
+
+    from camtool.cli import cli
+
+    completer = ShellComplete(cli, {}, "camtool", "_CAMTOOL_COMPLETE")
+    names = [item.value for item in completer.get_completions(["dof", "--sensor"], "full")]
+    assert "full-frame" in names
+    lenses = [item.value for item in completer.get_completions(["dof", "--lens"], "sony-fe-8")]
+    assert "sony-fe-85mm-f1.8" in lenses
