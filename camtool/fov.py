@@ -83,3 +83,30 @@ def field_size_mm(size_mm: Any, magnification: Any) -> Any:
     require_positive("sensor_mm", size_mm)
     require_positive("magnification", magnification, unit="", allow_inf=False)
     return size_mm / magnification
+
+
+def focal_length_for_angle_mm(size_mm: Any, angle_deg: Any) -> Any:
+    """Focal length in mm whose angle of view across a sensor dimension is ``angle_deg``: f = (h/2)/tan(α/2).
+
+    The inverse of :func:`angle_of_view_deg` at infinity focus.
+
+    Parameters
+    ----------
+    size_mm : float or array
+        Sensor dimension h (width, height or diagonal), > 0.
+    angle_deg : float or array
+        Angle of view α in degrees, 0 < α < 180.
+
+    References
+    ----------
+    Wikipedia, "Angle of view" (α = 2 arctan(d/2f), solved for f).
+
+    Examples
+    --------
+    >>> round(focal_length_for_angle_mm(24.0, 27.0), 2)
+    49.98
+    """
+    require_positive("sensor_mm", size_mm)
+    require("angle_deg", angle_deg, (angle_deg > 0) & (angle_deg < 180), "between 0 and 180 degrees (exclusive)")
+    xp = ops(size_mm, angle_deg)
+    return 0.5 * size_mm / xp.tan(xp.radians(0.5 * angle_deg))

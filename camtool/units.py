@@ -139,15 +139,23 @@ def exact_f_number(nominal: float) -> float:
     third stops first (so the ambiguous 1.2 and 13 read as third stops). A
     value near neither series is returned unchanged.
 
+    The label 1.2 is 4.8 % from the third stop 2^(1/3) = 1.26 it stands for;
+    a wider tolerance would pull the half stops 1.7 and 2.4 onto third stops,
+    so 1.2 is looked up by name.
+
     >>> round(exact_f_number(5.6), 4)
     5.6569
     >>> round(exact_f_number(22), 3)
     22.627
+    >>> round(exact_f_number(1.2), 3)
+    1.26
     >>> exact_f_number(7.5)
     7.5
     """
     if not (nominal > 0 and math.isfinite(nominal)):
         return nominal
+    if nominal == 1.2:
+        return 2.0 ** (2 / 6)
     for steps in (6, 4):
         k = round(steps * math.log2(nominal))
         exact = 2.0 ** (k / steps)
