@@ -126,7 +126,8 @@ def thin_dof(
     D_F = u f²/(f² − Nc(u − f)). From the sensor plane the focus distance D is
     converted exactly to (u, v) (:func:`camtool.thinlens.lens_distances`) and
     the limits back with the lens-to-sensor spacing v fixed at its focus
-    setting; the reported hyperfocal distance is then H + v_H = H + f + N·c.
+    setting; the reported hyperfocal distance is then H + v_H = H + f + N·c
+    (the closest focus 4f when H < 2f: every focus is then beyond H).
 
     Parameters
     ----------
@@ -156,7 +157,10 @@ def thin_dof(
     if distance_from == "sensor":
         u, v = lens_distances(f, distance_mm)
         offset = v
-        hyperfocal = h + f + f_number * coc_mm
+        # H + v_H = H + f + N·c while H ≥ 2f. Below 2f (N·c > f, pinholes) every
+        # reachable focus lies beyond H, but D = u + v grows again as u drops
+        # under 2f, so the hyperfocal distance is the closest focus, 4f.
+        hyperfocal = xp.where(h >= 2.0 * f, h + f + f_number * coc_mm, 4.0 * f)
     elif distance_from == "lens":
         require_positive("distance_mm", distance_mm, allow_inf=True)
         require("distance_mm", distance_mm, distance_mm >= 2.0 * f,
