@@ -1,4 +1,4 @@
-"""``camtool dof``: near and far limits of acceptable sharpness."""
+"""``camtool dof``: near and far limits of acceptable sharpness, by any rung of the model ladder."""
 
 from __future__ import annotations
 
@@ -8,13 +8,15 @@ from camtool.cli.command import Output, camtool_command, combine_params
 
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.lensdata import ladder_errors, lens_data, model_options
 from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
                                  library_errors, sensor_options)
-from camtool.ladder import CHOICES, depth_of_field
+from camtool.ladder import CHOICES, compare_models, depth_of_field, prescription_focal_length
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
         "hyperfocal_mm", "coc_mm", "magnification", "model", "error_estimate", "distance_from"]
+ALL_KEYS = [*KEYS, "difference_pct", "time_per_evaluation_s"]
 COLUMNS = [
     Column("focal_length_mm", "f", SMALL),
     Column("f_number", "N", FNUMBER),
@@ -27,9 +29,24 @@ COLUMNS = [
     Column("hyperfocal_mm", "H"),
     Column("sharp_zone", "sharp zone", TEXT),
 ]
+ALL_COLUMNS = [
+    Column("model", "model", TEXT),
+    Column("focal_length_mm", "f", SMALL),
+    Column("f_number", "N", FNUMBER),
+    Column("distance_mm", "focus"),
+    Column("near_mm", "near"),
+    Column("far_mm", "far"),
+    Column("total_mm", "depth"),
+    Column("difference_shown", "difference", TEXT),
+    Column("estimate_shown", "est. error", TEXT),
+    Column("time_shown", "time/eval", TEXT),
+]
+MODEL_HELP = ("approx: H·s/(H±s); thin: exact thin lens; thick: + pupil magnification and hiatus; paraxial: "
+              "first-order trace of --prescription; raytrace: real rays; auto: the cheapest that the scene needs "
+              "within --tolerance; all: every model the inputs allow, side by side, with the time each took.")
 
 
-@camtool_command("dof", keys=KEYS)
+@camtool_command("dof", keys=ALL_KEYS)
 @focal_option
 @aperture_options
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
@@ -37,25 +54,37 @@ COLUMNS = [
 @sensor_options
 @coc_options
 @distance_plane_option
-@click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True,
-              help="approx: H·s/(H±s); thin: exact thin lens; auto: what the scene needs.")
+@click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True, help=MODEL_HELP)
+@model_options
 def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, sensor, crop, coc, coc_rule,
-        pixel_pitch, distance_from, model, fmt, units, preset_files) -> Output:
+        pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file,
+        fmt, units, preset_files) -> Output:
     """Depth of field: near and far limits, total depth, front/rear split and hyperfocal distance.
 
     \b
     Examples:
       camtool dof -f 50 -N 8 -s 3m
       camtool dof -f 85 -N 1.8,2.8,4 -s 2 --sensor aps-c --format json
+      camtool dof -N 2 -s 1m --prescription dgauss100.yaml --model all
+      camtool dof -f 100 -N 22 -s 0.5 --pupil-mag 0.8 --diffraction
     """
-    focal = required(ctx, focal_length, "-f")
+    lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
+    if lens is not None and lens.prescription is not None:
+        with library_errors(ctx):
+            focal = [prescription_focal_length(lens, f) for f in (required(ctx, focal_length, "-f")
+                                                                  if focal_length else [None])]
+    else:
+        focal = required(ctx, focal_length, "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     distances = required(ctx, distance, "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     count, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
-    with library_errors(ctx):
-        result = depth_of_field(model, f, n, c, s, distance_from)
+    if model == "all":
+        return _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavelength, fmt, cocs,
+                           coc_origin, chosen.label)
+    with library_errors(ctx), ladder_errors(ctx):
+        result = depth_of_field(model, f, n, c, s, distance_from, lens, diffraction, wavelength, tolerance)
     limits = result.limits
     rows = rows_from(count, {
         "focal_length_mm": f, "f_number": n, "distance_mm": s, "near_mm": limits.near_mm, "far_mm": limits.far_mm,
@@ -71,5 +100,49 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
         for row in rows:
             row["sharp_zone"] = sharp_zone_bar(row["near_mm"], row["distance_mm"], row["far_mm"],
                                                row["hyperfocal_mm"], low, high, width=24)
-        note = footer(result.model, cocs, coc_origin, chosen.label, distance_from, "┃ focus, H hyperfocal, ▶ ∞")
+        # The estimate is of what the model leaves out of the lens data given; 0 (nothing left out) is not shown.
+        worst = max(row["error_estimate"] for row in rows)
+        label = f"{result.model} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
+        note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from, "┃ focus, H hyperfocal, ▶ ∞")
     return Output(rows, COLUMNS, KEYS, note)
+
+
+def _percent(fraction: float) -> str:
+    return f"{fraction:.2%}".replace("%", " %") if fraction >= 1e-4 else "0.01 %" if fraction > 0 else "0 %"
+
+
+def _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavelength, fmt, cocs, coc_origin,
+                sensor_label) -> Output:
+    """``--model all``: one row per scene and model, the most complete model last."""
+    with library_errors(ctx), ladder_errors(ctx):
+        rungs = compare_models(f, n, c, s, distance_from, lens, diffraction, wavelength)
+    rows = []
+    per_model = []
+    for rung in rungs:
+        limits = rung.result.limits
+        per_model.append(rows_from(count, {
+            "focal_length_mm": f, "f_number": n, "distance_mm": s, "near_mm": limits.near_mm,
+            "far_mm": limits.far_mm, "total_mm": limits.total_mm, "front_mm": limits.front_mm,
+            "rear_mm": limits.rear_mm, "hyperfocal_mm": limits.hyperfocal_mm, "coc_mm": c,
+            "magnification": limits.magnification, "model": rung.result.model,
+            "error_estimate": rung.result.error_estimate, "distance_from": distance_from,
+            "difference_pct": rung.difference * 100.0, "time_per_evaluation_s": rung.time_per_evaluation_s,
+        }))
+    for i in range(count):  # scene by scene, every model of one scene together
+        rows.extend(model_rows[i] for model_rows in per_model)
+    note = ""
+    if fmt == "table":
+        for row in rows:
+            row["difference_shown"] = f"{row['difference_pct']:.3g} %"
+            row["estimate_shown"] = _percent(row["error_estimate"])
+            row["time_shown"] = _duration(row["time_per_evaluation_s"])
+        most = rungs[-1].result.model
+        note = (f"difference from {most}, the most complete model; time per evaluation · "
+                + footer(None, cocs, coc_origin, sensor_label, distance_from))
+    return Output(rows, ALL_COLUMNS, ALL_KEYS, note)
+
+
+def _duration(seconds: float) -> str:
+    if seconds >= 1e-3:
+        return f"{seconds * 1e3:.3g} ms"
+    return f"{seconds * 1e6:.3g} µs"

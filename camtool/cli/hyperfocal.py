@@ -10,7 +10,7 @@ from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (aperture_options, coc_options, distance_plane_option, focal_option,
                                  library_errors, sensor_options)
-from camtool.ladder import CHOICES, depth_of_field
+from camtool.ladder import depth_of_field
 from camtool.render.columns import FNUMBER, SMALL, Column
 
 KEYS = ["focal_length_mm", "f_number", "hyperfocal_mm", "near_mm", "coc_mm", "model", "distance_from"]
@@ -29,7 +29,7 @@ COLUMNS = [
 @sensor_options
 @coc_options
 @distance_plane_option
-@click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True,
+@click.option("--model", type=click.Choice(["approx", "thin", "auto"]), default="auto", show_default=True,
               help="approx: H = f²/(N·c); thin (and auto): H = f²/(N·c) + f, exact.")
 def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, crop, coc, coc_rule, pixel_pitch,
                distance_from, model, fmt, units, preset_files) -> Output:
@@ -48,9 +48,11 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
     with library_errors(ctx):
         # The hyperfocal distance in the chosen plane is where the far limit first reaches infinity;
         # the limits of a focus at infinity carry it, and focusing there gives the near limit.
-        at_infinity = depth_of_field(model, f, n, c, float("inf"), distance_from)
+        # auto is the exact thin lens here: the hyperfocal distance itself is the answer, not a depth of field
+        rung = "thin" if model == "auto" else model
+        at_infinity = depth_of_field(rung, f, n, c, float("inf"), distance_from)
         h = at_infinity.limits.hyperfocal_mm
-        at_h = depth_of_field(model, f, n, c, h, distance_from)
+        at_h = depth_of_field(rung, f, n, c, h, distance_from)
     rows = rows_from(count, {
         "focal_length_mm": f, "f_number": n, "hyperfocal_mm": h, "near_mm": at_h.limits.near_mm, "coc_mm": c,
         "model": at_h.model, "distance_from": distance_from,

@@ -1,0 +1,205 @@
+"""Lens data for the model ladder from the command line: pupil magnification, hiatus, prescription.
+
+One helper, :func:`lens_data`, turns ``--pupil-mag``, ``--hiatus``,
+``--prescription FILE`` and a lens preset (``--lens``) into a
+:class:`camtool.ladder.LensData`; values given by hand win over the preset's.
+It also hosts the parameter types of the model options (``--tolerance``,
+``--wavelength``).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import click
+
+from camtool.ladder import LensData
+from camtool.units import UnitError, parse_length
+
+LENS_META = "camtool.lens"
+"""Where the ``--lens`` preset is kept in ``ctx.meta`` once resolved."""
+
+
+class ToleranceType(click.ParamType):
+    """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
+
+    name = "tolerance"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip()
+        try:
+            number = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
+        except ValueError:
+            self.fail(f"{value!r} is not a tolerance (examples: 1%, 0.5%, 0.01)", param, ctx)
+        if not 0.0 < number < 1.0:
+            self.fail(f"{text} is outside the valid range: above 0 and below 100 % (1 % = 0.01)", param, ctx)
+        return number
+
+
+class WavelengthType(click.ParamType):
+    """A wavelength in nm: ``550``, ``550nm`` or ``0.55um``; valid 200 to 2000 nm."""
+
+    name = "wavelength"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip().lower()
+        try:
+            nm = float(text[:-2]) if text.endswith("nm") else parse_length(text, "mm") * 1e6 \
+                if any(text.endswith(u) for u in ("um", "µm", "mm")) else float(text)
+        except (ValueError, UnitError):
+            self.fail(f"{value!r} is not a wavelength (examples: 550, 550nm, 0.55um)", param, ctx)
+        if not (200.0 <= nm <= 2000.0 and math.isfinite(nm)):
+            self.fail(f"{value} is outside the valid range: 200 to 2000 nm", param, ctx)
+        return nm
+
+
+def _param(ctx: click.Context, name: str) -> click.Parameter | None:
+    return next((p for p in ctx.command.params if p.name == name), None)
+
+
+def load_prescription(ctx: click.Context, path: str) -> Any:
+    """Read and validate a prescription YAML file; a bad file is a one-line error on --prescription."""
+    import yaml
+
+    from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
+
+    name = path.rsplit("/", 1)[-1]
+    try:
+        with open(path, encoding="utf-8") as handle:
+            data = yaml.safe_load(handle)
+        return prescription_from_mapping(data, source=name)
+    except OSError as error:
+        raise click.BadParameter(f"{path}: {error.strerror or error}", ctx=ctx, param=_param(ctx, "prescription_file"))
+    except yaml.YAMLError as error:
+        mark = getattr(error, "problem_mark", None)
+        where = f" (line {mark.line + 1})" if mark is not None else ""
+        raise click.BadParameter(f"{name}: not valid YAML{where}", ctx=ctx, param=_param(ctx, "prescription_file"))
+    except PrescriptionError as error:
+        raise click.BadParameter(str(error), ctx=ctx, param=_param(ctx, "prescription_file"))
+
+
+def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None, prescription_file: str | None,
+              preset_lens: Any = None) -> LensData | None:
+    """The lens data for the ladder, or None when nothing is known beyond the focal length.
+
+    ``preset_lens`` is a lens preset (``pupil_magnification``, ``hiatus_mm``
+    and ``prescription``: a mapping, or None); by default the one ``--lens``
+    left in ``ctx.meta``. Values on the command line win over the preset's.
+    """
+    if preset_lens is None:
+        preset_lens = ctx.meta.get(LENS_META)
+    p = pupil_mag if pupil_mag is not None else getattr(preset_lens, "pupil_magnification", None)
+    delta = hiatus if hiatus is not None else getattr(preset_lens, "hiatus_mm", None)
+    prescription = None
+    if prescription_file is not None:
+        prescription = load_prescription(ctx, prescription_file)
+    elif getattr(preset_lens, "prescription", None) is not None:
+        from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
+
+        try:
+            prescription = prescription_from_mapping(preset_lens.prescription,
+                                                     source=getattr(preset_lens, "prescription_id", None) or "lens")
+        except PrescriptionError as error:
+            raise click.ClickException(str(error))
+    if p is None and delta is None and prescription is None:
+        return None
+    return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)
+
+
+class SignedLengthType(click.ParamType):
+    """A length of either sign in mm (``-12``, ``3.5mm``, ``-1cm``), e.g. a hiatus."""
+
+    name = "length"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip()
+        sign = -1.0 if text.startswith("-") else 1.0
+        try:
+            mm = sign * parse_length(text.lstrip("+-"), "mm")
+        except UnitError as error:
+            self.fail(str(error), param, ctx)
+        if not math.isfinite(mm):
+            self.fail(f"{text} is outside the valid range: a finite length in mm, either sign", param, ctx)
+        return mm
+
+
+class PupilMagnificationType(click.ParamType):
+    """Pupil magnification P = exit/entrance pupil diameter; valid 0.05 to 20."""
+
+    name = "ratio"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        try:
+            number = float(str(value).strip())
+        except ValueError:
+            self.fail(f"{value!r} is not a number (examples: 0.6, 1, 2.5)", param, ctx)
+        if not 0.05 <= number <= 20.0:
+            self.fail(f"{value} is outside the valid range: 0.05 to 20 (exit over entrance pupil diameter)",
+                      param, ctx)
+        return number
+
+
+def model_options(function: Any) -> Any:
+    """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
+    decorators = [
+        click.option("--tolerance", type=ToleranceType(), default="1%", show_default=True,
+                     help="auto: the largest estimated error accepted, relative to the depth of field (1% or 0.01)."),
+        click.option("--diffraction/--no-diffraction", default=False, show_default=True,
+                     help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
+                          "√(c² − airy²)); says so when nothing can be sharp."),
+        click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
+                     help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+        click.option("--pupil-mag", "pupil_mag", type=PupilMagnificationType(), metavar="P",
+                     help="Pupil magnification P (exit/entrance pupil diameter) for the thick model."),
+        click.option("--hiatus", type=SignedLengthType(), metavar="LENGTH",
+                     help="Separation of the principal planes (rear minus front, mm, either sign) for the thick model."),
+        click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",
+                     help="Lens prescription (YAML: surfaces from the object side, one stop) for the paraxial and "
+                          "raytrace models; its focal length is used (-f, if given, must agree within 1%)."),
+    ]
+    for decorator in reversed(decorators):
+        function = decorator(function)
+    return function
+
+
+def ladder_errors(ctx: click.Context) -> Any:
+    """Library errors of the ladder as one-line click errors: unavailable models on ``--model``."""
+    import contextlib
+    import sys
+
+    from camtool.errors import DomainError
+    from camtool.ladder import ModelUnavailable
+
+    @contextlib.contextmanager
+    def translate() -> Any:
+        try:
+            yield
+        except ModelUnavailable as error:
+            raise click.BadParameter(f"{error.model} is not available here: it needs {error.missing}",
+                                     ctx=ctx, param=_param(ctx, "model")) from None
+        except DomainError as error:
+            name = _LENS_PARAMS.get(error.param)
+            if name is None:
+                raise
+            from camtool.cli.options import domain_message
+
+            raise click.BadParameter(domain_message(error, name), ctx=ctx, param=_param(ctx, name)) from None
+        except ValueError as error:
+            raytrace = sys.modules.get("camtool.optics.raytrace")  # numpy only where a ray trace ran
+            if raytrace is not None and isinstance(error, raytrace.RayTraceError):
+                raise click.ClickException(str(error)) from None
+            raise
+
+    return translate()
+
+
+_LENS_PARAMS = {"pupil_magnification": "pupil_mag", "hiatus_mm": "hiatus", "wavelength_nm": "wavelength"}
