@@ -184,7 +184,8 @@ def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> An
     for value in np.unique(n):
         table = _aberration_table(prescription, float(value))
         mask = n == value
-        out[mask] = [_interpolate(table, x) for x in m[mask]]
+        ms, shares = zip(*table)
+        out[mask] = np.interp(np.where(np.isfinite(m[mask]), m[mask], ms[-1]), ms, shares)
     return out
 
 
