@@ -38,6 +38,8 @@ def column(values: Any, count: int) -> list[Any]:
     if isinstance(values, str) or values is None:
         return [values] * count
     flat = values.reshape(-1) if hasattr(values, "reshape") else values
+    if getattr(values, "dtype", None) is not None and values.dtype.kind not in "fiub":
+        return [str(v) for v in flat]  # names, e.g. the model each row ran
     if len(flat) == 1 and count > 1:
         return [float(flat[0])] * count
     return [float(v) for v in flat]

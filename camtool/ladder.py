@@ -251,25 +251,19 @@ def _worst(value: Any) -> float:
     return float(np.max(value)) if np.size(value) else 0.0
 
 
-COST_TIER = {"approx": 0, "thin": 0, "thick": 0, "paraxial": 0, "raytrace": 1}
-"""Cost classes of the rungs: the closed forms (a few µs, or ~1 ms for 10⁶ scenes at numpy speed; paraxial
-reuses a cached first-order trace) against the ray trace (milliseconds per scene, ~10³× more)."""
-
-
 def choose(effects: Effects, models: tuple[str, ...], diffraction: bool, tolerance: float) -> tuple[str, bool]:
-    """The rung of the cheapest cost class whose left-out effects stay within the tolerance everywhere.
+    """The cheapest rung, and whether to add diffraction, that leaves out no more than the tolerance.
 
-    Within a cost class the most complete rung runs, and diffraction (when
-    asked for) is always added: they cost the same as the rungs below them
-    (see :data:`COST_TIER` and ``benchmarks/bench_trade.py``), so leaving an
-    effect out there would buy nothing. The tolerance decides whether the
-    scene needs a dearer class (the ray trace, for aberrations). With no
-    class within the tolerance the most complete rung runs.
+    ``models`` run cheapest first. Diffraction (when asked for) is added only
+    when its own share exceeds the tolerance; a rung qualifies when the
+    effects it leaves out, with diffraction if it is not added, stay within
+    the tolerance in every scene of the call. With no rung within the
+    tolerance the most complete one runs.
     """
-    for tier in sorted({COST_TIER[m] for m in models}):
-        best = [m for m in models if COST_TIER[m] == tier][-1]
-        if _worst(left_out(effects, best, diffraction)) <= tolerance:
-            return best, diffraction
+    applied = diffraction and _worst(effects.diffraction) > tolerance
+    for name in models:
+        if _worst(left_out(effects, name, applied or not diffraction)) <= tolerance:
+            return name, applied
     return models[-1], diffraction
 
 
@@ -366,12 +360,53 @@ def depth_of_field(
     usable, airy = _usable_coc(f, f_number, coc_mm, distance_mm, distance_from, lens, wavelength_nm) \
         if diffraction else (coc_mm, 0.0)
     effects = _effects(f, f_number, coc_mm, distance_mm, distance_from, lens, airy)
-    if model == "auto":
+    if model != "auto":
+        limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
+        return ModelResult(limits, _label(model, diffraction), left_out(effects, model, diffraction))
+    inputs = (f, f_number, coc_mm, distance_mm, usable)
+    if all(isinstance(v, (int, float)) for v in (*inputs, airy)):
         name, applied = choose(effects, available_models(lens), diffraction, tolerance)
-    else:
-        name, applied = model, diffraction
-    limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
-    return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
+        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
+        return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
+    return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens)
+
+
+def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tolerance: float,
+               inputs: tuple[Any, ...], airy: Any, plane: str, lens: LensData) -> ModelResult:
+    """``auto`` over arrays: each scene gets its own cheapest sufficient rung, as a single call would.
+
+    The scenes are grouped by the rung chosen, each group runs in one
+    vectorised call, and the results go back in place; ``model`` is then an
+    array of names, one per scene.
+    """
+    import numpy as np
+
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (*inputs, airy, *effects)))
+    flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in inputs]
+    each = Effects(*(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in effects))
+    count = flat[0].size
+    applied = np.full(count, False) if not diffraction else each.diffraction > tolerance
+    chosen = np.full(count, len(models) - 1)
+    for index in reversed(range(len(models))):
+        fits = left_out(each, models[index], True) + np.where(applied | (not diffraction), 0.0, each.diffraction)
+        chosen = np.where(fits <= tolerance, index, chosen)
+    fields = [np.empty(count) for _ in DofLimits._fields]
+    names = np.empty(count, dtype=object)
+    estimate = np.empty(count)
+    for index, name in enumerate(models):
+        for add in (False, True):
+            rows = np.nonzero((chosen == index) & (applied == add))[0]
+            if rows.size == 0:
+                continue
+            f, n, c, s, usable = (v[rows] for v in flat)
+            limits = _run(name, add, f, n, c, s, plane, lens, usable)
+            for out, value in zip(fields, limits):
+                out[rows] = value
+            names[rows] = _label(name, add)
+            part = Effects(*(v[rows] for v in each))
+            estimate[rows] = left_out(part, name, True) + (0.0 if add or not diffraction else part.diffraction)
+    limits = DofLimits(*(field.reshape(shape) for field in fields))
+    return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 
 
 def compare_models(

@@ -8,6 +8,7 @@ import random
 import pytest
 
 from camtool.dof import thin_dof
+from camtool.ladder import depth_of_field
 from cli_helpers import run, run_json
 
 
@@ -38,8 +39,9 @@ def test_csv_batch_matches_single_calls_for_1000_random_scenes() -> None:
     rows = json.loads(out)
     assert len(rows) == len(scenes)
     for (f, n, s), row in zip(scenes, rows):
-        expected = thin_dof(float(f), row["f_number"], row["coc_mm"], parse_length(s, "m"))
-        assert row["near_mm"] == pytest.approx(expected.near_mm, rel=1e-13)
+        expected = depth_of_field("auto", float(f), row["f_number"], row["coc_mm"], parse_length(s, "m"))
+        assert row["model"] == expected.model
+        assert row["near_mm"] == pytest.approx(expected.limits.near_mm, rel=1e-13)
     # a sample of true single invocations (all 1000 would only repeat the same path)
     for (f, n, s), row in list(zip(scenes, rows))[::97]:
         (single,) = run_json("dof", "-f", str(f), "-N", n, "-s", s)

@@ -38,7 +38,7 @@ def test_default_coc_is_d1500_of_full_frame() -> None:
 
 def test_grid_rows_in_order_from_one_call() -> None:
     rows = run_json("dof", "-f", "35,50", "-N", "2.8", "-N", "8", "-s", "2,inf", "--distance-from", "lens",
-                    "--coc", "0.03")
+                    "--coc", "0.03", "--model", "thin")
     assert [(r["focal_length_mm"], r["f_number"], r["distance_mm"]) for r in rows] == [
         (35.0, 2.8, 2000.0), (35.0, 2.8, None), (35.0, 8.0, 2000.0), (35.0, 8.0, None),
         (50.0, 2.8, 2000.0), (50.0, 2.8, None), (50.0, 8.0, 2000.0), (50.0, 8.0, None),

@@ -52,7 +52,7 @@ def test_diffraction_and_wavelength_units() -> None:
 def test_tolerance_forms() -> None:
     a = run_json("dof", "-N", "2", "-s", "5", "--prescription", DGAUSS, "--tolerance", "5%")
     b = run_json("dof", "-N", "2", "-s", "5", "--prescription", DGAUSS, "--tolerance", "0.05")
-    assert a == b and a[0]["model"] == "paraxial"
+    assert a == b and a[0]["model"] == "thin"  # the effects thin leaves out here are below 5 %
     strict = run_json("dof", "-N", "2", "-s", "5", "--prescription", DGAUSS, "--tolerance", "0.1%")
     assert strict[0]["model"] == "raytrace"
 

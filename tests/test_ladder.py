@@ -80,7 +80,7 @@ def test_arrays_and_scalars_agree() -> None:
     many = depth_of_field("auto", 85.0, 4.0, 0.03, s, lens=lens, diffraction=True)
     for i, d in np.ndenumerate(s):
         one = depth_of_field("auto", 85.0, 4.0, 0.03, float(d), lens=lens, diffraction=True)
-        assert one.model == many.model
+        assert one.model == many.model[i]  # each scene gets the rung a single call would pick
         assert many.limits.near_mm[i] == pytest.approx(one.limits.near_mm, rel=1e-12)
         assert many.error_estimate[i] == pytest.approx(one.error_estimate, rel=1e-12)
 

@@ -102,7 +102,8 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
                                                row["hyperfocal_mm"], low, high, width=24)
         # The estimate is of what the model leaves out of the lens data given; 0 (nothing left out) is not shown.
         worst = max(row["error_estimate"] for row in rows)
-        label = f"{result.model} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
+        used = " / ".join(dict.fromkeys(row["model"] for row in rows))
+        label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
         note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from, "┃ focus, H hyperfocal, ▶ ∞")
     return Output(rows, COLUMNS, KEYS, note)
 
