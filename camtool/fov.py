@@ -22,8 +22,10 @@ class FieldOfView(NamedTuple):
     diagonal_deg: Any
 
 
-def angle_of_view_deg(size_mm: Any, focal_length_mm: Any, magnification: Any = 0.0) -> Any:
-    """Angle of view in degrees across a sensor dimension: 2·atan(h / (2·f·(1 + m))).
+def angle_of_view_deg(
+    size_mm: Any, focal_length_mm: Any, magnification: Any = 0.0, pupil_magnification: Any = 1.0
+) -> Any:
+    """Angle of view in degrees across a sensor dimension: 2·atan(h / (2·f·(1 + m/P))).
 
     Parameters
     ----------
@@ -32,6 +34,11 @@ def angle_of_view_deg(size_mm: Any, focal_length_mm: Any, magnification: Any = 0
     focal_length_mm : float or array, f > 0
     magnification : float or array, m ≥ 0
         0 at infinity focus; otherwise the image distance f(1 + m) replaces f.
+    pupil_magnification : float or array, P > 0
+        Exit over entrance pupil diameter (1 for a thin lens). The chief ray
+        leaves the exit pupil, f(m + P) in front of the sensor, at an angle
+        whose tangent is 1/P times that at the entrance pupil, so the angle of
+        view is set by f(1 + m/P): a lens with P < 1 (telephoto) breathes more.
 
     References
     ----------
@@ -44,15 +51,21 @@ def angle_of_view_deg(size_mm: Any, focal_length_mm: Any, magnification: Any = 0
     39.6
     >>> round(angle_of_view_deg(36.0, 50.0, magnification=1.0), 2)
     20.41
+    >>> round(angle_of_view_deg(36.0, 100.0, magnification=0.5, pupil_magnification=0.5), 2)
+    10.29
     """
     require_positive("sensor_mm", size_mm)
     require_positive("focal_length_mm", focal_length_mm)
     require("magnification", magnification, magnification >= 0, ">= 0")
-    xp = ops(size_mm, focal_length_mm, magnification)
-    return 2.0 * xp.degrees(xp.atan(size_mm / (2.0 * focal_length_mm * (1.0 + magnification))))
+    require_positive("pupil_magnification", pupil_magnification, unit="")
+    xp = ops(size_mm, focal_length_mm, magnification, pupil_magnification)
+    effective = focal_length_mm * (1.0 + magnification / pupil_magnification)
+    return 2.0 * xp.degrees(xp.atan(size_mm / (2.0 * effective)))
 
 
-def field_of_view(width_mm: Any, height_mm: Any, focal_length_mm: Any, magnification: Any = 0.0) -> FieldOfView:
+def field_of_view(
+    width_mm: Any, height_mm: Any, focal_length_mm: Any, magnification: Any = 0.0, pupil_magnification: Any = 1.0
+) -> FieldOfView:
     """Horizontal, vertical and diagonal angles of view in degrees of a sensor ``width_mm`` × ``height_mm``.
 
     Examples
@@ -63,9 +76,9 @@ def field_of_view(width_mm: Any, height_mm: Any, focal_length_mm: Any, magnifica
     xp = ops(width_mm, height_mm)
     diagonal = xp.hypot(width_mm, height_mm)
     return FieldOfView(
-        angle_of_view_deg(width_mm, focal_length_mm, magnification),
-        angle_of_view_deg(height_mm, focal_length_mm, magnification),
-        angle_of_view_deg(diagonal, focal_length_mm, magnification),
+        angle_of_view_deg(width_mm, focal_length_mm, magnification, pupil_magnification),
+        angle_of_view_deg(height_mm, focal_length_mm, magnification, pupil_magnification),
+        angle_of_view_deg(diagonal, focal_length_mm, magnification, pupil_magnification),
     )
 
 

@@ -139,3 +139,26 @@ def test_every_command_is_documented() -> None:
         result = run(name, "--help")
         assert result.exit_code == 0
         assert "--format" in result.stdout or name in ("presets", "completion")
+
+
+def test_focus_with_lens_data_uses_pupil_magnification_and_hiatus() -> None:
+    (row,) = run_json("focus", "-f", "100", "-s", "0.5m", "-N", "8", "--pupil-mag", "0.5", "--hiatus", "10")
+    # from the sensor: u + v = D − δ = 490 mm with 1/u + 1/v = 1/100 (thin-lens geometry between principal planes)
+    geometry = focus_geometry(100.0, 500.0, hiatus_mm=10.0)
+    assert geometry.object_mm + geometry.image_mm == pytest.approx(490.0)
+    assert row["magnification"] == pytest.approx(geometry.magnification)
+    # working f-number N(1 + m/P) (Wikipedia, "f-number": working f-number with pupil magnification)
+    assert row["working_f_number"] == pytest.approx(8 * (1 + geometry.magnification / 0.5))
+    (thin,) = run_json("focus", "-f", "100", "-s", "0.5m", "-N", "8", "--pupil-mag", "1", "--hiatus", "0")
+    (plain,) = run_json("focus", "-f", "100", "-s", "0.5m", "-N", "8")
+    assert thin == plain  # P = 1, δ = 0 is the thin lens
+
+
+def test_fov_breathing_with_a_prescription_lens() -> None:
+    (row,) = run_json("fov", "--lens", "telephoto127-lens", "-s", "1m")
+    # telephoto127: P = 0.734585838879, hiatus z_H' − z_H = 17.6095986414 mm (oracle-README first-order table)
+    p, delta, f = 0.734585838879, -20.4991216982 - -38.1087203396, 127.016601138
+    geometry = focus_geometry(f, 1000.0, hiatus_mm=delta)
+    expected = 2 * math.degrees(math.atan(36.0 / (2 * f * (1 + geometry.magnification / p))))
+    assert row["magnification"] == pytest.approx(geometry.magnification, rel=1e-6)
+    assert row["horizontal_deg"] == pytest.approx(expected, rel=1e-6)

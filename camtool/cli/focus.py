@@ -8,6 +8,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
                                  library_errors, sensor_options)
 from camtool.cli.params import NumberType, flatten
@@ -47,9 +48,13 @@ INVERSE_COLUMNS = [
 @sensor_options
 @coc_options
 @distance_plane_option
+@lens_geometry_options
 def focus(ctx: click.Context, focal_length, distance, magnification, f_number, exact_stops, near, far, sensor, crop,
-          coc, coc_rule, pixel_pitch, distance_from, fmt, units, preset_files) -> Output:
+          coc, coc_rule, pixel_pitch, distance_from, pupil_mag, hiatus, fmt, units, preset_files) -> Output:
     """Thin-lens focusing: image distance, extension, magnification, working f-number.
+
+    With lens data (--lens, or --pupil-mag and --hiatus) the working f-number
+    is N(1 + m/P) and distances from the sensor include the hiatus.
 
     With --near and --far it answers the inverse question: where to focus and
     which f-number make exactly that range acceptably sharp.
@@ -66,12 +71,14 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
                         preset_files)
     if bool(distance) == bool(magnification):
         raise click.UsageError("give either -s/--distance or -m/--magnification (or --near and --far)", ctx)
+    p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
     apertures = f_numbers(f_number, exact_stops) or [float("nan")]
     wanted = flatten(distance) or flatten(magnification)
     count, (f, w, n) = combine_params(ctx, focal, wanted, apertures)
     with library_errors(ctx):
-        geometry = focus_geometry(f, w, distance_from) if distance else focus_for_magnification(f, w)
-        nearest = closest_focus_mm(f, distance_from=distance_from)
+        geometry = (focus_geometry(f, w, distance_from, delta) if distance
+                    else focus_for_magnification(f, w, delta))
+        nearest = closest_focus_mm(f, delta, distance_from=distance_from)
     plane_distance = geometry.sensor_distance_mm if distance_from == "sensor" else geometry.object_mm
     values = {
         "focal_length_mm": f, "distance_mm": plane_distance, "image_distance_mm": geometry.image_mm,
@@ -80,12 +87,13 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     }
     keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
     if f_number:
-        values.update({"f_number": n, "working_f_number": working_f_number(n, geometry.magnification)})
+        values.update({"f_number": n, "working_f_number": working_f_number(n, geometry.magnification, p)})
     else:
         keys = [k for k in keys if k not in ("f_number", "working_f_number")]
         columns = [c for c in columns if c.key != "working_f_number"]
     rows = rows_from(count, values)
-    note = footer("thin", None, "", "unit focusing, m = v/u", distance_from) if fmt == "table" else ""
+    note = footer("thick" if lens_note else "thin", None, "", "unit focusing, m = v/u", distance_from,
+                  lens_note) if fmt == "table" else ""
     return Output(rows, columns, keys, note)
 
 

@@ -8,6 +8,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 
 from camtool.cli.common import footer, required, rows_from
 from camtool.cli.equipment import resolve_sensor
+from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import DISTANCE_M, distance_plane_option, focal_option, library_errors, \
     sensor_options
 from camtool.cli.params import flatten
@@ -40,12 +41,15 @@ DISTANCE_COLUMNS = [
                    "and the field covered at that distance is shown.")
 @sensor_options
 @distance_plane_option
-def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from, fmt, units, preset_files) -> Output:
+@lens_geometry_options
+def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from, pupil_mag, hiatus, fmt, units,
+        preset_files) -> Output:
     """Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.
 
     Without -s the angles are for infinity focus, 2·atan(size / 2f). With -s the
-    image distance f(1 + m) replaces f (a unit-focusing lens "breathes") and
-    the field at the subject is sensor size / m.
+    lens "breathes": f(1 + m/P) replaces f (P, the pupil magnification, is 1
+    for a thin lens; --lens or --pupil-mag give it), and the field at the
+    subject is sensor size / m.
 
     \b
     Examples:
@@ -55,10 +59,11 @@ def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from,
     focal = required(ctx, focal_length, "-f")
     distances = flatten(distance)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
     count, (f, s) = combine_params(ctx, focal, distances or [float("inf")])
     with library_errors(ctx):
-        geometry = focus_geometry(f, s, distance_from)
-        angles = field_of_view(chosen.width_mm, chosen.height_mm, f, geometry.magnification)
+        geometry = focus_geometry(f, s, distance_from, delta)
+        angles = field_of_view(chosen.width_mm, chosen.height_mm, f, geometry.magnification, p)
         fields = (field_size_mm(chosen.width_mm, geometry.magnification),
                   field_size_mm(chosen.height_mm, geometry.magnification)) if distances else (None, None)
     values = {
@@ -74,5 +79,5 @@ def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from,
         columns += DISTANCE_COLUMNS
     rows = rows_from(count, values)
     note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})",
-                  distance_from if distances else None) if fmt == "table" else ""
+                  distance_from if distances else None, lens_note) if fmt == "table" else ""
     return Output(rows, columns, keys, note)

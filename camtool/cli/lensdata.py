@@ -148,6 +148,14 @@ class PupilMagnificationType(click.ParamType):
         return number
 
 
+def lens_geometry_options(function: Any) -> Any:
+    """``--pupil-mag`` and ``--hiatus`` alone, for commands that focus but compute no depth of field."""
+    function = click.option("--hiatus", type=SignedLengthType(), metavar="LENGTH",
+                            help="Separation of the principal planes (rear minus front, mm, either sign).")(function)
+    return click.option("--pupil-mag", "pupil_mag", type=PupilMagnificationType(), metavar="P",
+                        help="Pupil magnification P (exit/entrance pupil diameter); 1 for a thin lens.")(function)
+
+
 def model_options(function: Any) -> Any:
     """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
     decorators = [
@@ -203,3 +211,14 @@ def ladder_errors(ctx: click.Context) -> Any:
 
 
 _LENS_PARAMS = {"pupil_magnification": "pupil_mag", "hiatus_mm": "hiatus", "wavelength_nm": "wavelength"}
+
+
+def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,
+                     hiatus: float | None = None) -> tuple[float, float, str]:
+    """(P, δ, footer note) for focusing and angle of view: from the options, else ``--lens``, else 1 and 0."""
+    data = lens_data(ctx, pupil_mag, hiatus, None)
+    known = data.thick_parameters() if data is not None else None
+    if known is None:
+        return 1.0, 0.0, ""
+    p, delta = (float(v) for v in known)
+    return p, delta, f"P = {p:.3g}, hiatus {delta:+.3g} mm"
