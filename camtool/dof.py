@@ -23,11 +23,7 @@ from camtool.thinlens import lens_distances
 
 DISTANCE_PLANES = ("sensor", "lens")
 
-# Largest finite far limit reported. Only reachable when the focus distance
-# lies within a few ulps below the hyperfocal distance and rounding makes H − u
-# vanish; it keeps such a far limit finite, as the comparison in the input
-# plane says it must be.
-_FAR_CAP_MM = 1e300
+_ULP = 1.1102230246251565e-16  # 2⁻⁵³: half the spacing of floats relative to their value
 
 
 def check_inputs(focal_length_mm: Any, f_number: Any, coc_mm: Any) -> None:
@@ -173,12 +169,13 @@ def thin_dof(
         denominator = 1.0 + (h0 - f) / u  # > 1/2 because u ≥ 2f; 1 at infinity
         near = h0 / denominator
         front = u_minus_f / denominator
-        gap = h - u
-        usable = gap > 0
-        safe_gap = xp.where(usable, gap, 1.0)
+        # H − u is a whole number of ulps of H when positive; flooring it at about one ulp only
+        # matters within rounding of the hyperfocal distance, where the comparison in the input
+        # plane (beyond) decides, and keeps such a far limit finite (≤ u/ε) instead of inf or < 0.
+        gap = xp.maximum(h - u, h * _ULP)
         beyond = distance_mm >= hyperfocal
-        far = xp.where(beyond, xp.inf, xp.where(usable, u * h0 / safe_gap, _FAR_CAP_MM))
-        rear = xp.where(beyond, xp.inf, xp.where(usable, u * u_minus_f / safe_gap, _FAR_CAP_MM))
+        far = xp.where(beyond, xp.inf, u * h0 / gap)
+        rear = xp.where(beyond, xp.inf, u * u_minus_f / gap)
         m = f / u_minus_f
         if distance_from == "sensor":
             near = near + offset
