@@ -14,8 +14,9 @@ same id, aliases and all.
 
 from __future__ import annotations
 
+import functools
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 from camtool.presets import paths
@@ -36,14 +37,24 @@ from camtool.presets.schema import (
 
 
 class _Entry:
-    """A record with the file and tier it came from."""
+    """A record with the file and tier it came from; the record itself is read only when needed."""
 
-    __slots__ = ("record", "path", "tier")
+    __slots__ = ("keys", "path", "tier", "_record", "_load")
 
-    def __init__(self, record: dict[str, Any], path: str, tier: str) -> None:
-        self.record = record
+    def __init__(self, record: dict[str, Any] | None, path: str, tier: str, keys: list[str] | None = None,
+                 load: Callable[[], dict[str, Any]] | None = None) -> None:
+        self._record = record
+        self._load = load
+        self.keys: list[str] = keys if keys is not None else record["_keys"]  # type: ignore[index]
         self.path = path
         self.tier = tier
+
+    @property
+    def record(self) -> dict[str, Any]:
+        if self._record is None:
+            assert self._load is not None
+            self._record = self._load()
+        return self._record
 
     @property
     def id(self) -> str:
@@ -192,17 +203,19 @@ class Database:
         for tier in self.tiers:
             tier_keys: dict[str, _Entry] = {}
             for path in tier.files:
-                for record in self._files[path].records_of(kind):
-                    entry = _Entry(record, path, tier.name)
-                    for position, key in enumerate(record["_keys"]):
+                data = self._files[path]
+                for index, record_keys in enumerate(data.keys_of(kind)):
+                    entry = _Entry(None, path, tier.name, record_keys, functools.partial(data.record_at, kind, index))
+                    for position, key in enumerate(record_keys):
                         other = tier_keys.get(key)
                         if other is not None:
                             raise _clash(kind, entry, position, other)
                         tier_keys[key] = entry
             for key, entry in tier_keys.items():
                 old = keys.get(key)
-                if old is not None and key == entry.record["_keys"][0] and old.id == entry.id:
-                    for old_key in old.record["_keys"]:
+                # the same (normalized) id: the later tier's preset replaces the earlier, aliases included
+                if old is not None and key == entry.keys[0] and old.keys[0] == key:
+                    for old_key in old.keys:
                         if keys.get(old_key) is old:
                             del keys[old_key]
             keys.update(tier_keys)

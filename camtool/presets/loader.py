@@ -22,7 +22,7 @@ from typing import Any
 from camtool.presets.errors import PresetFileError
 from camtool.presets.schema import REFERENCES, SECTIONS, check_record, normalize, show, suggest
 
-CACHE_FORMAT = 4
+CACHE_FORMAT = 5
 """Bumped whenever the record layout changes, so old cache files are ignored."""
 
 MAX_NODES = 2_000_000
@@ -73,12 +73,39 @@ class FileData:
             records = self._records[kind] = self._load_kind(kind)
         return records
 
+    def keys_of(self, kind: str) -> list[list[str]]:
+        """The lookup keys of each record of one kind, in order, without reading the records from the cache.
+
+        A lookup needs every tier's keys but only the one record it finds; a
+        large tier (a lensfun import) then costs its keys, not its records.
+        """
+        if kind in self._records or self._cached is None or f"{kind}#keys" not in self._cached[2]:
+            return [record["_keys"] for record in self.records_of(kind)]
+        keys = self._read_section(f"{kind}#keys")
+        return keys if keys is not None else [record["_keys"] for record in self.records_of(kind)]
+
+    def record_at(self, kind: str, index: int) -> dict[str, Any]:
+        """The ``index``-th record of one kind."""
+        return self.records_of(kind)[index]
+
+    def _read_section(self, section: str) -> Any:
+        assert self._cached is not None
+        cache_path, body_start, sections = self._cached
+        offset, length = sections[section]
+        try:
+            with open(cache_path, "rb") as handle:
+                handle.seek(body_start + offset)
+                return json.loads(handle.read(length))
+        except (OSError, ValueError):
+            return None
+
     @property
     def records(self) -> dict[str, list[dict[str, Any]]]:
         """Every kind's records (kinds without presets left out)."""
         if self._cached is not None:
             for kind in self._cached[2]:
-                self.records_of(kind)
+                if "#" not in kind:
+                    self.records_of(kind)
         return {kind: records for kind, records in self._records.items() if records}
 
     def _load_kind(self, kind: str) -> list[dict[str, Any]]:
@@ -340,10 +367,12 @@ def _write_cache(cache_path: str, stamp: list[Any], records: dict[str, list[dict
         blobs = []
         offset = 0
         for kind, kind_records in records.items():
-            blob = json.dumps(kind_records, separators=(",", ":")).encode("utf-8")
-            sections[kind] = [offset, len(blob)]
-            blobs.append(blob)
-            offset += len(blob)
+            keys = [record["_keys"] for record in kind_records]
+            for section, value in ((kind, kind_records), (f"{kind}#keys", keys)):
+                blob = json.dumps(value, separators=(",", ":")).encode("utf-8")
+                sections[section] = [offset, len(blob)]
+                blobs.append(blob)
+                offset += len(blob)
         header = json.dumps({"stamp": stamp, "sections": sections}, separators=(",", ":")).encode("utf-8")
         os.makedirs(os.path.dirname(cache_path), exist_ok=True)
         with open(temporary, "wb") as handle:
