@@ -120,9 +120,14 @@ def test_table_snapshots(args: list[str], table: str) -> None:
     assert run(*args).stdout == table
 
 
-def test_imperial_table_uses_feet() -> None:
-    out = run("dof", "-f", "50", "-N", "8", "-s", "10ft", "--units", "imperial").stdout
-    assert "(ft)" in out.splitlines()[1] and "(m)" not in out
+def test_imperial_table_uses_feet_and_inches() -> None:
+    out = run("dof", "-f", "50", "-N", "8", "-s", "10ft", "--units", "imperial", "--model", "thin").stdout
+    assert "(ft in)" in out.splitlines()[1] and "(m)" not in out
+    # focus 10 ft = 3048 mm exactly; the near limit from thin_dof, in feet and inches (1 in = 25.4 mm)
+    near = thin_dof(50.0, 8.0, math.hypot(36, 24) / 1500, 3048.0).near_mm
+    inches = round(near / 25.4, 1)
+    assert f"{int(inches // 12)}' {inches % 12:.1f}\"" in out.splitlines()[3]
+    assert "10' 0.0\"" in out.splitlines()[3]
 
 
 def test_unknown_command_suggests() -> None:

@@ -61,3 +61,26 @@ def distance_unit(values_mm: Sequence[float | None], units: str = "metric") -> t
         if largest >= threshold:
             return name, size
     return table[-1][0], table[-1][1]
+
+
+def feet_inches(value_mm: float) -> str:
+    """A distance as photographers in feet write it: 9' 10.1", 378' 9", ∞.
+
+    Inches get one decimal below 100 ft and none above (four significant
+    figures either way, as metric cells).
+
+    >>> print(feet_inches(3000.0), feet_inches(115_400.0), feet_inches(240.0), feet_inches(float("inf")))
+    9' 10.1" 378' 7" 9.4" ∞
+    """
+    if value_mm is None:
+        return "–"
+    if math.isinf(value_mm):
+        return INFINITY
+    decimals = 1 if value_mm < 100 * 304.8 else 0
+    total_inches = round(value_mm / 25.4, decimals)
+    feet, inches = divmod(total_inches, 12.0)
+    if abs(feet) >= 100_000:
+        return significant(value_mm / 304.8) + "'"
+    if feet == 0:
+        return f"{inches:.{decimals}f}\""
+    return f"{int(feet)}' {inches:.{decimals}f}\""

@@ -16,7 +16,7 @@ from rich.measure import Measurement
 from rich.table import Table
 
 from camtool.render.columns import ANGLE, DISTANCE, FNUMBER, NUMBER, SMALL, TEXT, Column
-from camtool.render.numfmt import distance_unit, significant
+from camtool.render.numfmt import distance_unit, feet_inches, significant
 
 
 def _cells(column: Column, rows: Sequence[dict[str, Any]], units: str) -> tuple[str, list[str]]:
@@ -36,6 +36,8 @@ def _cells(column: Column, rows: Sequence[dict[str, Any]], units: str) -> tuple[
         return header, [f"f/{v:.3g}" if v is not None else "–" for v in values]
     if column.kind == SMALL:
         return header, [f"{v:.4g}" if v is not None else "–" for v in values]
+    if column.kind == DISTANCE and unit == "ft":
+        return f"{column.header}\n(ft in)", [feet_inches(v) for v in values]
     return header, [significant(v / size) if isinstance(v, float) else significant(v) for v in values]
 
 
