@@ -167,3 +167,19 @@ def test_fov_breathing_with_a_prescription_lens() -> None:
     expected = 2 * math.degrees(math.atan(36.0 / (2 * f * (1 + geometry.magnification / p))))
     assert row["magnification"] == pytest.approx(geometry.magnification, rel=1e-6)
     assert row["horizontal_deg"] == pytest.approx(expected, rel=1e-6)
+
+
+def test_hyperfocal_with_lens_data_is_thick_and_thin_without() -> None:
+    from camtool.optics.thick import thick_dof
+
+    (row,) = run_json("hyperfocal", "-f", "100", "-N", "8", "--coc", "0.03", "--pupil-mag", "0.5", "--hiatus", "10")
+    assert row["model"] == "thick"
+    # focused at the reported hyperfocal distance the thick model's far limit is infinite, and its near limit
+    # is the one reported (camtool.optics.thick, validated against the reference paraxial rows)
+    at_h = thick_dof(100.0, 8.0, 0.03, row["hyperfocal_mm"], pupil_magnification=0.5, hiatus_mm=10.0)
+    assert at_h.far_mm == math.inf
+    assert row["near_mm"] == pytest.approx(at_h.near_mm, rel=1e-12)
+    (same,) = run_json("hyperfocal", "-f", "100", "-N", "8", "--coc", "0.03", "--pupil-mag", "1", "--hiatus", "0")
+    assert same["model"] == "thin"
+    unavailable = run("hyperfocal", "-f", "50", "-N", "8", "--model", "thick")
+    assert unavailable.exit_code == 2 and unavailable.stderr.startswith("Error: Invalid value for '--model': thick")
