@@ -58,7 +58,7 @@ def write_table(
     console = Console(file=stream, highlight=False, soft_wrap=False)
     table = _build(rows, columns, units, title)
     needed = Measurement.get(console, console.options.update_width(10_000), table).maximum
-    if not console.is_terminal and "COLUMNS" not in os.environ:
+    if not console.is_terminal and not os.environ.get("COLUMNS"):
         console = Console(file=stream, highlight=False, soft_wrap=False, width=max(needed, len(footer), 40))
     elif needed > console.width:
         table = _build(rows, [c for c in columns if c.kind != TEXT], units, title)
