@@ -72,9 +72,9 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     if bool(distance) == bool(magnification):
         raise click.UsageError("give either -s/--distance or -m/--magnification (or --near and --far)", ctx)
     p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
-    apertures = f_numbers(f_number, exact_stops) or [float("nan")]
+    apertures = f_numbers(f_number, exact_stops)
     wanted = flatten(distance) or flatten(magnification)
-    count, (f, w, n) = combine_params(ctx, focal, wanted, apertures)
+    count, (f, w, *given_n) = combine_params(ctx, focal, wanted, *([apertures] if apertures else []))
     with library_errors(ctx):
         geometry = (focus_geometry(f, w, distance_from, delta) if distance
                     else focus_for_magnification(f, w, delta))
@@ -86,7 +86,8 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
         "closest_focus_mm": nearest, "distance_from": distance_from,
     }
     keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
-    if f_number:
+    if given_n:
+        n = given_n[0]
         values.update({"f_number": n, "working_f_number": working_f_number(n, geometry.magnification, p)})
     else:
         keys = [k for k in keys if k not in ("f_number", "working_f_number")]
