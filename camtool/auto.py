@@ -166,11 +166,8 @@ def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> An
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> aberration_share(lens, 2.8, 0.0) > aberration_share(lens, 16.0, 0.0)
     True
     """

@@ -163,11 +163,8 @@ def first_order(prescription: Prescription) -> FirstOrder:
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> fo = first_order(lens)
     >>> round(fo.efl_mm, 4), round(fo.bfd_mm, 4), round(fo.z_h_prime_mm, 4), fo.z_e_mm
     (100.0, 96.7036, 1.7036, 0.0)
@@ -247,11 +244,8 @@ def paraxial_dof(
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> r = paraxial_dof(lens, 8.0, 0.03, 3000.0)
     >>> round(r.near_mm, 1), round(r.far_mm, 1)
     (2818.0, 3208.1)

@@ -54,6 +54,14 @@ _TOP_KEYS = frozenset(
 _INFINITY_WORDS = {"inf", ".inf", "+inf", "infinity", "flat"}
 
 
+EXAMPLE_SINGLET = {"surfaces": [
+    {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
+    {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
+    {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0},
+]}
+"""A 100 mm plano-convex N-BK7 singlet with its stop in front, the lens of the optics modules' examples."""
+
+
 class PrescriptionError(ValueError):
     """A prescription mapping is invalid; the message names the source, the surface and the key.
 

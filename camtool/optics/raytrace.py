@@ -167,11 +167,8 @@ class RealRayTracer:
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> tracer = RealRayTracer(lens)
     >>> s = tracer.summaries([0.0], f_number=16.0)
     >>> round(float(s.z_best[0]) - tracer.first.z_f_prime_mm, 4)  # spherical aberration
@@ -364,11 +361,8 @@ def real_tracer(prescription: Prescription) -> RealRayTracer:
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> real_tracer(lens) is real_tracer(lens)
     True
     """
@@ -622,11 +616,8 @@ def real_focus(
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> focus = real_focus(lens, 8.0, 1000.0)
     >>> round(focus.film_z_mm, 3), round(focus.magnification, 4)
     (114.016, 0.1272)
@@ -738,11 +729,8 @@ def raytrace_dof(
 
     Examples
     --------
-    >>> from camtool.optics.prescription import prescription_from_mapping
-    >>> lens = prescription_from_mapping({"surfaces": [
-    ...     {"radius_mm": "inf", "thickness_mm": 0.0, "n": 1.0, "stop": True},
-    ...     {"radius_mm": 51.68, "thickness_mm": 5.0, "n": 1.5168},
-    ...     {"radius_mm": "inf", "thickness_mm": 96.7, "n": 1.0}]})
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> r = raytrace_dof(lens, 8.0, 0.03, 3000.0)
     >>> round(r.near_mm, 1), round(r.far_mm, 1)
     (2817.2, 3209.2)
