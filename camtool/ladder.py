@@ -12,6 +12,8 @@ runs every rung the inputs allow (:func:`compare_models`).
 
 from __future__ import annotations
 
+import functools
+
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -168,7 +170,12 @@ def available_models(lens: LensData | None = None) -> tuple[str, ...]:
     With a prescription and no P or δ by hand, ``thick`` would repeat
     ``paraxial`` (same f, P and δ) and is left out.
     """
-    lens = lens or NO_LENS
+    return _available(lens or NO_LENS)
+
+
+@functools.lru_cache(maxsize=64)
+def _available(lens: LensData) -> tuple[str, ...]:
+    # cached: auto asks on every call, and the answer depends only on which data the lens carries
     by_hand = lens.pupil_magnification is not None or lens.hiatus_mm is not None
     # with a prescription and no values by hand, thick is paraxial by another name
     skip = "thick" if lens.prescription is not None and not by_hand else ""
