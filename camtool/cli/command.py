@@ -21,6 +21,7 @@ from typing import Any, NamedTuple
 
 import click
 
+from camtool.cli.options import preset_completion, stack
 from camtool.grid import combine
 from camtool.render.columns import Column
 from camtool.render.output import FORMATS, write_rows
@@ -48,42 +49,36 @@ def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tu
     return count, columns
 
 
-def output_options(function: Callable[..., Any]) -> Callable[..., Any]:
-    """The output options every command shares."""
-    decorators = [
-        click.option("--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True,
-                     envvar="CAMTOOL_FORMAT",
-                     help="Output: a table for people, JSON (an array of rows) or CSV for scripts."),
-        click.option("--units", type=click.Choice(["metric", "imperial"]), default="metric", show_default=True,
-                     help="Units of the table (JSON and CSV are always in mm, degrees and seconds)."),
-        click.option("--field", "fields", multiple=True, metavar="KEY",
-                     help="Print only this JSON key's value, one row per line, tab-separated when "
-                          "repeated; no header (for $(...)). Infinity prints as inf."),
-        click.option("--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
-                     help="Extra preset file (YAML); repeatable, later files win."),
-    ]
-    for decorator in reversed(decorators):
-        function = decorator(function)
-    return function
+format_option = click.option(
+    "--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True, envvar="CAMTOOL_FORMAT",
+    help="Output: a table for people, JSON (an array of rows) or CSV for scripts.")
+presets_option = click.option(
+    "--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
+    help="Extra preset file (YAML); repeatable, later files win.")
+
+output_options = stack(
+    format_option,
+    click.option("--units", type=click.Choice(["metric", "imperial"]), default="metric", show_default=True,
+                 help="Units of the table (JSON and CSV are always in mm, degrees and seconds)."),
+    click.option("--field", "fields", multiple=True, metavar="KEY",
+                 help="Print only this JSON key's value, one row per line, tab-separated when "
+                      "repeated; no header (for $(...)). Infinity prints as inf."),
+    presets_option,
+)
+"""The output options every command shares."""
 
 
-def equipment_options(function: Callable[..., Any]) -> Callable[..., Any]:
-    """``--camera``, ``--lens`` and ``--scene``: presets that supply sensor, lens data and settings."""
-    from camtool.cli.options import preset_completion
-
-    decorators = [
-        click.option("--camera", metavar="NAME", shell_complete=preset_completion("camera"),
-                     help="Camera preset: its sensor and pixel pitch (for --coc-rule px:K)."),
-        click.option("--lens", metavar="NAME", shell_complete=preset_completion("lens"),
-                     help="Lens preset: focal length of a prime (a zoom needs -f in its range), f-number range, "
-                          "closest focus, and pupil magnification, hiatus and prescription where known."),
-        click.option("--scene", metavar="NAME", shell_complete=preset_completion("scene"),
-                     help="Scene preset: camera or sensor, lens, f-number, distance, subject size, background; "
-                          "options given explicitly override it."),
-    ]
-    for decorator in reversed(decorators):
-        function = decorator(function)
-    return function
+equipment_options = stack(
+    click.option("--camera", metavar="NAME", shell_complete=preset_completion("camera"),
+                 help="Camera preset: its sensor and pixel pitch (for --coc-rule px:K)."),
+    click.option("--lens", metavar="NAME", shell_complete=preset_completion("lens"),
+                 help="Lens preset: focal length of a prime (a zoom needs -f in its range), f-number range, "
+                      "closest focus, and pupil magnification, hiatus and prescription where known."),
+    click.option("--scene", metavar="NAME", shell_complete=preset_completion("scene"),
+                 help="Scene preset: camera or sensor, lens, f-number, distance, subject size, background; "
+                      "options given explicitly override it."),
+)
+"""``--camera``, ``--lens`` and ``--scene``: presets that supply sensor, lens data and settings."""
 
 
 def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:

@@ -12,7 +12,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, sensor_options, show_length)
+                                 library_errors, param_named, sensor_options, show_length)
 from camtool.cli.params import LengthType, NumberType, flatten
 from camtool.errors import DomainError
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, Column
@@ -61,10 +61,9 @@ def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator
     except DomainError as error:
         if error.param != "offset_mm":
             raise
-        param = next((p for p in ctx.command.params if p.name == name), None)
         raise click.BadParameter(f"{show_length(distance_mm, True)} is outside the valid range: "
                                  "less than the distance from the subject to the lens's front focal point",
-                                 ctx=ctx, param=param) from None
+                                 ctx=ctx, param=param_named(ctx, name)) from None
 
 
 # No --batch: rows compare focal lengths with the first one, which a batch of unrelated scenes would not.

@@ -12,6 +12,7 @@ from typing import Any, NamedTuple
 
 import click
 
+from camtool.cli.options import param_named
 from camtool.cli.params import flatten
 from camtool.coc import DEFAULT_RULE, coc_from_rule
 from camtool.units import UnitError
@@ -60,8 +61,7 @@ def lookup(ctx: click.Context, kind: str, name: str, option: str, preset_files: 
     try:
         return db.get(kind, name)
     except PresetNotFound as error:
-        param = next((p for p in ctx.command.params if p.name == option), None)
-        raise click.BadParameter(str(error), ctx=ctx, param=param) from None
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, option)) from None
     except PresetFileError as error:
         raise click.ClickException(str(error)) from None
 
@@ -75,7 +75,7 @@ def resolve_sensor(
     if crop is not None:
         if not (0.1 <= crop <= 100 and math.isfinite(crop)):
             raise click.BadParameter(f"{crop:g} is outside the valid range: 0.1 to 100", ctx=ctx,
-                                     param=_param(ctx, "crop"))
+                                     param=param_named(ctx, "crop"))
         w, h = 36.0 / crop, 24.0 / crop
         return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
     camera = ctx.meta.get(CAMERA)
@@ -90,7 +90,7 @@ def resolve_sensor(
         w, h = float(match.group(1)), float(match.group(2))
         if w <= 0 or h <= 0:
             raise click.BadParameter(f"{sensor} is outside the valid range: both sides > 0 mm", ctx=ctx,
-                                     param=_param(ctx, "sensor"))
+                                     param=param_named(ctx, "sensor"))
         return SensorChoice(max(w, h), min(w, h), f"{max(w, h):g} × {min(w, h):g} mm")
     preset = lookup(ctx, "sensor", sensor, "sensor", preset_files)
     pitch = camera.pixel_pitch_mm if camera is not None else None
@@ -113,12 +113,9 @@ def resolve_coc(
     try:
         choice = coc_from_rule(rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
     except UnitError as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=_param(ctx, "coc_rule")) from None
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "coc_rule")) from None
     return [choice.coc_mm], choice.origin
 
-
-def _param(ctx: click.Context, name: str) -> click.Parameter | None:
-    return next((p for p in ctx.command.params if p.name == name), None)
 
 
 CAMERA, LENS = "camtool.camera", "camtool.lens"
@@ -184,7 +181,7 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
                 span = (f"{lens.focal_min_mm:g}–{lens.focal_max_mm:g} mm" if lens.is_zoom
                         else f"{lens.focal_min_mm:g} mm")
                 raise click.BadParameter(f"{f:g} mm is outside the valid range of --lens {lens.id}: {span}",
-                                         ctx=ctx, param=_param(ctx, "focal_length"))
+                                         ctx=ctx, param=param_named(ctx, "focal_length"))
     else:
         focal = [lens.focal_min_mm]
     for n in flatten(params.get("f_number")):
@@ -194,10 +191,10 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
             if not widest * 0.99 <= n <= slowest * 1.01:
                 raise click.BadParameter(
                     f"f/{n:g} is outside the valid range of --lens {lens.id} at {f:g} mm: "
-                    f"f/{widest:g} to f/{slowest:g}", ctx=ctx, param=_param(ctx, "f_number"))
+                    f"f/{widest:g} to f/{slowest:g}", ctx=ctx, param=param_named(ctx, "f_number"))
     if lens.min_focus_mm and params.get("distance_from", "sensor") == "sensor":
         for d in flatten(params.get("distance")):
             if d < lens.min_focus_mm:
                 raise click.BadParameter(
                     f"{d / 1000:.4g} m is outside the valid range of --lens {lens.id}: at least its closest focus, "
-                    f"{lens.min_focus_mm / 1000:.4g} m from the sensor", ctx=ctx, param=_param(ctx, "distance"))
+                    f"{lens.min_focus_mm / 1000:.4g} m from the sensor", ctx=ctx, param=param_named(ctx, "distance"))

@@ -10,7 +10,7 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, rows_from
-from camtool.cli.options import aperture_options, library_errors
+from camtool.cli.options import aperture_options, library_errors, param_named
 from camtool.cli.params import NumberType, TimeType, flatten
 from camtool.errors import DomainError
 from camtool.render.columns import FNUMBER, NUMBER, TEXT, Column
@@ -44,9 +44,9 @@ def _named_value(ctx: click.Context, name: str) -> Iterator[None]:
     try:
         yield
     except DomainError as error:
-        param = next((p for p in ctx.command.params if p.name == name), None)
         text = f"{error.value} is outside the valid range: {error.valid}"
-        raise click.BadParameter(text + (f" ({error.detail})" if error.detail else ""), ctx=ctx, param=param) from None
+        raise click.BadParameter(text + (f" ({error.detail})" if error.detail else ""), ctx=ctx,
+                                 param=param_named(ctx, name)) from None
 
 
 def _one(ctx: click.Context, values: dict[str, Any]) -> None:

@@ -14,6 +14,7 @@ from typing import Any
 
 import click
 
+from camtool.cli.options import param_named, stack
 from camtool.ladder import LensData
 from camtool.units import UnitError, parse_length
 
@@ -58,10 +59,6 @@ class WavelengthType(click.ParamType):
         return nm
 
 
-def _param(ctx: click.Context, name: str) -> click.Parameter | None:
-    return next((p for p in ctx.command.params if p.name == name), None)
-
-
 def load_prescription(ctx: click.Context, path: str) -> Any:
     """Read and validate a prescription YAML file; a bad file is a one-line error on --prescription."""
     import yaml
@@ -74,13 +71,13 @@ def load_prescription(ctx: click.Context, path: str) -> Any:
             data = yaml.safe_load(handle)
         return prescription_from_mapping(data, source=name)
     except OSError as error:
-        raise click.BadParameter(f"{path}: {error.strerror or error}", ctx=ctx, param=_param(ctx, "prescription_file"))
+        raise click.BadParameter(f"{path}: {error.strerror or error}", ctx=ctx, param=param_named(ctx, "prescription_file"))
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         where = f" (line {mark.line + 1})" if mark is not None else ""
-        raise click.BadParameter(f"{name}: not valid YAML{where}", ctx=ctx, param=_param(ctx, "prescription_file"))
+        raise click.BadParameter(f"{name}: not valid YAML{where}", ctx=ctx, param=param_named(ctx, "prescription_file"))
     except PrescriptionError as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=_param(ctx, "prescription_file"))
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "prescription_file"))
 
 
 def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None, prescription_file: str | None,
@@ -148,35 +145,31 @@ class PupilMagnificationType(click.ParamType):
         return number
 
 
-def lens_geometry_options(function: Any) -> Any:
-    """``--pupil-mag`` and ``--hiatus`` alone, for commands that focus but compute no depth of field."""
-    function = click.option("--hiatus", type=SignedLengthType(), metavar="LENGTH",
-                            help="Separation of the principal planes (rear minus front, mm, either sign).")(function)
-    return click.option("--pupil-mag", "pupil_mag", type=PupilMagnificationType(), metavar="P",
-                        help="Pupil magnification P (exit/entrance pupil diameter); 1 for a thin lens.")(function)
+pupil_mag_option = click.option(
+    "--pupil-mag", "pupil_mag", type=PupilMagnificationType(), metavar="P",
+    help="Pupil magnification P of the lens (exit/entrance pupil diameter; 1 for a thin lens).")
+hiatus_option = click.option(
+    "--hiatus", type=SignedLengthType(), metavar="LENGTH",
+    help="Separation of the lens's principal planes (rear minus front, mm, either sign).")
 
+lens_geometry_options = stack(pupil_mag_option, hiatus_option)
+"""``--pupil-mag`` and ``--hiatus`` alone, for commands that focus but compute no depth of field."""
 
-def model_options(function: Any) -> Any:
-    """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
-    decorators = [
-        click.option("--tolerance", type=ToleranceType(), default="1%", show_default=True,
-                     help="auto: the largest estimated error accepted, relative to the depth of field (1% or 0.01)."),
-        click.option("--diffraction/--no-diffraction", default=False, show_default=True,
-                     help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
-                          "√(c² − airy²)); says so when nothing can be sharp."),
-        click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-                     help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
-        click.option("--pupil-mag", "pupil_mag", type=PupilMagnificationType(), metavar="P",
-                     help="Pupil magnification P (exit/entrance pupil diameter) for the thick model."),
-        click.option("--hiatus", type=SignedLengthType(), metavar="LENGTH",
-                     help="Separation of the principal planes (rear minus front, mm, either sign) for the thick model."),
-        click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",
-                     help="Lens prescription (YAML: surfaces from the object side, one stop) for the paraxial and "
-                          "raytrace models; its focal length is used (-f, if given, must agree within 1%)."),
-    ]
-    for decorator in reversed(decorators):
-        function = decorator(function)
-    return function
+model_options = stack(
+    click.option("--tolerance", type=ToleranceType(), default="1%", show_default=True,
+                 help="auto: the largest estimated error accepted, relative to the depth of field (1% or 0.01)."),
+    click.option("--diffraction/--no-diffraction", default=False, show_default=True,
+                 help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
+                      "√(c² − airy²)); says so when nothing can be sharp."),
+    click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
+                 help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+    pupil_mag_option,
+    hiatus_option,
+    click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",
+                 help="Lens prescription (YAML: surfaces from the object side, one stop) for the paraxial and "
+                      "raytrace models; its focal length is used (-f, if given, must agree within 1%)."),
+)
+"""``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
 
 
 def ladder_errors(ctx: click.Context) -> Any:
@@ -193,14 +186,14 @@ def ladder_errors(ctx: click.Context) -> Any:
             yield
         except ModelUnavailable as error:
             raise click.BadParameter(f"{error.model} is not available here: it needs {error.missing}",
-                                     ctx=ctx, param=_param(ctx, "model")) from None
+                                     ctx=ctx, param=param_named(ctx, "model")) from None
         except DomainError as error:
             name = _LENS_PARAMS.get(error.param)
             if name is None:
                 raise
             from camtool.cli.options import domain_message
 
-            raise click.BadParameter(domain_message(error, name), ctx=ctx, param=_param(ctx, name)) from None
+            raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param_named(ctx, name)) from None
         except ValueError as error:
             raytrace = sys.modules.get("camtool.optics.raytrace")  # numpy only where a ray trace ran
             if raytrace is not None and isinstance(error, raytrace.RayTraceError):

@@ -37,7 +37,9 @@ PARAM_FOR = {
 SHOWN_IN_METRES = {"distance", "near", "far"}
 
 
-def _stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
+def stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
+    """One decorator applying ``decorators`` in the order written (the first is outermost)."""
+
     def apply(function: F) -> F:
         for decorator in reversed(decorators):
             function = decorator(function)
@@ -49,7 +51,7 @@ def _stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
 focal_option = click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
                             help="Focal length, e.g. 50 or 50mm (bare numbers are mm); a list 24,35,50 gives a row each.")
 
-aperture_options = _stack(
+aperture_options = stack(
     click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
                  help="f-number: 8, f/8 or f8; a list 2.8,4,5.6 gives a row each."),
     click.option("--exact-stops", is_flag=True,
@@ -78,13 +80,13 @@ def preset_completion(kind: str) -> Callable[[click.Context, click.Parameter, st
     return complete
 
 
-sensor_options = _stack(
+sensor_options = stack(
     click.option("--sensor", metavar="NAME|WxH", shell_complete=preset_completion("sensor"),
                  help="Sensor preset (full-frame, aps-c, m43, ...) or size in mm (36x24). Default: full frame."),
     click.option("--crop", type=float, help="Crop factor relative to 36 x 24 mm, instead of --sensor."),
 )
 
-coc_options = _stack(
+coc_options = stack(
     click.option("--coc", type=LENGTH_MM, multiple=True,
                  help="Circle of confusion, e.g. 0.03 or 0.03mm (overrides --coc-rule)."),
     click.option("--coc-rule", default=None, metavar="RULE",
@@ -100,8 +102,12 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
         yield
     except DomainError as error:
         name = PARAM_FOR.get(error.param, error.param)
-        param = next((p for p in ctx.command.params if p.name == name), None)
-        raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param) from None
+        raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param_named(ctx, name)) from None
+
+
+def param_named(ctx: click.Context, name: str) -> click.Parameter | None:
+    """The command's parameter called ``name`` (its Python name), for errors that name the option."""
+    return next((p for p in ctx.command.params if p.name == name), None)
 
 
 def domain_message(error: DomainError, name: str) -> str:

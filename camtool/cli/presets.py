@@ -7,26 +7,15 @@ from typing import Any
 
 import click
 
-from camtool.cli.command import Output, emit
+from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
 from camtool.render.columns import TEXT, Column
-from camtool.render.output import FORMATS
 
 KIND_CHOICE = click.Choice(["sensor", "camera", "lens", "prescription", "scene"])
 LIST_KEYS = ["kind", "id", "name", "summary", "tier", "origin"]
 LIST_COLUMNS = [Column("kind", "kind", TEXT), Column("id", "id", TEXT), Column("summary", "summary", TEXT),
                 Column("tier", "from", TEXT)]
 SHOW_COLUMNS = [Column("key", "key", TEXT), Column("value", "value", TEXT)]
-
-
-def _format_option(function: Any) -> Any:
-    return click.option("--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True,
-                        envvar="CAMTOOL_FORMAT", help="Output: table, JSON or CSV.")(function)
-
-
-def _presets_option(function: Any) -> Any:
-    return click.option("--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
-                        help="Extra preset file (YAML); repeatable, later files win.")(function)
 
 
 @click.group("presets")
@@ -74,8 +63,8 @@ def summary(preset: Any) -> str:
 @presets.command("list")
 @click.option("--kind", type=KIND_CHOICE, help="Only presets of this kind.")
 @click.option("--search", metavar="TEXT", help="Only presets whose id, name or aliases contain TEXT.")
-@_format_option
-@_presets_option
+@format_option
+@presets_option
 @click.pass_context
 def list_presets(ctx: click.Context, kind: str | None, search: str | None, fmt: str,
                  preset_files: tuple[str, ...]) -> None:
@@ -137,8 +126,8 @@ def first_order_fields(mapping: dict[str, Any], source: str) -> dict[str, Any]:
 @presets.command("show")
 @click.argument("name", shell_complete=preset_completion("lens"))
 @click.option("--kind", type=KIND_CHOICE, help="The kind, when a name is used by several kinds.")
-@_format_option
-@_presets_option
+@format_option
+@presets_option
 @click.pass_context
 def show(ctx: click.Context, name: str, kind: str | None, fmt: str, preset_files: tuple[str, ...]) -> None:
     """Show every field of a preset, its derived values and the file it came from.
