@@ -101,3 +101,10 @@ def test_unknown_field_lists_keys() -> None:
     assert result.exit_code == 2
     assert result.stderr.startswith("Error: Invalid value for '--field': 'far_mm' is not a key of this output; "
                                     "valid: focal_length_mm, f_number, hyperfocal_mm")
+
+
+def test_stop_names_the_bad_row_not_the_first_of_its_group() -> None:
+    # rows 1-3 share their settings and run as one vectorised group; only row 3 is too close to focus
+    code, out, err = batch("f-number,distance\n8,3\n11,2\n8,0.01\n", "dof", "-f", "50", "--format", "json")
+    assert code == 2 and out == ""
+    assert err.startswith("Error: --batch row 3: Invalid value for '-s' / '--distance': 10 mm is outside")

@@ -179,27 +179,28 @@ def _compute_chunk(ctx: click.Context, compute: Callable[..., Output], params: d
         groups.setdefault(settings, []).append((number, values))
     results: list[tuple[int, dict[str, Any]]] = []
     last: Output | None = None
+    bad: list[tuple[int, str]] = []
     for members in groups.values():
         try:
             out = _compute_group(ctx, compute, params, members, columns)
-        except click.ClickException as error:
-            if len(members) == 1 or on_error == "stop":
-                if on_error == "stop":
-                    raise BatchRowError(f"--batch row {members[0][0]}: {error.format_message()}") from None
-                click.echo(f"Error: --batch row {members[0][0]}: {error.format_message()} (skipped)", err=True)
-                continue
+        except click.ClickException:
             # find the bad rows one by one; the good ones still count
             for member in members:
                 try:
                     out = _compute_group(ctx, compute, params, [member], columns)
                 except click.ClickException as row_error:
-                    click.echo(f"Error: --batch row {member[0]}: {row_error.format_message()} (skipped)", err=True)
+                    bad.append((member[0], row_error.format_message()))
                     continue
                 results.append((member[0], out.rows[0]))
                 last = out
             continue
         results.extend(zip((number for number, _ in members), out.rows))
         last = out
+    bad.sort()
+    if bad and on_error == "stop":
+        raise BatchRowError(f"--batch row {bad[0][0]}: {bad[0][1]}")
+    for number, message in bad:
+        click.echo(f"Error: --batch row {number}: {message} (skipped)", err=True)
     if last is None:
         return None
     results.sort(key=lambda item: item[0])
