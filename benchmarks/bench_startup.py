@@ -60,7 +60,7 @@ def main() -> None:
     if not CAMTOOL:
         sys.exit("camtool is not on PATH: install the project first")
     medians = measure(args.repeat)
-    print(f"| command | median wall time (ms) |\n|---|---:|")
+    print("| command | median wall time (ms) |\n|---|---:|")
     for name, value in medians.items():
         print(f"| `{name}` | {value * 1000:.1f} |")
     print("\n| budget | ratio | limit | verdict |\n|---|---:|---:|---|")

@@ -27,10 +27,6 @@ def _where(cond: bool, a: float, b: float) -> float:
     return a if cond else b
 
 
-def _isclose_inf(x: float) -> bool:
-    return math.isinf(x)
-
-
 SCALAR = SimpleNamespace(
     name="math",
     sqrt=math.sqrt,
@@ -49,7 +45,7 @@ SCALAR = SimpleNamespace(
     exp=math.exp,
     exp2=lambda x: 2.0**x,
     fabs=math.fabs,
-    isinf=_isclose_inf,
+    isinf=math.isinf,
     isfinite=math.isfinite,
     isnan=math.isnan,
     where=_where,

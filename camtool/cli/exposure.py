@@ -109,7 +109,6 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     from camtool import exposure as lib
     from camtool import metering
     from camtool.reciprocity import find_film
-    from camtool.stops import snap_shutter_s
     from camtool.timefmt import format_time
 
     apertures, times, speeds = f_numbers(f_number, exact_stops), flatten(shutter_s), flatten(iso)

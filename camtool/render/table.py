@@ -15,7 +15,7 @@ from rich.console import Console
 from rich.measure import Measurement
 from rich.table import Table
 
-from camtool.render.columns import ANGLE, DISTANCE, FNUMBER, NUMBER, SMALL, TEXT, Column
+from camtool.render.columns import ANGLE, DISTANCE, FNUMBER, SMALL, TEXT, Column
 from camtool.render.numfmt import distance_unit, feet_inches, significant
 
 
