@@ -118,7 +118,7 @@ def resolve_coc(
 
 
 
-CAMERA, LENS = "camtool.camera", "camtool.lens"
+CAMERA, LENS = "camtool.camera", "camtool.lens"  # where the resolved presets are kept in ctx.meta
 
 # Scene preset fields -> (command parameter, value for the parameter)
 _SCENE_FIELDS = {

@@ -14,12 +14,11 @@ from typing import Any
 
 import click
 
+from camtool.cli.equipment import LENS
 from camtool.cli.options import param_named, stack
 from camtool.ladder import LensData
 from camtool.units import UnitError, parse_length
 
-LENS_META = "camtool.lens"
-"""Where the ``--lens`` preset is kept in ``ctx.meta`` once resolved."""
 
 
 class ToleranceType(click.ParamType):
@@ -89,7 +88,7 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
     left in ``ctx.meta``. Values on the command line win over the preset's.
     """
     if preset_lens is None:
-        preset_lens = ctx.meta.get(LENS_META)
+        preset_lens = ctx.meta.get(LENS)
     p = pupil_mag if pupil_mag is not None else getattr(preset_lens, "pupil_magnification", None)
     delta = hiatus if hiatus is not None else getattr(preset_lens, "hiatus_mm", None)
     prescription = None
