@@ -20,7 +20,6 @@ from camtool.ladder import LensData
 from camtool.units import UnitError, parse_length
 
 
-
 class ToleranceType(click.ParamType):
     """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
 
