@@ -8,7 +8,7 @@ For each reference lens (tests/data/prescriptions) it times, over the focus
 distances and f-numbers of the reference table, one ``raytrace`` near/far pair
 (a cold call: a fresh focus solve and limit search each time; the tracer for the
 lens is built once) and one ``paraxial`` call, and prints the median and
-maximum per call, the ray-trace budget ratio (camtool design §7: well under
+maximum per call, the ray-trace budget ratio (docs/design.md §7: well under
 50 ms) and the paraxial ratio (under 1 ms).
 """
 
@@ -21,9 +21,9 @@ from pathlib import Path
 
 import yaml
 
-from camtool.optics.paraxial import paraxial_dof
+from camtool.dof.paraxial import paraxial_dof
+from camtool.dof.realray import raytrace_dof
 from camtool.optics.prescription import prescription_from_mapping
-from camtool.optics.raytrace import raytrace_dof
 
 DATA = Path(__file__).resolve().parent.parent / "tests" / "data"
 RAYTRACE_BUDGET_S = 0.050

@@ -5,7 +5,7 @@ Run: ``python benchmarks/bench_presets.py [--runs 21]``
 Each figure is the median wall time of a fresh ``python -c ...`` process (what a
 shell script pays per call), measured in one run on this machine:
 
-- ``import click`` -- the DESIGN §7 start-up reference;
+- ``import click`` -- the docs/design.md §7 start-up reference;
 - ``load_db() + lens lookup`` with the shipped presets only;
 - the same with a generated lensfun import of 2,000 presets (1,000 sensors,
   1,000 lenses) in ``$XDG_DATA_HOME/camtool/lensfun.yaml``;

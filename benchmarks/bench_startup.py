@@ -1,6 +1,6 @@
 """Start-up budget: wall time of single camtool commands against Python's own imports.
 
-DESIGN §7: ``camtool dof ... --format json`` within 2× of ``python -c "import click"``,
+docs/design.md §7: ``camtool dof ... --format json`` within 2× of ``python -c "import click"``,
 and a table within 2× of ``python -c "import click, rich.console, rich.table"``.
 Each command runs ``--repeat`` times, interleaved so that machine noise hits
 every candidate alike; the figures are medians and the verdicts are ratios.

@@ -1,6 +1,6 @@
 """Throughput: 10⁶ evaluations of each closed-form model against the same formula as one numpy expression.
 
-DESIGN §7: a grid or batch of 10⁶ evaluations runs at numpy speed, within 1.5×
+docs/design.md §7: a grid or batch of 10⁶ evaluations runs at numpy speed, within 1.5×
 of the formula hand-written as one numpy expression. Both sides get the same
 inputs (focus distances from the lens, so no plane conversion is timed on one
 side only); figures are the best of ``--repeat`` runs, and the verdict is the
@@ -17,7 +17,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from camtool.dof import approx_dof, thin_dof
+from camtool.dof.closed import approx_dof, thin_dof
 
 
 def best(fn: Callable[[], object], repeat: int) -> float:

@@ -7,11 +7,11 @@ Run from the repository root:
 For every model it prints a markdown table with
 
 - the time per evaluation vectorised over 10⁶ scenes through the dispatcher
-  ``camtool.ladder.depth_of_field`` (which also computes every error
+  ``camtool.dof.ladder.depth_of_field`` (which also computes every error
   estimate) and, for the closed forms, of the model function alone; the ray
   trace runs one scene at a time, so its vectorised figure is its scalar one,
 - the time per scalar call (best of several repetitions),
-- the median and maximum error against ``raytrace`` (camtool.auto.depth_error:
+- the median and maximum error against ``raytrace`` (camtool.dof.auto.depth_error:
   the worse limit's shift in vergence relative to the depth of field) over a
   fixed grid of scenes on the shared lenses (tests/data/prescriptions), and
 - ``auto``'s selection overhead: auto against the same dispatcher call of the
@@ -29,9 +29,9 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from camtool.auto import _aberration_table, depth_error
-from camtool.errors import DomainError
-from camtool.ladder import LensData, depth_of_field
+from camtool.core.errors import DomainError
+from camtool.dof.auto import _aberration_table, depth_error
+from camtool.dof.ladder import LensData, depth_of_field
 from camtool.optics.prescription import prescription_from_mapping
 
 DATA = Path(__file__).resolve().parent.parent / "tests" / "data" / "prescriptions"
@@ -93,8 +93,8 @@ def vector_times() -> dict[str, float]:
     dg = lens("dgauss100")
     out["paraxial"] = best_time(lambda: depth_of_field("paraxial", None, n, 0.03, 500.0 + s * 4, lens=dg), repeat=3) / count  # dgauss100: f = 100 mm
 
-    from camtool.dof import approx_dof, thin_dof
-    from camtool.optics.thick import thick_dof
+    from camtool.dof.closed import approx_dof, thin_dof
+    from camtool.dof.thick import thick_dof
 
     out["approx (function)"] = best_time(lambda: approx_dof(f, n, 0.03, s), repeat=3) / count
     out["thin (function)"] = best_time(lambda: thin_dof(f, n, 0.03, s), repeat=3) / count

@@ -1,6 +1,6 @@
 """auto: honest error estimates over a fixed grid of scenes, against the exact closed forms and the ray trace.
 
-A scene counts as honest when auto's actual error (camtool.auto.depth_error:
+A scene counts as honest when auto's actual error (camtool.dof.auto.depth_error:
 the worse limit's shift in vergence relative to the depth of field in
 vergence, so far = ∞ is handled) against the most complete model the inputs
 allow is within the tolerance. Where the reference says "nothing is sharp" or
@@ -18,9 +18,9 @@ import numpy as np
 import pytest
 import yaml
 
-from camtool.auto import depth_error, estimate_effects
-from camtool.errors import DomainError
-from camtool.ladder import LensData, depth_of_field
+from camtool.core.errors import DomainError
+from camtool.dof.auto import depth_error, estimate_effects
+from camtool.dof.ladder import LensData, depth_of_field
 from camtool.optics.prescription import prescription_from_mapping
 
 DATA = Path(__file__).parent / "data" / "prescriptions"
@@ -167,7 +167,7 @@ def test_auto_over_an_array_picks_each_scene_its_own_rung() -> None:
 
 
 def test_depth_error_handles_infinity() -> None:
-    from camtool.limits import DofLimits
+    from camtool.dof.limits import DofLimits
 
     a = DofLimits(5000.0, math.inf, 0, math.inf, math.inf, 10000.0, 0.0)
     b = DofLimits(5000.0, 2e9, 0, 0, 0, 10000.0, 0.0)

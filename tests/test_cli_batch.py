@@ -6,10 +6,10 @@ import json
 import random
 
 import pytest
-
-from camtool.dof import thin_dof
-from camtool.ladder import depth_of_field
 from cli_helpers import run, run_json
+
+from camtool.dof.closed import thin_dof
+from camtool.dof.ladder import depth_of_field
 
 
 def batch(text: str, *args: str) -> tuple[int, str, str]:
@@ -30,7 +30,7 @@ def test_csv_batch_matches_single_calls_for_1000_random_scenes() -> None:
         s = rng.choice([f"{rng.uniform(0.1, 100):.3f}m", f"{rng.uniform(5, 300):.1f}ft", "inf"])
         scenes.append((f, n, s))
     # keep only reachable focus distances (at least 4f from the sensor)
-    from camtool.units import parse_length
+    from camtool.core.units import parse_length
 
     scenes = [sc for sc in scenes if parse_length(sc[2], "m") >= 4 * sc[0] * 1.0001]
     text = "focal-length,f-number,distance\n" + "".join(f"{f},{n},{s}\n" for f, n, s in scenes)

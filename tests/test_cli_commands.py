@@ -5,13 +5,13 @@ from __future__ import annotations
 import math
 
 import pytest
+from cli_helpers import run, run_json
 
 from camtool.cli import COMMANDS, cli
-from camtool.dof import hyperfocal_mm, thin_dof
-from camtool.fov import field_of_view
-from camtool.inverse import focus_for_limits
-from camtool.thinlens import focus_geometry
-from cli_helpers import run, run_json
+from camtool.dof.closed import hyperfocal_mm, thin_dof
+from camtool.dof.inverse import focus_for_limits
+from camtool.geometry.fov import field_of_view
+from camtool.geometry.thinlens import focus_geometry
 
 
 def test_hyperfocal_json_both_planes() -> None:
@@ -170,12 +170,12 @@ def test_fov_breathing_with_a_prescription_lens() -> None:
 
 
 def test_hyperfocal_with_lens_data_is_thick_and_thin_without() -> None:
-    from camtool.optics.thick import thick_dof
+    from camtool.dof.thick import thick_dof
 
     (row,) = run_json("hyperfocal", "-f", "100", "-N", "8", "--coc", "0.03", "--pupil-mag", "0.5", "--hiatus", "10")
     assert row["model"] == "thick"
     # focused at the reported hyperfocal distance the thick model's far limit is infinite, and its near limit
-    # is the one reported (camtool.optics.thick, validated against the reference paraxial rows)
+    # is the one reported (camtool.dof.thick, validated against the reference paraxial rows)
     at_h = thick_dof(100.0, 8.0, 0.03, row["hyperfocal_mm"], pupil_magnification=0.5, hiatus_mm=10.0)
     assert at_h.far_mm == math.inf
     assert row["near_mm"] == pytest.approx(at_h.near_mm, rel=1e-12)

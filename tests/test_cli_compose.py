@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 import pytest
-
-from camtool.compose import composition, magnification_for_fill, plane_view
-from camtool.ladder import depth_of_field
 from cli_helpers import run, run_json
+
+from camtool.dof.ladder import depth_of_field
+from camtool.geometry.compose import composition, magnification_for_fill, plane_view
 
 FF_COC_D1500 = math.hypot(36, 24) / 1500  # the default CoC rule on the default sensor (36 × 24 mm)
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import math
 
 import pytest
-
-from camtool.dof import approx_dof, thin_dof
 from cli_helpers import run, run_json
+
+from camtool.dof.closed import approx_dof, thin_dof
 
 FF_COC_D1500 = math.hypot(36, 24) / 1500  # the default CoC rule on the default sensor
 

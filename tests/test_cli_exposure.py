@@ -3,15 +3,19 @@
 from __future__ import annotations
 
 import pytest
-
-from camtool import exposure, metering
-from camtool.reciprocity import corrected_time_s
 from cli_helpers import run, run_json
+
+from camtool.exposure import metering
+from camtool.exposure.equivalents import equivalent_exposures
+from camtool.exposure.ev import exposure_value
+from camtool.exposure.nd import parse_nd
+from camtool.exposure.plan import plan_exposure
+from camtool.exposure.reciprocity import corrected_time_s
 
 
 def test_settings_give_ev_and_ev100() -> None:
     (row,) = run_json("exposure", "-N", "16", "-t", "1/125")
-    assert row["ev"] == pytest.approx(exposure.exposure_value(16.0, 1 / 125), rel=1e-15)  # 14.97
+    assert row["ev"] == pytest.approx(exposure_value(16.0, 1 / 125), rel=1e-15)  # 14.97
     assert row["ev100"] == row["ev"]  # ISO 100 by default
     assert (row["solved"], row["iso"]) == ("ev100", 100.0)
     (row,) = run_json("exposure", "-N", "4", "-t", "1/64", "--iso", "200")
@@ -42,8 +46,8 @@ def test_solve_for_the_missing_setting(args: list[str], solved: str, expected: f
 def test_nd_bellows_and_reciprocity_match_the_library() -> None:
     (row,) = run_json("exposure", "--ev100", "12", "-N", "8", "--nd", "ND1000", "--nd", "0.3",
                       "--magnification", "1", "--film", "hp5")
-    loss = exposure.parse_nd("ND1000").stops + exposure.parse_nd("0.3").stops
-    plan = exposure.plan_exposure(12.0, 8.0, None, 100.0, loss, 1.0, 1.0, 1.31)
+    loss = parse_nd("ND1000").stops + parse_nd("0.3").stops
+    plan = plan_exposure(12.0, 8.0, None, 100.0, loss, 1.0, 1.0, 1.31)
     assert row["nd_stops"] == pytest.approx(loss, rel=1e-15)
     assert row["bellows_stops"] == 2.0
     assert row["shutter_s"] == pytest.approx(plan.shutter_s, rel=1e-15)
@@ -59,7 +63,7 @@ def test_meter_readings() -> None:
 
 def test_equivalents_json() -> None:
     rows = run_json("exposure", "--ev100", "15", "-N", "16", "--equivalents", "--step", "full")
-    table = exposure.equivalent_exposures(15.0, step="full")
+    table = equivalent_exposures(15.0, step="full")
     assert [r["f_number_nominal"] for r in rows] == table.f_number_nominal
     assert [r["shutter_nominal_s"] for r in rows] == table.shutter_nominal_s
     assert all(abs(r["ev"] - 15.0) <= 0.5 for r in rows)

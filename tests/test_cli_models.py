@@ -5,9 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from cli_helpers import run, run_json
 
 from camtool.cli.lensdata import lens_data
-from cli_helpers import run, run_json
 
 DGAUSS = str(Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml")
 

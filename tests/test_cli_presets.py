@@ -7,9 +7,9 @@ import math
 from pathlib import Path
 
 import pytest
-
-from camtool.dof import thin_dof
 from cli_helpers import run, run_json
+
+from camtool.dof.closed import thin_dof
 
 DATA = Path(__file__).parent / "data"
 

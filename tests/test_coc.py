@@ -6,8 +6,8 @@ import math
 
 import pytest
 
-from camtool.coc import DEFAULT_RULE, coc_from_rule
-from camtool.units import UnitError
+from camtool.core.units import UnitError
+from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
 
 FULL_FRAME_DIAGONAL = math.hypot(36.0, 24.0)  # 43.27 mm
 

@@ -9,8 +9,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from camtool import thinlens
-from camtool.compose import (
+from camtool.core.errors import DomainError
+from camtool.geometry import thinlens
+from camtool.geometry.compose import (
     composition,
     defocus_blur_mm,
     lens_distance_mm,
@@ -19,7 +20,6 @@ from camtool.compose import (
     plane_view,
     sensor_distance_mm,
 )
-from camtool.errors import DomainError
 
 FOCAL_LENGTHS = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]  # the command's default list (issue 4)
 FULL_FRAME = (36.0, 24.0)  # 135 format, mm (ISO 1007 / the shared sensors reference)

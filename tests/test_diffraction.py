@@ -6,10 +6,15 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from camtool.diffraction import NothingSharp, airy_diameter_mm, largest_sharp_f_number, usable_coc_mm
-from camtool.dof import thin_dof
-from camtool.ladder import LensData, depth_of_field
-from camtool.thinlens import focus_geometry
+from camtool.dof.closed import thin_dof
+from camtool.dof.diffraction import (
+    NothingSharp,
+    airy_diameter_mm,
+    largest_sharp_f_number,
+    usable_coc_mm,
+)
+from camtool.dof.ladder import LensData, depth_of_field
+from camtool.geometry.thinlens import focus_geometry
 
 
 def test_airy_diameter() -> None:

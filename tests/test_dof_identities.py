@@ -8,8 +8,13 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from camtool.dof import hyperfocal_mm, thin_dof
-from camtool.thinlens import blur_diameter_mm, image_distance_mm, lens_distances, sensor_distance_mm
+from camtool.dof.closed import hyperfocal_mm, thin_dof
+from camtool.geometry.thinlens import (
+    blur_diameter_mm,
+    image_distance_mm,
+    lens_distances,
+    sensor_distance_mm,
+)
 
 EPS = 2.0**-52
 INF = math.inf

@@ -9,10 +9,14 @@ from typing import Any
 import pytest
 import yaml
 
-from camtool.dof import approx_dof, hyperfocal_mm, thin_dof
-from camtool.fov import angle_of_view_deg, field_size_mm, focal_length_for_angle_mm
-from camtool.inverse import focus_for_limits
-from camtool.thinlens import magnification
+from camtool.dof.closed import approx_dof, hyperfocal_mm, thin_dof
+from camtool.dof.inverse import focus_for_limits
+from camtool.geometry.fov import (
+    angle_of_view_deg,
+    field_size_mm,
+    focal_length_for_angle_mm,
+)
+from camtool.geometry.thinlens import magnification
 
 VECTORS = yaml.safe_load((Path(__file__).parent / "data" / "peer-vectors-dof.yaml").read_text(encoding="utf-8"))
 TESTED = [v for v in VECTORS if "untested" not in v]

@@ -1,4 +1,4 @@
-"""Numerical stability of ``approx`` and ``thin`` over the whole domain (design §6).
+"""Numerical stability of ``approx`` and ``thin`` over the whole domain (docs/design.md §6).
 
 The domain is what a phone, a microscope, a pinhole or a telescope reaches: f 1–5000 mm,
 N 0.7–1024, c 0.0005–1 mm, focus from just beyond the closest focus to 1e15 mm and inf, from
@@ -30,8 +30,8 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from camtool.dof import approx_dof, hyperfocal_mm, thin_dof
-from camtool.limits import DofLimits
+from camtool.dof.closed import approx_dof, hyperfocal_mm, thin_dof
+from camtool.dof.limits import DofLimits
 
 EPS = 2.0**-52
 INF = math.inf

@@ -9,20 +9,30 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from camtool import exposure, metering, reciprocity
-from camtool.errors import DomainError
-from camtool.exposure import (
-    bellows_factor,
-    bellows_stops,
-    equivalent_exposures,
+from camtool.core.errors import DomainError
+from camtool.core.units import parse_time
+from camtool.exposure import metering, reciprocity
+from camtool.exposure.bellows import bellows_factor, bellows_stops
+from camtool.exposure.equivalents import equivalent_exposures, shift_time_s
+from camtool.exposure.ev import ev100 as ev100_of_settings
+from camtool.exposure.ev import (
+    ev100_from_ev,
+    ev_from_ev100,
     exposure_value,
-    light_level,
-    parse_nd,
+    shutter_for_ev100,
     solve_exposure,
 )
-from camtool.stops import snap_f_number, snap_iso, snap_shutter_s
-from camtool.timefmt import format_time
-from camtool.units import parse_time
+from camtool.exposure.light import LIGHT_LEVELS, light_level
+from camtool.exposure.nd import (
+    nd_from_density,
+    nd_from_factor,
+    nd_from_stops,
+    parse_nd,
+    stack_nd,
+)
+from camtool.exposure.plan import plan_exposure
+from camtool.exposure.stops import snap_f_number, snap_iso, snap_shutter_s
+from camtool.exposure.timefmt import format_time
 
 f_numbers = st.floats(0.7, 1024.0)
 times = st.floats(1 / 64000, 1e6)
@@ -48,8 +58,8 @@ def test_f16_at_1_125_is_ev_14_97() -> None:
 )
 def test_ev_and_ev100_conventions(f_number: float, shutter_s: float, iso: float, ev: float, ev100: float) -> None:
     assert exposure_value(f_number, shutter_s) == ev
-    assert exposure.ev100(f_number, shutter_s, iso) == ev100
-    assert exposure.ev_from_ev100(ev100, iso) == ev
+    assert ev100_of_settings(f_number, shutter_s, iso) == ev100
+    assert ev_from_ev100(ev100, iso) == ev
 
 
 def test_scalar_and_array_agree() -> None:
@@ -69,7 +79,7 @@ def test_solve_round_trips(ev100: float, f_number: float, iso: float) -> None:
         e = solve_exposure(ev100, f_number=f_number, iso=iso)
     except DomainError:
         return  # the needed time lies outside 1/64000 s .. 10⁶ s
-    assert exposure.ev100(e.f_number, e.shutter_s, e.iso) == pytest.approx(ev100, abs=1e-9)
+    assert ev100_of_settings(e.f_number, e.shutter_s, e.iso) == pytest.approx(ev100, abs=1e-9)
     assert solve_exposure(ev100, shutter_s=e.shutter_s, iso=iso).f_number == pytest.approx(f_number, rel=1e-12)
     assert solve_exposure(ev100, f_number=f_number, shutter_s=e.shutter_s).iso == pytest.approx(iso, rel=1e-12)
 
@@ -89,11 +99,11 @@ def test_solve_needs_exactly_one_missing() -> None:
         (lambda: exposure_value(0.5, 1.0), "f_number"),  # below f/0.7
         (lambda: exposure_value(2048.0, 1.0), "f_number"),  # above f/1024
         (lambda: exposure_value(float("nan"), 1.0), "f_number"),
-        (lambda: exposure.ev100(8.0, 1.0, 0.5), "iso"),  # below ISO 1
-        (lambda: exposure.ev100(8.0, 1.0, 2e7), "iso"),  # above ISO 10⁷
-        (lambda: exposure.shutter_for_ev100(26.0, 8.0, 100.0), "ev100"),  # above EV 25
-        (lambda: exposure.shutter_for_ev100(-11.0, 8.0, 100.0), "ev100"),  # below EV −10
-        (lambda: exposure.shutter_for_ev100(25.0, 0.7, 100.0), "shutter_s"),  # needs 1/68000 s
+        (lambda: ev100_of_settings(8.0, 1.0, 0.5), "iso"),  # below ISO 1
+        (lambda: ev100_of_settings(8.0, 1.0, 2e7), "iso"),  # above ISO 10⁷
+        (lambda: shutter_for_ev100(26.0, 8.0, 100.0), "ev100"),  # above EV 25
+        (lambda: shutter_for_ev100(-11.0, 8.0, 100.0), "ev100"),  # below EV −10
+        (lambda: shutter_for_ev100(25.0, 0.7, 100.0), "shutter_s"),  # needs 1/68000 s
         (lambda: equivalent_exposures(30.0), "ev"),
         (lambda: exposure_value(np.array([2.0, 4000.0]), 1.0), "f_number"),
     ],
@@ -109,7 +119,7 @@ def test_domain_error_message() -> None:
         exposure_value(8.0, 2e6)
     assert str(info.value) == "shutter_s=2000000 is outside the valid range: 1/64000 s to 1000000 s"
     with pytest.raises(DomainError) as info:
-        exposure.shutter_for_ev100(25.0, 0.7, 100.0)
+        shutter_for_ev100(25.0, 0.7, 100.0)
     assert "the shutter time this light level needs" in str(info.value)
 
 
@@ -141,10 +151,10 @@ def test_sunny_16_family(name: str, f_number: float) -> None:
 
 
 def test_light_levels_cite_their_source() -> None:
-    for name, level in exposure.LIGHT_LEVELS.items():
+    for name, level in LIGHT_LEVELS.items():
         assert level.source and level.description, name
         assert -10 <= level.ev100 <= 25
-    assert light_level("Heavy Overcast") is exposure.LIGHT_LEVELS["heavy-overcast"]
+    assert light_level("Heavy Overcast") is LIGHT_LEVELS["heavy-overcast"]
 
 
 # --- stops, labels, time formatting -----------------------------------------
@@ -276,14 +286,14 @@ def test_nd_bad_spellings(text: str) -> None:
 
 
 def test_nd_descriptions_agree() -> None:
-    f = exposure.nd_from_factor(1000.0)
+    f = nd_from_factor(1000.0)
     assert f.density == pytest.approx(3.0)
-    assert exposure.nd_from_density(3.0).factor == pytest.approx(1000.0)
-    assert exposure.nd_from_stops(10.0).factor == 1024.0
-    stacked = exposure.stack_nd([parse_nd("ND8"), parse_nd("ND64")])
+    assert nd_from_density(3.0).factor == pytest.approx(1000.0)
+    assert nd_from_stops(10.0).factor == 1024.0
+    stacked = stack_nd([parse_nd("ND8"), parse_nd("ND64")])
     assert stacked.stops == pytest.approx(9.0)
     assert stacked.factor == pytest.approx(512.0)
-    assert exposure.shift_time_s(1 / 125, parse_nd("ND1000").stops) == pytest.approx(8.0)
+    assert shift_time_s(1 / 125, parse_nd("ND1000").stops) == pytest.approx(8.0)
 
 
 # --- bellows factor ---------------------------------------------------------
@@ -358,7 +368,7 @@ def test_meter_table_values() -> None:
 def test_luminance_round_trip(ev100: float, iso: float, k: float) -> None:
     # N²/t = L·S/K: light level → luminance → EV at ISO S → light level and luminance again.
     luminance = metering.luminance_from_ev100(ev100, k)
-    back = exposure.ev100_from_ev(metering.ev_from_luminance(luminance, iso, k), iso)
+    back = ev100_from_ev(metering.ev_from_luminance(luminance, iso, k), iso)
     assert back == pytest.approx(ev100, abs=1e-9)
     assert metering.luminance_from_ev100(min(max(back, -10.0), 25.0), k) == pytest.approx(luminance, rel=1e-12)
 
@@ -367,7 +377,7 @@ def test_luminance_round_trip(ev100: float, iso: float, k: float) -> None:
 def test_illuminance_round_trip(ev100: float, iso: float, c: float) -> None:
     # N²/t = E·S/C, the same way round.
     illuminance = metering.illuminance_from_ev100(ev100, c)
-    back = exposure.ev100_from_ev(metering.ev_from_illuminance(illuminance, iso, c), iso)
+    back = ev100_from_ev(metering.ev_from_illuminance(illuminance, iso, c), iso)
     assert back == pytest.approx(ev100, abs=1e-9)
     assert metering.illuminance_from_ev100(min(max(back, -10.0), 25.0), c) == pytest.approx(illuminance, rel=1e-12)
 
@@ -397,7 +407,7 @@ def test_meter_domain() -> None:
 
 def test_plan_from_settings_adds_the_light_lost_at_the_lens() -> None:
     # f/8 at 1/125 s through a 3-stop ND at 1:1 (2 stops): the scene must be 5 stops brighter.
-    p = exposure.plan_exposure(f_number=8.0, shutter_s=1 / 125, nd_stops=3.0, magnification=1.0)
+    p = plan_exposure(f_number=8.0, shutter_s=1 / 125, nd_stops=3.0, magnification=1.0)
     assert p.solved == "ev100"
     assert p.ev100 == pytest.approx(exposure_value(8.0, 1 / 125) + 5.0)
     assert p.iso == 100.0
@@ -405,7 +415,7 @@ def test_plan_from_settings_adds_the_light_lost_at_the_lens() -> None:
 
 def test_plan_from_light_solves_with_filters_and_film() -> None:
     # EV100 12 at f/8, ISO 100: 1/64 s; 10 stops of ND make it 16 s; HP5 Plus then needs 16^1.31 s.
-    p = exposure.plan_exposure(12.0, f_number=8.0, nd_stops=10.0, reciprocity_p=1.31)
+    p = plan_exposure(12.0, f_number=8.0, nd_stops=10.0, reciprocity_p=1.31)
     assert p.shutter_s == pytest.approx(16.0, rel=1e-12)
     assert p.corrected_shutter_s == pytest.approx(16.0**1.31, rel=1e-12)
     assert p.reciprocity_stops == pytest.approx(0.31 * 4.0, rel=1e-12)
@@ -413,11 +423,11 @@ def test_plan_from_light_solves_with_filters_and_film() -> None:
 
 
 def test_plan_on_arrays() -> None:
-    p = exposure.plan_exposure(np.array([10.0, 12.0]), f_number=4.0, iso=np.array([100.0, 400.0]))
+    p = plan_exposure(np.array([10.0, 12.0]), f_number=4.0, iso=np.array([100.0, 400.0]))
     np.testing.assert_allclose(p.shutter_s, [1 / 64, 1 / 1024])
     np.testing.assert_array_equal(p.shutter_nominal_s, [1 / 60, 1 / 1000])
 
 
 def test_plan_needs_light_or_both_settings() -> None:
     with pytest.raises(DomainError, match="both needed"):
-        exposure.plan_exposure(f_number=8.0)
+        plan_exposure(f_number=8.0)

@@ -6,9 +6,14 @@ import math
 
 import pytest
 
-from camtool.errors import DomainError
-from camtool.fov import angle_of_view_deg, field_of_view, field_size_mm, focal_length_for_angle_mm
-from camtool.thinlens import magnification
+from camtool.core.errors import DomainError
+from camtool.geometry.fov import (
+    angle_of_view_deg,
+    field_of_view,
+    field_size_mm,
+    focal_length_for_angle_mm,
+)
+from camtool.geometry.thinlens import magnification
 
 
 @pytest.mark.parametrize(

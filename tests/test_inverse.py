@@ -8,8 +8,8 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from camtool.dof import hyperfocal_mm, thin_dof
-from camtool.inverse import focus_for_limits
+from camtool.dof.closed import hyperfocal_mm, thin_dof
+from camtool.dof.inverse import focus_for_limits
 
 EPS = 2.0**-52
 INF = math.inf

@@ -10,9 +10,15 @@ import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from camtool.dof import thin_dof
-from camtool.errors import DomainError
-from camtool.ladder import LensData, ModelUnavailable, available_models, compare_models, depth_of_field
+from camtool.core.errors import DomainError
+from camtool.dof.closed import thin_dof
+from camtool.dof.ladder import (
+    LensData,
+    ModelUnavailable,
+    available_models,
+    compare_models,
+    depth_of_field,
+)
 from camtool.optics.prescription import prescription_from_mapping
 
 PATH = Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml"

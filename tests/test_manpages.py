@@ -5,7 +5,7 @@ from __future__ import annotations
 import subprocess
 from pathlib import Path
 
-from camtool.manpage import pages
+from camtool.cli.manpage import pages
 
 MAN_DIR = Path(__file__).resolve().parent.parent / "man" / "man1"
 
@@ -13,9 +13,9 @@ MAN_DIR = Path(__file__).resolve().parent.parent / "man" / "man1"
 def test_no_drift() -> None:
     generated = pages()
     committed = {p.name: p.read_text(encoding="utf-8") for p in MAN_DIR.glob("*.1")}
-    assert sorted(committed) == sorted(generated), "run: python -m camtool.manpage man/man1"
+    assert sorted(committed) == sorted(generated), "run: python -m camtool.cli.manpage man/man1"
     for name, text in generated.items():
-        assert committed[name] == text, f"{name} drifted; run: python -m camtool.manpage man/man1"
+        assert committed[name] == text, f"{name} drifted; run: python -m camtool.cli.manpage man/man1"
 
 
 def test_every_command_has_a_page_with_examples_and_exit_status() -> None:

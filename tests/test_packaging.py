@@ -48,9 +48,8 @@ def test_installed_wheel_finds_its_lens_db(wheel: Path, tmp_path: Path) -> None:
 
 
 def test_source_tree_finds_repository_lens_db() -> None:
-    from camtool.presets.paths import shipped_dir
-
     import camtool
+    from camtool.presets.paths import shipped_dir
 
     if Path(camtool.__file__).resolve().parent.parent == ROOT:  # editable install or run from the checkout
         assert Path(shipped_dir()).resolve() == ROOT / "lens_db"

@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from camtool.optics.paraxial import first_order, paraxial_dof, paraxial_trace
+from camtool.dof.paraxial import paraxial_dof
+from camtool.optics.paraxial import first_order, paraxial_trace
 from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
 
 DATA = Path(__file__).parent / "data"

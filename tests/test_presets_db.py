@@ -8,10 +8,18 @@ from pathlib import Path
 import pytest
 import yaml
 
-from camtool.presets import Camera, Lens, PresetFileError, PresetNotFound, Sensor, load_db, validate_file
-from camtool.presets import paths
+from camtool.presets import (
+    Camera,
+    Lens,
+    PresetFileError,
+    PresetNotFound,
+    Sensor,
+    load_db,
+    paths,
+    validate_file,
+)
 
-REFERENCE = Path(__file__).resolve().parents[2] / "shared" / "reference"
+REFERENCE = Path(__file__).resolve().parent / "data"
 DATA = Path(__file__).resolve().parent / "data" / "presets"
 
 
@@ -67,7 +75,7 @@ def test_camera_makers_are_covered():
 
 
 def test_every_reference_sensor_is_shipped_with_its_size():
-    reference = yaml.safe_load((REFERENCE / "sensors.yaml").read_text(encoding="utf-8"))
+    reference = yaml.safe_load((REFERENCE / "sensors-reference.yaml").read_text(encoding="utf-8"))
     db = load_db()
     for entry in reference:
         sensor = db.sensor(entry["aliases"][0])
@@ -172,7 +180,7 @@ def test_scene_resolves_equipment_and_units():
     assert scene.camera.id == "sony-a7-iv" and scene.sensor is scene.camera.sensor
     assert scene.lens.id == "sony-fe-85mm-f1.8"
     assert (scene.f_number, scene.distance_mm, scene.subject_size_mm, scene.background_mm) == (1.8, 2000, 600, 10000)
-    # A bare number is metres for distance and background (DESIGN §2).
+    # A bare number is metres for distance and background (docs/design.md §2).
     phone = load_db().scene("phone-snapshot")
     assert (phone.distance_mm, phone.background_mm) == (1500, 5000)
 

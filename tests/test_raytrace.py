@@ -16,16 +16,12 @@ import numpy as np
 import pytest
 import yaml
 
-from camtool.errors import DomainError
-from camtool.optics.paraxial import first_order, paraxial_dof
+from camtool.core.errors import DomainError
+from camtool.dof.paraxial import paraxial_dof
+from camtool.dof.realray import NoDepthOfField, raytrace_dof, real_focus
+from camtool.optics.paraxial import first_order
 from camtool.optics.prescription import prescription_from_mapping
-from camtool.optics.raytrace import (
-    NoDepthOfField,
-    RayTraceError,
-    raytrace_dof,
-    real_focus,
-    real_tracer,
-)
+from camtool.optics.tracer import RayTraceError, real_tracer
 
 DATA = Path(__file__).parent / "data"
 LENSES = {
@@ -98,7 +94,7 @@ def test_far_limit_at_infinity_and_hyperfocal():
     # dgauss100 at f/22 (c = 0.03): focus beyond the hyperfocal distance keeps infinity sharp
     lens = LENSES["dgauss100"]
     hyper = raytrace_dof(lens, 22.0, 0.03, 5000.0).hyperfocal_mm
-    # paraxial estimate f²/(Nc) + 2f + Nc + δ (camtool design §4); real focus shift is small
+    # paraxial estimate f²/(Nc) + 2f + Nc + δ (docs/design.md §4); real focus shift is small
     fo = first_order(lens)
     assert hyper == pytest.approx(fo.efl_mm**2 / 0.66 + 2 * fo.efl_mm + 0.66 + fo.hiatus_mm, rel=0.02)
     beyond = raytrace_dof(lens, 22.0, 0.03, hyper * 1.000001)

@@ -11,11 +11,16 @@ from typing import Any, Callable
 import numpy as np
 import pytest
 
-from camtool.dof import approx_dof, hyperfocal_mm, thin_dof
-from camtool.errors import DomainError
-from camtool.fov import angle_of_view_deg, field_of_view, field_size_mm, focal_length_for_angle_mm
-from camtool.inverse import focus_for_limits
-from camtool.thinlens import (
+from camtool.core.errors import DomainError
+from camtool.dof.closed import approx_dof, hyperfocal_mm, thin_dof
+from camtool.dof.inverse import focus_for_limits
+from camtool.geometry.fov import (
+    angle_of_view_deg,
+    field_of_view,
+    field_size_mm,
+    focal_length_for_angle_mm,
+)
+from camtool.geometry.thinlens import (
     blur_diameter_mm,
     closest_focus_mm,
     extension_mm,
@@ -103,13 +108,13 @@ def test_integer_scalars_give_floats() -> None:
 @pytest.mark.parametrize(
     "call",
     [
-        "camtool.dof.thin_dof(50., 8., .03, 3000.)",
-        "camtool.dof.thin_dof(50., 8., .03, float('inf'), distance_from='lens')",
-        "camtool.dof.approx_dof(50., 8., .03, 3000.)",
-        "camtool.dof.hyperfocal_mm(50., 8., .03)",
-        "camtool.fov.field_of_view(36., 24., 50.)",
-        "camtool.inverse.focus_for_limits(50., .03, 2000., 4000.)",
-        "camtool.thinlens.lens_distances(50., 3000.)",
+        "camtool.dof.closed.thin_dof(50., 8., .03, 3000.)",
+        "camtool.dof.closed.thin_dof(50., 8., .03, float('inf'), distance_from='lens')",
+        "camtool.dof.closed.approx_dof(50., 8., .03, 3000.)",
+        "camtool.dof.closed.hyperfocal_mm(50., 8., .03)",
+        "camtool.geometry.fov.field_of_view(36., 24., 50.)",
+        "camtool.dof.inverse.focus_for_limits(50., .03, 2000., 4000.)",
+        "camtool.geometry.thinlens.lens_distances(50., 3000.)",
     ],
 )
 def test_scalar_calls_do_not_import_numpy(call: str) -> None:

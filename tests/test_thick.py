@@ -1,7 +1,7 @@
 """The ``thick`` model: reference rows, the thin-lens limit, stability and scalar/array agreement.
 
 References: tests/data/oracle-dof.csv `paraxial` rows (rayoptics 0.9.8 / optiland 0.6.3,
-see tests/data/README.md); the exact thin-lens formulas of camtool design §4; mpmath at
+see tests/data/README.md); the exact thin-lens formulas of docs/design.md §4; mpmath at
 50 digits for the same closed form.
 """
 
@@ -17,8 +17,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from camtool.errors import DomainError
-from camtool.optics.thick import thick_dof, working_f_number
+from camtool.core.errors import DomainError
+from camtool.dof.thick import thick_dof, working_f_number
 
 DATA = Path(__file__).parent / "data"
 
@@ -43,7 +43,7 @@ def test_thick_reproduces_paraxial_rows_from_the_entrance_pupil(row):
 
 
 def thin_near_far(f, n, c, s):
-    """Exact thin lens, distances from the lens (camtool design §4, the seed lecture)."""
+    """Exact thin lens, distances from the lens (docs/design.md §4, the seed lecture)."""
     near = s * f * f / (f * f + n * c * (s - f))
     denominator = f * f - n * c * (s - f)
     return near, (math.inf if denominator <= 0 else s * f * f / denominator)
@@ -62,7 +62,7 @@ THIN_CASES = [  # (f, N, c, u from the lens)
 
 @pytest.mark.parametrize("f, n, c, u", THIN_CASES)
 def test_unit_pupil_and_no_hiatus_is_the_exact_thin_lens(f, n, c, u):
-    # camtool design §4: near = s f²/(f² + Nc(s − f)), far = s f²/(f² − Nc(s − f)); D = u + v
+    # docs/design.md §4: near = s f²/(f² + Nc(s − f)), far = s f²/(f² − Nc(s − f)); D = u + v
     near, far = thin_near_far(f, n, c, u)
     lens = thick_dof(f, n, c, u, distance_from="lens")
     assert lens.near_mm == pytest.approx(near, rel=4e-15)
@@ -75,7 +75,7 @@ def test_unit_pupil_and_no_hiatus_is_the_exact_thin_lens(f, n, c, u):
 
 
 def test_hyperfocal_boundary_is_exact():
-    # camtool design §6: far = ∞ exactly when focus ≥ hyperfocal, finite just below
+    # docs/design.md §6: far = ∞ exactly when focus ≥ hyperfocal, finite just below
     for plane in ("sensor", "lens", "entrance_pupil"):
         h = thick_dof(50.0, 8.0, 0.03, 3000.0, pupil_magnification=0.8, hiatus_mm=5.0, distance_from=plane).hyperfocal_mm
         assert math.isinf(thick_dof(50.0, 8.0, 0.03, h, 0.8, 5.0, plane).far_mm)
@@ -152,7 +152,7 @@ def test_array_mixes_infinite_and_beyond_hyperfocal_rows():
     assert np.all(np.isfinite(result.near_mm)) and np.isinf(result.front_mm[2])
 
 
-# -- properties over the whole domain (camtool design §6) -----------------------------------
+# -- properties over the whole domain (docs/design.md §6) -----------------------------------
 
 focal = st.floats(1.0, 5000.0)
 f_numbers = st.floats(0.7, 1024.0)
@@ -233,7 +233,7 @@ def condition(scene, which):
 @settings(max_examples=200, deadline=None)
 @given(scenes())
 def test_float64_agrees_with_mpmath_within_the_condition_number(scene):
-    # camtool design §6: relative error ≤ small multiple of (1 + condition number) × eps
+    # docs/design.md §6: relative error ≤ small multiple of (1 + condition number) × eps
     f, n, c, p, hiatus, distance = scene
     if math.isinf(distance):
         return

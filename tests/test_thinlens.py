@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from camtool.thinlens import (
+from camtool.geometry.thinlens import (
     blur_diameter_mm,
     closest_focus_mm,
     extension_mm,
@@ -66,7 +66,7 @@ def test_extension(f: float, z_o: float, extension: float) -> None:
 
 
 def test_closest_focus_is_one_to_one() -> None:
-    # u = v = 2f minimises u + v = 4f (design §4)
+    # u = v = 2f minimises u + v = 4f (docs/design.md §4)
     assert closest_focus_mm(50.0) == 200.0
     assert closest_focus_mm(50.0, distance_from="lens") == 100.0
     assert closest_focus_mm(50.0, hiatus_mm=7.5) == 207.5

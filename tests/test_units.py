@@ -1,4 +1,4 @@
-"""Lengths, f-numbers and times as people type them (design §2), and the exact f-number series."""
+"""Lengths, f-numbers and times as people type them (docs/design.md §2), and the exact f-number series."""
 
 from __future__ import annotations
 
@@ -6,7 +6,13 @@ import math
 
 import pytest
 
-from camtool.units import UnitError, exact_f_number, parse_f_number, parse_length, parse_time
+from camtool.core.units import (
+    UnitError,
+    exact_f_number,
+    parse_f_number,
+    parse_length,
+    parse_time,
+)
 
 
 @pytest.mark.parametrize(
@@ -126,7 +132,7 @@ def test_exact_f_number(nominal: float, expected: float) -> None:
 
 @pytest.mark.parametrize(
     ("nominal", "rounded"),
-    [(5.6, 5.657), (22, 22.627), (1.4, 1.414), (3.2, 3.175), (5, 5.040)],  # design §2 and the peer vectors
+    [(5.6, 5.657), (22, 22.627), (1.4, 1.414), (3.2, 3.175), (5, 5.040)],  # docs/design.md §2 and the peer vectors
 )
 def test_exact_f_number_published_values(nominal: float, rounded: float) -> None:
     assert round(exact_f_number(nominal), 3) == rounded

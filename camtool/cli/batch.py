@@ -27,8 +27,8 @@ from typing import IO, Any
 
 import click
 
-from camtool.cli.command import ZIP, Output, check_fields, field_line
 from camtool.cli.params import _ListType
+from camtool.cli.rows import ZIP, Output, check_fields, field_line
 from camtool.render.serial import plain
 
 CHUNK = 20_000

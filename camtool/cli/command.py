@@ -17,25 +17,14 @@ from __future__ import annotations
 import functools
 import sys
 from collections.abc import Callable, Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 import click
 
+from camtool.cli.grid import combine
 from camtool.cli.options import preset_completion, stack
-from camtool.grid import combine
-from camtool.render.columns import Column
+from camtool.cli.rows import ZIP, Output, check_fields, field_line
 from camtool.render.output import FORMATS, write_rows
-
-ZIP = "camtool.zip"
-
-
-class Output(NamedTuple):
-    """What a command computed: rows of raw values, table columns, JSON/CSV keys, table footer."""
-
-    rows: list[dict[str, Any]]
-    columns: Sequence[Column]
-    keys: Sequence[str]
-    footer: str = ""
 
 
 def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
@@ -126,23 +115,6 @@ def camtool_command(
         return command
 
     return decorate
-
-
-def check_fields(fields: Sequence[str], keys: Sequence[str]) -> None:
-    """A usage error unless every ``--field`` names a key of this command's output."""
-    unknown = [f for f in fields if f not in keys]
-    if unknown:
-        raise click.BadParameter(f"{unknown[0]!r} is not a key of this output; valid: {', '.join(keys)}",
-                                 param_hint="'--field'")
-
-
-def field_line(row: dict[str, Any], fields: Sequence[str]) -> str:
-    """One line of ``--field`` output: the values, tab-separated, infinity as ``inf``."""
-    values = []
-    for key in fields:
-        value = row.get(key)
-        values.append("" if value is None else repr(value) if isinstance(value, float) else str(value))
-    return "\t".join(values)
 
 
 def emit(out: Output, fmt: str, units: str, fields: Sequence[str] = ()) -> None:

@@ -7,9 +7,9 @@ from typing import Any
 
 import click
 
+from camtool.cli.grid import column
 from camtool.cli.params import flatten
-from camtool.grid import column
-from camtool.units import exact_f_number
+from camtool.core.units import exact_f_number
 
 
 def required(ctx: click.Context, values: Sequence[Any], option: str) -> list[Any]:

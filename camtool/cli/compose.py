@@ -11,10 +11,19 @@ import click
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
-from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, param_named, sensor_options, show_length)
+from camtool.cli.options import (
+    DISTANCE_M,
+    aperture_options,
+    coc_options,
+    distance_plane_option,
+    focal_option,
+    library_errors,
+    param_named,
+    sensor_options,
+    show_length,
+)
 from camtool.cli.params import LengthType, NumberType, flatten
-from camtool.errors import DomainError
+from camtool.core.errors import DomainError
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, Column
 
 DEFAULT_FOCAL_LENGTHS_MM = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]
@@ -99,8 +108,8 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
       camtool compose --subject-size 1.8m --fill 0.8
       camtool compose --subject-size 1.8m --fill 0.8 -N 2.8 --background 20m -f 35,85,200
     """
-    from camtool.compose import composition, magnification_for_fill, plane_view
-    from camtool.ladder import depth_of_field
+    from camtool.dof.ladder import depth_of_field
+    from camtool.geometry.compose import composition, magnification_for_fill, plane_view
 
     focal = flatten(focal_length) or DEFAULT_FOCAL_LENGTHS_MM
     apertures = f_numbers(f_number, exact_stops)

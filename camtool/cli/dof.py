@@ -5,13 +5,24 @@ from __future__ import annotations
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
-
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.lensdata import ladder_errors, lens_data, model_options
-from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, sensor_options)
-from camtool.ladder import CHOICES, compare_models, depth_of_field, prescription_focal_length
+from camtool.cli.options import (
+    DISTANCE_M,
+    aperture_options,
+    coc_options,
+    distance_plane_option,
+    focal_option,
+    library_errors,
+    sensor_options,
+)
+from camtool.dof.ladder import (
+    CHOICES,
+    compare_models,
+    depth_of_field,
+    prescription_focal_length,
+)
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",

@@ -14,8 +14,8 @@ import click
 
 from camtool.cli.options import param_named
 from camtool.cli.params import flatten
-from camtool.coc import DEFAULT_RULE, coc_from_rule
-from camtool.units import UnitError
+from camtool.core.units import UnitError
+from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 _INLINE = re.compile(r"^\s*(\d+(?:\.\d*)?)\s*(?:mm)?\s*[x×X*]\s*(\d+(?:\.\d*)?)\s*(?:mm)?\s*$")

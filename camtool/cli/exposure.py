@@ -12,7 +12,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, rows_from
 from camtool.cli.options import aperture_options, library_errors, param_named
 from camtool.cli.params import NumberType, TimeType, flatten
-from camtool.errors import DomainError
+from camtool.core.errors import DomainError
 from camtool.render.columns import FNUMBER, NUMBER, TEXT, Column
 
 KEYS = ["f_number", "shutter_s", "iso", "ev", "ev100", "solved", "f_number_nominal", "shutter_nominal_s",
@@ -106,19 +106,23 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
       camtool exposure --ev100 12 -N 8 --nd ND1000 --film hp5
       camtool exposure --light overcast --iso 100 -N 8 --equivalents --step full
     """
-    from camtool import exposure as lib
-    from camtool import metering
-    from camtool.reciprocity import find_film
-    from camtool.timefmt import format_time
+    from camtool.exposure import metering
+    from camtool.exposure.equivalents import equivalent_exposures
+    from camtool.exposure.ev import ev100_from_ev
+    from camtool.exposure.light import light_level
+    from camtool.exposure.nd import parse_nd, stack_nd
+    from camtool.exposure.plan import plan_exposure
+    from camtool.exposure.reciprocity import find_film
+    from camtool.exposure.timefmt import format_time
 
     apertures, times, speeds = f_numbers(f_number, exact_stops), flatten(shutter_s), flatten(iso)
     _one(ctx, {"--ev100": ev100, "--ev": ev, "--light": light, "--luminance": luminance, "--illuminance": illuminance})
     if film and reciprocity_p:
         raise click.UsageError("Give --film or --reciprocity-p, not both.", ctx)
     with _named_value(ctx, "light"):
-        levels = [lib.light_level(light).ev100] if light else flatten(ev100)
+        levels = [light_level(light).ev100] if light else flatten(ev100)
     with _named_value(ctx, "nd"):
-        loss = lib.stack_nd([lib.parse_nd(text) for text in nd]).stops
+        loss = stack_nd([parse_nd(text) for text in nd]).stops
     with _named_value(ctx, "film"):
         p = find_film(film).p if film else (reciprocity_p[0] if reciprocity_p else None)
     with library_errors(ctx):
@@ -137,9 +141,9 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     value = dict(zip(given, columns))
     with library_errors(ctx):
         if "ev" in value:
-            value["ev100"] = lib.ev100_from_ev(value.pop("ev"), value.get("iso", 100.0))
+            value["ev100"] = ev100_from_ev(value.pop("ev"), value.get("iso", 100.0))
             value.setdefault("iso", 100.0)
-        plan = lib.plan_exposure(value.get("ev100"), value.get("f_number"), value.get("shutter_s"),
+        plan = plan_exposure(value.get("ev100"), value.get("f_number"), value.get("shutter_s"),
                                  value.get("iso"), loss, magnification[0] if magnification else 0.0,
                                  pupil_magnification[0], p, step=step)
     rows = rows_from(count, plan._asdict())
@@ -147,7 +151,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
         if count != 1:
             raise click.UsageError("--equivalents needs a single exposure (one value per option).", ctx)
         with library_errors(ctx):
-            table = lib.equivalent_exposures(plan.ev, step=step)
+            table = equivalent_exposures(plan.ev, step=step)
         rows = rows_from(len(table.f_number), {**table._asdict(), "iso": plan.iso, "ev100": plan.ev100})
         for row in rows:
             row["time"], row["exact"] = format_time(row["shutter_nominal_s"]), format_time(row["shutter_exact_s"])

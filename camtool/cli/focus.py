@@ -5,16 +5,27 @@ from __future__ import annotations
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
-
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
-from camtool.cli.options import (DISTANCE_M, aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, sensor_options)
+from camtool.cli.options import (
+    DISTANCE_M,
+    aperture_options,
+    coc_options,
+    distance_plane_option,
+    focal_option,
+    library_errors,
+    sensor_options,
+)
 from camtool.cli.params import NumberType, flatten
-from camtool.inverse import focus_for_limits
+from camtool.dof.inverse import focus_for_limits
+from camtool.geometry.thinlens import (
+    closest_focus_mm,
+    focus_for_magnification,
+    focus_geometry,
+    working_f_number,
+)
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
-from camtool.thinlens import closest_focus_mm, focus_for_magnification, focus_geometry, working_f_number
 
 FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
                 "f_number", "working_f_number", "closest_focus_mm", "distance_from"]

@@ -5,16 +5,20 @@ from __future__ import annotations
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
-
 from camtool.cli.common import footer, required, rows_from
 from camtool.cli.equipment import resolve_sensor
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
-from camtool.cli.options import DISTANCE_M, distance_plane_option, focal_option, library_errors, \
-    sensor_options
+from camtool.cli.options import (
+    DISTANCE_M,
+    distance_plane_option,
+    focal_option,
+    library_errors,
+    sensor_options,
+)
 from camtool.cli.params import flatten
-from camtool.fov import field_of_view, field_size_mm
+from camtool.geometry.fov import field_of_view, field_size_mm
+from camtool.geometry.thinlens import focus_geometry
 from camtool.render.columns import ANGLE, NUMBER, SMALL, Column
-from camtool.thinlens import focus_geometry
 
 KEYS = ["focal_length_mm", "horizontal_deg", "vertical_deg", "diagonal_deg", "equivalent_focal_length_mm",
         "crop_factor", "sensor_width_mm", "sensor_height_mm"]

@@ -5,13 +5,18 @@ from __future__ import annotations
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
-
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
-from camtool.cli.options import (aperture_options, coc_options, distance_plane_option, focal_option,
-                                 library_errors, sensor_options)
 from camtool.cli.lensdata import ladder_errors, lens_geometry_options, pupil_and_hiatus
-from camtool.ladder import LensData, depth_of_field
+from camtool.cli.options import (
+    aperture_options,
+    coc_options,
+    distance_plane_option,
+    focal_option,
+    library_errors,
+    sensor_options,
+)
+from camtool.dof.ladder import LensData, depth_of_field
 from camtool.render.columns import FNUMBER, SMALL, Column
 
 KEYS = ["focal_length_mm", "f_number", "hyperfocal_mm", "near_mm", "coc_mm", "model", "distance_from"]

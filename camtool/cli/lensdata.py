@@ -2,7 +2,7 @@
 
 One helper, :func:`lens_data`, turns ``--pupil-mag``, ``--hiatus``,
 ``--prescription FILE`` and a lens preset (``--lens``) into a
-:class:`camtool.ladder.LensData`; values given by hand win over the preset's.
+:class:`camtool.dof.ladder.LensData`; values given by hand win over the preset's.
 It also hosts the parameter types of the model options (``--tolerance``,
 ``--wavelength``).
 """
@@ -16,8 +16,8 @@ import click
 
 from camtool.cli.equipment import LENS
 from camtool.cli.options import param_named, stack
-from camtool.ladder import LensData
-from camtool.units import UnitError, parse_length
+from camtool.core.units import UnitError, parse_length
+from camtool.dof.ladder import LensData
 
 
 class ToleranceType(click.ParamType):
@@ -94,7 +94,10 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
     if prescription_file is not None:
         prescription = load_prescription(ctx, prescription_file)
     elif getattr(preset_lens, "prescription", None) is not None:
-        from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
+        from camtool.optics.prescription import (
+            PrescriptionError,
+            prescription_from_mapping,
+        )
 
         try:
             prescription = prescription_from_mapping(preset_lens.prescription,
@@ -175,8 +178,8 @@ def ladder_errors(ctx: click.Context) -> Any:
     import contextlib
     import sys
 
-    from camtool.errors import DomainError
-    from camtool.ladder import ModelUnavailable
+    from camtool.core.errors import DomainError
+    from camtool.dof.ladder import ModelUnavailable
 
     @contextlib.contextmanager
     def translate() -> Any:

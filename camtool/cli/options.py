@@ -16,7 +16,7 @@ from typing import Any, TypeVar
 import click
 
 from camtool.cli.params import FNumberType, LengthType
-from camtool.errors import DomainError
+from camtool.core.errors import DomainError
 
 F = TypeVar("F", bound=Callable[..., Any])
 

@@ -14,7 +14,7 @@ from typing import Any
 
 import click
 
-from camtool.units import UnitError, parse_f_number, parse_length, parse_time
+from camtool.core.units import UnitError, parse_f_number, parse_length, parse_time
 
 
 class _ListType(click.ParamType):

@@ -4,6 +4,6 @@ Submodules (import what you need; numpy is imported only by :mod:`raytrace`):
 
 - :mod:`camtool.optics.prescription` -- validated lens prescriptions;
 - :mod:`camtool.optics.paraxial` -- y–nu trace, first-order data, the ``paraxial`` model;
-- :mod:`camtool.optics.thick` -- the ``thick`` closed form (pupil magnification, hiatus);
+- :mod:`camtool.dof.thick` -- the ``thick`` closed form (pupil magnification, hiatus);
 - :mod:`camtool.optics.raytrace` -- real rays by Snell's law, the ``raytrace`` model.
 """

@@ -275,7 +275,7 @@ def prescription_from_mapping(data: Mapping[str, Any], source: str = "<prescript
 
     References
     ----------
-    camtool design §5 (prescription presets); the reference data's
+    docs/design.md §5 (prescription presets); the reference data's
     ``prescriptions/*.yaml`` headers for the sag convention.
 
     Examples

@@ -17,7 +17,16 @@ from __future__ import annotations
 
 from camtool.presets.database import Database, load_db, validate_file
 from camtool.presets.errors import PresetFileError, PresetNotFound
-from camtool.presets.schema import KINDS, Camera, Lens, Prescription, Preset, Scene, Sensor, normalize
+from camtool.presets.schema import (
+    KINDS,
+    Camera,
+    Lens,
+    Prescription,
+    Preset,
+    Scene,
+    Sensor,
+    normalize,
+)
 
 __all__ = [
     "KINDS",

@@ -328,7 +328,7 @@ _BUILDERS = {
 
 def load_db(extra_files: Iterable[str | os.PathLike[str]] = (), *, use_cache: bool = True,
             lensfun: bool = True) -> Database:
-    """Load the preset database in the search order of DESIGN §5.
+    """Load the preset database in the search order of docs/design.md §5.
 
     shipped ``lens_db/`` < lensfun import < ``$XDG_CONFIG_DIRS/camtool`` <
     ``$XDG_CONFIG_HOME/camtool`` < each of ``extra_files`` in order; a later

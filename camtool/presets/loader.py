@@ -20,7 +20,14 @@ import zlib
 from typing import Any
 
 from camtool.presets.errors import PresetFileError
-from camtool.presets.schema import REFERENCES, SECTIONS, check_record, normalize, show, suggest
+from camtool.presets.schema import (
+    REFERENCES,
+    SECTIONS,
+    check_record,
+    normalize,
+    show,
+    suggest,
+)
 
 CACHE_FORMAT = 5
 """Bumped whenever the record layout changes, so old cache files are ignored."""

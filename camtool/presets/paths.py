@@ -1,6 +1,6 @@
 """Where preset files live: the shipped database, the lensfun import and the user's directories.
 
-Search order (DESIGN §5), later tiers win by id:
+Search order (docs/design.md §5), later tiers win by id:
 
 1. ``shipped`` -- ``lens_db/`` inside the installed package (``camtool/lens_db``
    in a wheel) or, from a source tree or editable install, the repository's

@@ -199,7 +199,7 @@ def reference(value: Any) -> str:
 
 def _length_with_default(unit: str, allow_inf: bool) -> Callable[[Any], float]:
     def check(value: Any) -> float:
-        from camtool.units import UnitError, parse_length
+        from camtool.core.units import UnitError, parse_length
 
         if isinstance(value, bool) or not isinstance(value, (str, int, float)):
             raise Bad(f"expected a length such as 3m or 50mm, got {show(value)}")
@@ -217,7 +217,7 @@ def _length_with_default(unit: str, allow_inf: bool) -> Callable[[Any], float]:
 
 def f_number_text(value: Any) -> float:
     """An f-number written 8, f/8 or f8."""
-    from camtool.units import UnitError, parse_f_number
+    from camtool.core.units import UnitError, parse_f_number
 
     if isinstance(value, bool) or not isinstance(value, (str, int, float)):
         raise Bad(f"expected an f-number such as 8 or f/8, got {show(value)}")

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops, quiet
-from camtool.errors import DomainError, require, require_positive
+from camtool.core.arrays import ops, quiet
+from camtool.core.errors import DomainError, require, require_positive
 
 _BISECTIONS = 120
 
@@ -45,7 +45,7 @@ def focus_for_limits(
 
     References
     ----------
-    Inverts the exact thin-lens limits of :func:`camtool.dof.thin_dof`; the
+    Inverts the exact thin-lens limits of :func:`camtool.dof.closed.thin_dof`; the
     harmonic-mean focus is the classic result (Merklinger, *The INs and OUTs
     of FOCUS*, 1992).
 

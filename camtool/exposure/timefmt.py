@@ -9,7 +9,7 @@ The notation follows camera displays and exposure tables:
 - up to an hour: minutes and seconds (``1'30"``, ``2'``);
 - from an hour: hours and minutes (``4h``, ``1h30'``).
 
-The ASCII ``"`` and ``'`` are used so that :func:`camtool.units.parse_time`
+The ASCII ``"`` and ``'`` are used so that :func:`camtool.core.units.parse_time`
 reads every string back. Formatting is for display only: the numbers stay exact.
 """
 
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from camtool.errors import DomainError
+from camtool.core.errors import DomainError
 
 _FRACTION_BELOW_S = 0.34  # 1/3 s is still written 1/3; 0.4 s is written 0.4"
 

@@ -1,30 +1,29 @@
 """The model ladder: one dispatcher over the depth-of-field models, cheapest first.
 
-Rungs (camtool design §4): ``approx`` (the common rule), ``thin`` (exact thin
+Rungs (docs/design.md §4): ``approx`` (the common rule), ``thin`` (exact thin
 lens), ``thick`` (pupil magnification and hiatus), ``paraxial`` (first-order
 trace of a prescription, fed into ``thick``) and ``raytrace`` (real rays).
 Every model takes (f, N, c, focus distance, distance plane) in mm plus the
-lens data it needs, and returns :class:`camtool.limits.DofLimits`.
-Diffraction is an add-on to every rung (:mod:`camtool.diffraction`); ``auto``
-picks the cheapest rung the scene needs (:func:`choose`, :mod:`camtool.auto`) and ``all``
+lens data it needs, and returns :class:`camtool.dof.limits.DofLimits`.
+Diffraction is an add-on to every rung (:mod:`camtool.dof.diffraction`); ``auto``
+picks the cheapest rung the scene needs (:func:`choose`, :mod:`camtool.dof.auto`) and ``all``
 runs every rung the inputs allow (:func:`compare_models`).
 """
 
 from __future__ import annotations
 
 import functools
-
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops
-from camtool.auto import Effects, depth_error, estimate_effects, left_out
-from camtool.dof import approx_dof, thin_dof
-from camtool.errors import DomainError, first_bad
-from camtool.limits import DofLimits
-from camtool.thinlens import focus_geometry
+from camtool.core.arrays import ops
+from camtool.core.errors import DomainError, first_bad
+from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
+from camtool.dof.closed import approx_dof, thin_dof
+from camtool.dof.limits import DofLimits
+from camtool.geometry.thinlens import focus_geometry
 
 __all__ = [
     "CHOICES",
@@ -107,7 +106,7 @@ class ModelResult(NamedTuple):
     """The limits, the model that produced them (``+diffraction`` when the add-on ran) and its estimated relative error.
 
     ``error_estimate`` is the estimated relative error of the limits
-    (:func:`camtool.auto.depth_error`) from the effects the model leaves out.
+    (:func:`camtool.dof.auto.depth_error`) from the effects the model leaves out.
     """
 
     limits: DofLimits
@@ -134,20 +133,20 @@ def _thin(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimi
 
 
 def _thick(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    from camtool.optics.thick import thick_dof
+    from camtool.dof.thick import thick_dof
 
     p, delta = lens.thick_parameters()  # type: ignore[misc]
     return thick_dof(f, n, c, s, pupil_magnification=p, hiatus_mm=delta, distance_from=plane)
 
 
 def _paraxial(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    from camtool.optics.paraxial import paraxial_dof
+    from camtool.dof.paraxial import paraxial_dof
 
     return paraxial_dof(lens.prescription, n, c, s, plane)
 
 
 def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    from camtool.optics.raytrace import raytrace_dof
+    from camtool.dof.realray import raytrace_dof
 
     return raytrace_dof(lens.prescription, n, c, s, plane)
 
@@ -221,7 +220,7 @@ def _scene_lens(lens: LensData) -> tuple[Any, Any]:
 
 def _usable_coc(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, wavelength_nm: Any) -> tuple[Any, Any]:
     """(usable CoC √(c² − b_airy²), b_airy) with the working f-number at the focus distance."""
-    from camtool.diffraction import airy_diameter_mm, usable_coc_mm
+    from camtool.dof.diffraction import airy_diameter_mm, usable_coc_mm
 
     p, delta = _scene_lens(lens)
     m = focus_geometry(f, s, plane, delta if plane == "sensor" else 0.0).magnification
@@ -231,8 +230,8 @@ def _usable_coc(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, wave
 
 def _check_focus(f: Any, s: Any, plane: str, lens: LensData) -> None:
     """The focus distance must be reachable (1:1 at the closest), with the thin model's messages."""
-    from camtool.errors import require, require_positive
-    from camtool.thinlens import lens_distances
+    from camtool.core.errors import require, require_positive
+    from camtool.geometry.thinlens import lens_distances
 
     if plane == "lens":
         require_positive("distance_mm", s, allow_inf=True)
@@ -316,7 +315,7 @@ def depth_of_field(
         λ for diffraction.
     tolerance : float
         ``auto``: the largest estimated relative error accepted (0.01 = 1 %
-        of the depth of field, :func:`camtool.auto.depth_error`).
+        of the depth of field, :func:`camtool.dof.auto.depth_error`).
 
     Returns
     -------
@@ -332,7 +331,7 @@ def depth_of_field(
         ``paraxial``/``raytrace`` without a prescription).
     DomainError
         Inputs outside the physical domain; a focal length that disagrees
-        with the prescription; :class:`camtool.diffraction.NothingSharp` when
+        with the prescription; :class:`camtool.dof.diffraction.NothingSharp` when
         the Airy disc fills the CoC.
 
     Examples
@@ -345,7 +344,7 @@ def depth_of_field(
     >>> depth_of_field("thick", 50.0, 8.0, 0.03, 3000.0)
     Traceback (most recent call last):
     ...
-    camtool.ladder.ModelUnavailable: the thick model needs the lens's pupil magnification or hiatus \
+    camtool.dof.ladder.ModelUnavailable: the thick model needs the lens's pupil magnification or hiatus \
 (--pupil-mag, --hiatus, a --lens that has them, or --prescription)
     >>> depth_of_field("bogus", 50.0, 8.0, 0.03, 3000.0)
     Traceback (most recent call last):
@@ -360,7 +359,7 @@ def depth_of_field(
         if missing is not None:
             raise ModelUnavailable(model, missing)
     f = prescription_focal_length(lens, focal_length_mm)
-    from camtool.dof import check_inputs
+    from camtool.dof.closed import check_inputs
 
     check_inputs(f, f_number, coc_mm)
     _check_focus(f, distance_mm, distance_from, lens)
@@ -429,7 +428,7 @@ def compare_models(
 ) -> list[ModelComparison]:
     """Every rung the lens data allow, for the same scene, with its difference from the most complete one and its cost.
 
-    ``difference`` is :func:`camtool.auto.depth_error` against the last
+    ``difference`` is :func:`camtool.dof.auto.depth_error` against the last
     (most complete) rung; ``time_per_evaluation_s`` the best of ``repeat``
     timed runs (``time.perf_counter``) divided by the number of scenes.
 
@@ -441,7 +440,7 @@ def compare_models(
     """
     lens = lens or NO_LENS
     f = prescription_focal_length(lens, focal_length_mm)
-    from camtool.dof import check_inputs
+    from camtool.dof.closed import check_inputs
 
     check_inputs(f, f_number, coc_mm)
     count = 1

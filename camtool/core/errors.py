@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from camtool.arrays import is_scalar
+from camtool.core.arrays import is_scalar
 
 
 class DomainError(ValueError):

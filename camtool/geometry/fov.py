@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops
-from camtool.errors import require, require_positive
+from camtool.core.arrays import ops
+from camtool.core.errors import require, require_positive
 
 
 class FieldOfView(NamedTuple):

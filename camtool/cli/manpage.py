@@ -1,6 +1,6 @@
 """Man pages generated from the click definitions: ``camtool.1`` and one page per subcommand.
 
-Run ``python -m camtool.manpage man/man1`` after changing a command; a test
+Run ``python -m camtool.cli.manpage man/man1`` after changing a command; a test
 regenerates the pages and fails on any drift from the committed ones. The
 date is pinned (:data:`MAN_DATE`) so that generation is reproducible.
 """

@@ -2,7 +2,7 @@
 
 Both models answer the same question -- the nearest and farthest object
 distances whose blur disc on the sensor stays within the circle of
-confusion c -- and return :class:`camtool.limits.DofLimits`. The formulas are
+confusion c -- and return :class:`camtool.dof.limits.DofLimits`. The formulas are
 arranged so that every term is a sum of positive quantities, except the
 unavoidable H − s of the far limit, whose cancellation is the problem's own
 condition (the far limit really is that sensitive near the hyperfocal
@@ -16,10 +16,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from camtool.arrays import broadcast, ops, quiet
-from camtool.errors import require, require_positive
-from camtool.limits import DofLimits
-from camtool.thinlens import lens_distances
+from camtool.core.arrays import broadcast, ops, quiet
+from camtool.core.errors import require, require_positive
+from camtool.dof.limits import DofLimits
+from camtool.geometry.thinlens import lens_distances
 
 DISTANCE_PLANES = ("sensor", "lens")
 
@@ -120,7 +120,7 @@ def thin_dof(
 
     and far = ∞ for u ≥ H. These equal D_N = u f²/(f² + Nc(u − f)) and
     D_F = u f²/(f² − Nc(u − f)). From the sensor plane the focus distance D is
-    converted exactly to (u, v) (:func:`camtool.thinlens.lens_distances`) and
+    converted exactly to (u, v) (:func:`camtool.geometry.thinlens.lens_distances`) and
     the limits back with the lens-to-sensor spacing v fixed at its focus
     setting; the reported hyperfocal distance is then H + v_H = H + f + N·c
     (the closest focus 4f when H < 2f: every focus is then beyond H).

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from camtool.arrays import broadcast, ops, quiet
-from camtool.errors import require, require_positive
+from camtool.core.arrays import broadcast, ops, quiet
+from camtool.core.errors import require, require_positive
 
 
 class LensPlaneDistances(NamedTuple):
@@ -105,7 +105,7 @@ def working_f_number(f_number: Any, magnification: Any, pupil_magnification: Any
 
     References
     ----------
-    Wikipedia, "f-number", working f-number; camtool design §4.
+    Wikipedia, "f-number", working f-number; docs/design.md §4.
 
     Examples
     --------
@@ -130,7 +130,7 @@ def lens_distances(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any
 
     References
     ----------
-    camtool design, §4 (geometry); follows from the thin-lens equation.
+    docs/design.md §4 (geometry); follows from the thin-lens equation.
 
     Examples
     --------

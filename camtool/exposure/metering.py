@@ -17,9 +17,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from camtool.arrays import ops
-from camtool.errors import require
-from camtool.exposure import check, exposure_value
+from camtool.core.arrays import ops
+from camtool.core.domain import check
+from camtool.core.errors import require
+from camtool.exposure.ev import exposure_value
 
 K_REFLECTED = 12.5
 """Reflected-light meter calibration constant K in cd·s/m² (ISO 2720; Canon, Nikon, Sekonic)."""

@@ -45,7 +45,7 @@ import functools
 import math
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops, quiet
+from camtool.core.arrays import ops, quiet
 
 __all__ = ["EFFECTS", "LEFT_OUT", "Effects", "aberration_share", "depth_error", "estimate_effects", "left_out"]
 
@@ -131,8 +131,8 @@ def estimate_effects(
     >>> round(e.approximation, 4), round(e.distance_plane, 4), e.pupil
     (0.0086, 0.0348, 0.0)
     """
-    from camtool.diffraction import diffraction_share
-    from camtool.thinlens import focus_geometry
+    from camtool.dof.diffraction import diffraction_share
+    from camtool.geometry.thinlens import focus_geometry
 
     f, nc, p, delta = focal_length_mm, f_number * coc_mm, pupil_magnification, hiatus_mm
     xp = ops(f, f_number, coc_mm, distance_mm, p, delta, airy_mm)
@@ -209,7 +209,7 @@ def _aberration_table(prescription: Any, f_number: float) -> tuple[tuple[float, 
     out; if none can be traced the estimate is 1 (everything uncertain).
     """
     from camtool.optics.paraxial import first_order, paraxial_trace
-    from camtool.optics.raytrace import RayTraceError, real_tracer
+    from camtool.optics.tracer import RayTraceError, real_tracer
 
     fo = first_order(prescription)
     f = fo.efl_mm
@@ -262,7 +262,7 @@ def depth_error(limits: Any, reference: Any) -> Any:
 
     Examples
     --------
-    >>> from camtool.dof import approx_dof, thin_dof
+    >>> from camtool.dof.closed import approx_dof, thin_dof
     >>> round(depth_error(approx_dof(50.0, 8.0, 0.03, 3000.0), thin_dof(50.0, 8.0, 0.03, 3000.0, "lens")), 4)
     0.0085
     """

@@ -6,7 +6,7 @@ metered time t_m beyond about a second has to be stretched to
     t_c = t_m^p        (t_m > 1 s; t_c = t_m otherwise)
 
 with a film's Schwarzschild exponent p > 1. The exponents ship with camtool
-in ``camtool/data/films.yaml`` (Ilford's published values, source in the
+in ``camtool/exposure/films.yaml`` (Ilford's published values, source in the
 file); any other film works through :func:`corrected_time_s` with its own p.
 """
 
@@ -17,9 +17,9 @@ import functools
 import re
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops
-from camtool.errors import DomainError, require
-from camtool.exposure import check
+from camtool.core.arrays import ops
+from camtool.core.domain import check
+from camtool.core.errors import DomainError, require
 
 P_RANGE = (1.0, 3.0)
 
@@ -85,7 +85,7 @@ def _key(name: str) -> str:
 
 @functools.lru_cache(maxsize=1)
 def load_films() -> dict[str, Film]:
-    """The shipped films, by id, read once from ``camtool/data/films.yaml``.
+    """The shipped films, by id, read once from ``camtool/exposure/films.yaml``.
 
     >>> load_films()["ilford-hp5-plus"].p
     1.31
@@ -94,7 +94,7 @@ def load_films() -> dict[str, Film]:
 
     import yaml
 
-    data = yaml.safe_load(files("camtool").joinpath("data/films.yaml").read_text(encoding="utf-8"))
+    data = yaml.safe_load(files("camtool.exposure").joinpath("films.yaml").read_text(encoding="utf-8"))
     return {
         entry["id"]: Film(entry["id"], entry["name"], float(entry["p"]), float(entry.get("threshold_s", 1.0)),
                           tuple(entry.get("aliases", ())), entry.get("source", data["source"]))
@@ -112,7 +112,7 @@ def find_film(name: str) -> Film:
     >>> find_film("delta 300")
     Traceback (most recent call last):
     ...
-    camtool.errors.DomainError: film=delta 300 is outside the valid range: a known film (did you mean ilford-delta-100, ilford-delta-3200, ilford-delta-400?)
+    camtool.core.errors.DomainError: film=delta 300 is outside the valid range: a known film (did you mean ilford-delta-100, ilford-delta-3200, ilford-delta-400?)
     """
     films = load_films()
     index: dict[str, Film] = {}

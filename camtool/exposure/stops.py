@@ -21,8 +21,8 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from camtool.arrays import is_scalar, ops
-from camtool.errors import DomainError
+from camtool.core.arrays import is_scalar, ops
+from camtool.core.errors import DomainError
 
 STEPS_PER_STOP = {"full": 1, "half": 2, "third": 3}
 """Divisions of a stop for each named step."""

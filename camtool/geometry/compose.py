@@ -16,7 +16,7 @@ distance reference plane. Lengths in millimetres, angles in degrees;
 scalars in, floats out; arrays in, arrays out (broadcast together).
 
 The near and far limits of the sharp zone for a composition row come from
-the depth-of-field models (:mod:`camtool.dof`) at ``distance_mm``; they are
+the depth-of-field models (:mod:`camtool.dof.closed`) at ``distance_mm``; they are
 not repeated here.
 """
 
@@ -24,10 +24,10 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from camtool.arrays import ops, quiet
-from camtool.errors import require, require_positive
-from camtool.exposure import check
-from camtool.fov import angle_of_view_deg, field_size_mm
+from camtool.core.arrays import ops, quiet
+from camtool.core.domain import check
+from camtool.core.errors import require, require_positive
+from camtool.geometry.fov import angle_of_view_deg, field_size_mm
 
 
 class Composition(NamedTuple):

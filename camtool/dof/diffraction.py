@@ -19,8 +19,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from camtool.arrays import is_scalar, ops
-from camtool.errors import DomainError, first_bad, require_positive
+from camtool.core.arrays import is_scalar, ops
+from camtool.core.errors import DomainError, first_bad, require_positive
 
 __all__ = [
     "AIRY_FACTOR",
@@ -149,7 +149,7 @@ def usable_coc_mm(coc_mm: Any, f_number: Any, magnification: Any = 0.0, pupil_ma
 
     References
     ----------
-    camtool design §4 (diffraction as an add-on: root-sum-square blur).
+    docs/design.md §4 (diffraction as an add-on: root-sum-square blur).
 
     Examples
     --------
@@ -158,7 +158,7 @@ def usable_coc_mm(coc_mm: Any, f_number: Any, magnification: Any = 0.0, pupil_ma
     >>> usable_coc_mm(0.03, 32.0)
     Traceback (most recent call last):
     ...
-    camtool.diffraction.NothingSharp: f_number=32 is outside the valid range: below f/22.4 for any depth of field \
+    camtool.dof.diffraction.NothingSharp: f_number=32 is outside the valid range: below f/22.4 for any depth of field \
 with diffraction at 550 nm (nothing is acceptably sharp: the Airy disc, 0.0429 mm, fills the 0.03 mm circle of confusion)
     """
     require_positive("wavelength_nm", wavelength_nm, unit="nm")

@@ -22,7 +22,7 @@ import math
 import re
 from typing import NamedTuple
 
-from camtool.units import UnitError, parse_length
+from camtool.core.units import UnitError, parse_length
 
 DEFAULT_RULE = "d/1500"
 EYE_ACUITY_MM_AT_250 = 0.25

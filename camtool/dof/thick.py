@@ -26,10 +26,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from camtool.arrays import broadcast, ops, quiet
-from camtool.errors import require, require_positive
-from camtool.limits import DofLimits
-from camtool.thinlens import lens_distances
+from camtool.core.arrays import broadcast, ops, quiet
+from camtool.core.errors import require, require_positive
+from camtool.dof.limits import DofLimits
+from camtool.geometry.thinlens import lens_distances
 
 __all__ = ["DISTANCE_PLANES", "thick_dof", "working_f_number", "entrance_pupil_offset_mm"]
 
@@ -185,7 +185,7 @@ def thick_dof(
     ----------
     J. Conrad, "Depth of Field in Depth" (2006), §"Pupil magnification";
     Wikipedia, "Depth of field", §"Close-up" with pupil magnification;
-    camtool design §4.
+    docs/design.md §4.
 
     Examples
     --------

@@ -1,0 +1,1 @@
+"""Imaging geometry of a thin lens: focusing, field of view, circle of confusion, composition."""
