@@ -91,7 +91,8 @@ def vector_times() -> dict[str, float]:
     for model in ("approx", "thin", "thick", "auto"):
         out[model] = best_time(lambda: depth_of_field(model, f, n, 0.03, s, lens=hand), repeat=3) / count
     dg = lens("dgauss100")
-    out["paraxial"] = best_time(lambda: depth_of_field("paraxial", None, n, 0.03, 500.0 + s * 4, lens=dg), repeat=3) / count  # dgauss100: f = 100 mm
+    # dgauss100: f = 100 mm
+    out["paraxial"] = best_time(lambda: depth_of_field("paraxial", None, n, 0.03, 500.0 + s * 4, lens=dg), repeat=3) / count
 
     from camtool.dof.closed import approx_dof, thin_dof
     from camtool.dof.thick import thick_dof

@@ -34,7 +34,7 @@ SHARED = {"dgauss100": ((2.0, 2.8, 5.6, 11.0, 22.0), 0.03), "telephoto127": ((5.
           "cellphone": ((3.5, 5.6, 8.0, 16.0), 0.0048)}
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def shared_lens(name: str) -> LensData:
     path = DATA / f"{name}.yaml"
     return LensData(prescription=prescription_from_mapping(yaml.safe_load(path.read_text()), source=path.name))

@@ -38,7 +38,7 @@ def test_csv_batch_matches_single_calls_for_1000_random_scenes() -> None:
     assert code == 0, err
     rows = json.loads(out)
     assert len(rows) == len(scenes)
-    for (f, n, s), row in zip(scenes, rows):
+    for (f, _n, s), row in zip(scenes, rows):
         expected = depth_of_field("auto", float(f), row["f_number"], row["coc_mm"], parse_length(s, "m"))
         assert row["model"] == expected.model
         assert row["near_mm"] == pytest.approx(expected.limits.near_mm, rel=1e-13)
@@ -64,7 +64,7 @@ def test_jsonl_batch_with_per_row_sensor_keeps_order() -> None:
 def test_command_line_options_apply_to_every_row_and_csv_feeds_back() -> None:
     code, out, _ = batch("distance\n2\n3\n", "dof", "-f", "50", "-N", "8", "--format", "csv")
     assert code == 0 and len(out.strip().splitlines()) == 3
-    code2, again, _ = batch(out, "dof", "--format", "csv")
+    _code2, again, _ = batch(out, "dof", "--format", "csv")
     assert again == out
 
 

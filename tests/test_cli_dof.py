@@ -116,7 +116,7 @@ def test_table_snapshot() -> None:
 )
 def test_errors_are_one_line_exit_2(args: list[str], message: str) -> None:
     base = {"-f": "50", "-N": "8", "-s": "3"}
-    for i in range(0, len(args) - 1):
+    for i in range(len(args) - 1):
         if args[i] in base:
             base.pop(args[i])
     flat = [x for kv in base.items() for x in kv]

@@ -23,7 +23,8 @@ a small multiple of κ·ε, and the tests allow 64·κ·ε.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 import mpmath
 import pytest

@@ -46,16 +46,16 @@ def singlet(stop_first: bool = True, thickness: float = 5.0, radius: float = 51.
 
 # oracle-README.md, "Reproducing the first-order data from the YAML" (12-digit table)
 FIRST_ORDER = {
-    "dgauss100": dict(
-        efl_mm=100.003757028, bfd_mm=61.4875364180, z_k_mm=77.9674018904, z_h_mm=70.6829745795,
-        z_h_prime_mm=39.4511812805, z_e_mm=57.9120034224, z_x_mm=24.8105265787, m_e=1.57703562027,
-        m_x=1.80791528575, pupil_magnification=1.14640104669,
-    ),
-    "telephoto127": dict(
-        efl_mm=127.016601138, bfd_mm=63.4060594396, z_k_mm=43.1114200000, z_h_mm=-38.1087203396,
-        z_h_prime_mm=-20.4991216982, z_e_mm=7.78381237089, z_x_mm=13.2128829412, m_e=1.16553097813,
-        m_x=0.856182551310, pupil_magnification=0.734585838879,
-    ),
+    "dgauss100": {
+        "efl_mm": 100.003757028, "bfd_mm": 61.4875364180, "z_k_mm": 77.9674018904, "z_h_mm": 70.6829745795,
+        "z_h_prime_mm": 39.4511812805, "z_e_mm": 57.9120034224, "z_x_mm": 24.8105265787, "m_e": 1.57703562027,
+        "m_x": 1.80791528575, "pupil_magnification": 1.14640104669,
+    },
+    "telephoto127": {
+        "efl_mm": 127.016601138, "bfd_mm": 63.4060594396, "z_k_mm": 43.1114200000, "z_h_mm": -38.1087203396,
+        "z_h_prime_mm": -20.4991216982, "z_e_mm": 7.78381237089, "z_x_mm": 13.2128829412, "m_e": 1.16553097813,
+        "m_x": 0.856182551310, "pupil_magnification": 0.734585838879,
+    },
 }
 # oracle-README.md, same table: EPD at the design N and the stop radius
 STOP = {"dgauss100": (2.0, 50.0018785140, 15.8531227422), "telephoto127": (5.6, 22.6815359175, 9.73013001930)}

@@ -35,7 +35,7 @@ def test_yaml_syntax_error_names_file_and_line(tmp_path):
 
 
 def test_python_object_tag_is_refused(tmp_path):
-    path, error = load_error(tmp_path, "sensors:\n  - !!python/object/apply:os.system ['echo pwned']\n")
+    _path, error = load_error(tmp_path, "sensors:\n  - !!python/object/apply:os.system ['echo pwned']\n")
     assert error.line == 2 and "YAML error" in str(error) and "python/object" in str(error)
 
 
@@ -47,13 +47,13 @@ def test_alias_bomb_is_refused_quickly(tmp_path):
         lines.append(f"{name}: &{name} [{', '.join([f'*{prev}'] * 9)}]")
     lines.append("sensors: *l")
     start = time.perf_counter()
-    path, error = load_error(tmp_path, "\n".join(lines) + "\n")
+    _path, error = load_error(tmp_path, "\n".join(lines) + "\n")
     assert time.perf_counter() - start < 5
     assert "too many nested aliases" in str(error)
 
 
 def test_recursive_alias_is_refused(tmp_path):
-    path, error = load_error(tmp_path, "sensors: &s\n  - *s\n")
+    _path, error = load_error(tmp_path, "sensors: &s\n  - *s\n")
     assert "refers to the node that contains it" in str(error)
 
 
@@ -64,7 +64,7 @@ def test_unknown_key_says_did_you_mean(tmp_path):
 
 
 def test_unknown_section_says_did_you_mean(tmp_path):
-    path, error = load_error(tmp_path, "lens:\n  - id: x\n    focal_length_mm: 50\n")
+    _path, error = load_error(tmp_path, "lens:\n  - id: x\n    focal_length_mm: 50\n")
     assert "unknown section (did you mean lenses?)" in str(error) and error.line == 1
 
 
@@ -92,7 +92,7 @@ def test_negative_width(tmp_path):
     ],
 )
 def test_sensor_field_errors(tmp_path, entry, key, words):
-    path, error = load_error(tmp_path, "sensors:\n" + entry)
+    _path, error = load_error(tmp_path, "sensors:\n" + entry)
     assert error.key == key and words in str(error)
 
 
@@ -107,7 +107,7 @@ def test_sensor_field_errors(tmp_path, entry, key, words):
     ],
 )
 def test_lens_field_errors(tmp_path, entry, key, words):
-    path, error = load_error(tmp_path, f"lenses:\n  - id: l\n    {entry}\n")
+    _path, error = load_error(tmp_path, f"lenses:\n  - id: l\n    {entry}\n")
     assert error.key == key and words in str(error)
 
 
@@ -115,19 +115,19 @@ def test_prescription_needs_exactly_one_stop(tmp_path):
     text = ("prescriptions:\n  - id: p\n    surfaces:\n"
             "      - {radius_mm: 50, thickness_mm: 5, n: 1.5}\n"
             "      - {radius_mm: inf, thickness_mm: 90, n: 1.0}\n")
-    path, error = load_error(tmp_path, text)
+    _path, error = load_error(tmp_path, text)
     assert error.key == "surfaces" and "exactly one surface must have stop: true (found none)" in str(error)
 
 
 def test_prescription_surface_errors_name_the_surface(tmp_path):
     text = ("prescriptions:\n  - id: p\n    surfaces:\n"
             "      - {radius_mm: 0, thickness_mm: 5, n: 1.5, stop: true}\n")
-    path, error = load_error(tmp_path, text)
+    _path, error = load_error(tmp_path, text)
     assert "surface 1, radius_mm: must not be 0" in str(error)
 
 
 def test_scene_distance_needs_a_length(tmp_path):
-    path, error = load_error(tmp_path, "scenes:\n  - id: s\n    distance: three metres\n")
+    _path, error = load_error(tmp_path, "scenes:\n  - id: s\n    distance: three metres\n")
     assert error.key == "distance" and "is not a length" in str(error)
 
 

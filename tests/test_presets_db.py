@@ -231,7 +231,7 @@ def test_precedence_across_tiers(isolated):
     second = _write(isolated / "two.yaml", _sensor_file(39))
     db = load_db(extra_files=(first, second))
     assert db.sensor("full-frame").width_mm == 39 and db.sensor("full-frame").tier == f"--presets {second}"
-    assert [tier for tier, _ in db.files][0] == "shipped"
+    assert next(tier for tier, _ in db.files) == "shipped"
 
 
 def test_later_tier_replaces_aliases_of_the_preset_it_overrides(isolated):

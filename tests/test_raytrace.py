@@ -157,7 +157,7 @@ def test_snell_law_at_a_flat_interface():
     )
     tracer = real_tracer(block)
     sin_in = np.array([0.0, 0.1, 0.5, 0.9])
-    y, z, m, l = tracer.trace(np.zeros(4), sin_in, np.sqrt(1 - sin_in**2), end=1)
+    _y, _z, m, l = tracer.trace(np.zeros(4), sin_in, np.sqrt(1 - sin_in**2), end=1)
     np.testing.assert_allclose(m, sin_in / 1.5, rtol=1e-15)
     np.testing.assert_allclose(m * m + l * l, 1.0, rtol=1e-15)
 

@@ -94,7 +94,7 @@ class _Columns:
             if target[0] in self.params:
                 self.aliases.setdefault(key, target)
 
-        self.ignored = getattr(command, "output_keys", frozenset())
+        self.ignored: frozenset[str] = getattr(command, "output_keys", frozenset())
         self.known: dict[str, tuple[str, str | None] | None] = {}
 
     def resolve(self, column: str) -> tuple[str, str | None] | None:

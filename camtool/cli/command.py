@@ -107,7 +107,7 @@ def camtool_command(
                 return
             emit(equipped(ctx, **params), fmt, units, fields)
 
-        wrapped = equipment_options(output_options(run))
+        wrapped: Callable[..., Any] = equipment_options(output_options(run))
         if batch:
             wrapped = batch_options(wrapped)
         command = click.command(name)(click.pass_context(wrapped))

@@ -54,8 +54,8 @@ def _plane_columns(name: str, short: str) -> list[Column]:
     ]
 
 
-def _single(ctx: click.Context, values: Sequence[Any], option: str) -> float | None:
-    flat = flatten(values) if isinstance(values, (list, tuple)) else [values]
+def _single(ctx: click.Context, values: Sequence[Any], option: str) -> Any:
+    flat: list[Any] = flatten(values) if isinstance(values, (list, tuple)) else [values]
     flat = [v for v in flat if v is not None]
     if len(flat) > 1:
         raise click.UsageError(f"Option '{option}' takes one value here.", ctx)
@@ -123,8 +123,9 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch) if apertures else (None, "")
     frame = chosen.height_mm if fill_axis == "height" else chosen.width_mm
-    count, columns = combine_params(ctx, focal, *([apertures, cocs] if apertures else []))
-    f, n, c = (columns + (None, None))[:3]
+    optical: list[Any] = [apertures, cocs] if apertures else []
+    count, columns = combine_params(ctx, focal, *optical)
+    f, n, c = ((*columns, None, None))[:3]
     values: dict[str, Any] = {"f_number": n, "coc_mm": c, "distance_from": distance_from,
                               "background_mm": behind, "foreground_mm": before}
     with library_errors(ctx):

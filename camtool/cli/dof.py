@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
@@ -128,7 +130,7 @@ def _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavele
     """``--model all``: one row per scene and model, the most complete model last."""
     with library_errors(ctx), ladder_errors(ctx):
         rungs = compare_models(f, n, c, s, distance_from, lens, diffraction, wavelength)
-    rows = []
+    rows: list[dict[str, Any]] = []
     per_model = []
     for rung in rungs:
         limits = rung.result.limits

@@ -69,13 +69,15 @@ def load_prescription(ctx: click.Context, path: str) -> Any:
             data = yaml.safe_load(handle)
         return prescription_from_mapping(data, source=name)
     except OSError as error:
-        raise click.BadParameter(f"{path}: {error.strerror or error}", ctx=ctx, param=param_named(ctx, "prescription_file"))
+        raise click.BadParameter(f"{path}: {error.strerror or error}", ctx=ctx,
+                                 param=param_named(ctx, "prescription_file")) from None
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         where = f" (line {mark.line + 1})" if mark is not None else ""
-        raise click.BadParameter(f"{name}: not valid YAML{where}", ctx=ctx, param=param_named(ctx, "prescription_file"))
+        raise click.BadParameter(f"{name}: not valid YAML{where}", ctx=ctx,
+                                 param=param_named(ctx, "prescription_file")) from None
     except PrescriptionError as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "prescription_file"))
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "prescription_file")) from None
 
 
 def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None, prescription_file: str | None,
@@ -103,7 +105,7 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
             prescription = prescription_from_mapping(preset_lens.prescription,
                                                      source=getattr(preset_lens, "prescription_id", None) or "lens")
         except PrescriptionError as error:
-            raise click.ClickException(str(error))
+            raise click.ClickException(str(error)) from None
     if p is None and delta is None and prescription is None:
         return None
     return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)

@@ -55,7 +55,7 @@ class LengthType(_ListType):
         self.allow_inf = allow_inf
         self.valid = f"> 0 {default_unit}" + (" (or inf)" if allow_inf else "")
 
-    def parse(self, text: str) -> float:  # type: ignore[override]
+    def parse(self, text: str) -> float:
         return parse_length(text, self.default_unit)
 
     def check(self, value: float) -> bool:
@@ -68,7 +68,7 @@ class FNumberType(_ListType):
     name = "f-number"
     valid = "0.7 to 1024 (written 8, f/8 or f8)"
 
-    def parse(self, text: str) -> float:  # type: ignore[override]
+    def parse(self, text: str) -> float:
         return parse_f_number(text)
 
     def check(self, value: float) -> bool:
@@ -81,7 +81,7 @@ class TimeType(_ListType):
     name = "time"
     valid = "> 0 s (written 1/250, 0.5, 2s, 1m30s)"
 
-    def parse(self, text: str) -> float:  # type: ignore[override]
+    def parse(self, text: str) -> float:
         return parse_time(text)
 
 
@@ -94,7 +94,7 @@ class NumberType(_ListType):
         self.low, self.high = low, high
         self.valid = f"{low:g} to {high:g}"
 
-    def parse(self, text: str) -> float:  # type: ignore[override]
+    def parse(self, text: str) -> float:
         try:
             return float(text)
         except ValueError:
@@ -104,6 +104,6 @@ class NumberType(_ListType):
         return self.low <= value <= self.high
 
 
-def flatten(values: Iterable[list[float]] | None) -> list[float]:
+def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
     """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]

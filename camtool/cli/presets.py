@@ -95,7 +95,7 @@ def describe(db: Any, preset: Any) -> dict[str, Any]:
     for item in dataclasses.fields(preset):
         value = getattr(preset, item.name)
         if dataclasses.is_dataclass(value):
-            value = value.id  # a referenced preset (a camera's sensor, a scene's lens)
+            value = getattr(value, "id", value)  # a referenced preset (a camera's sensor, a scene's lens)
         elif isinstance(value, tuple):
             value = list(value)
         if item.name not in ("data", "prescription"):

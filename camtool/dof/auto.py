@@ -42,6 +42,7 @@ estimate is about twice the actual difference on the shared lenses.
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from typing import Any, NamedTuple
 
@@ -190,7 +191,7 @@ def _interpolate(table: tuple[tuple[float, float], ...], m: float) -> float:
     """Piecewise-linear interpolation in m; the last value beyond the table."""
     if not math.isfinite(m):
         return table[-1][1]
-    for (m0, s0), (m1, s1) in zip(table, table[1:]):
+    for (m0, s0), (m1, s1) in itertools.pairwise(table):
         if m <= m1:
             return s0 + (s1 - s0) * max(m - m0, 0.0) / (m1 - m0)
     return table[-1][1]

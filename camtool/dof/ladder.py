@@ -110,7 +110,7 @@ class ModelResult(NamedTuple):
     """
 
     limits: DofLimits
-    model: str
+    model: Any  # str, or an array of str for array input
     error_estimate: Any
 
 

@@ -220,7 +220,7 @@ def _hyperfocal_candidates(fo: FirstOrder, f_number: float, coc_mm: float) -> li
     u_hyp = f * f / (f_number * coc_mm) + f
     w_closest = 1.0 / (2.0 * f - fo.z_h_mm)
     w_hyp = 1.0 / (u_hyp - fo.z_h_mm) if u_hyp > 2.0 * f else w_closest
-    return [0.0] + sorted({min(w_hyp * q, w_closest) for q in (0.5, 0.8, 0.95, 1.0, 1.05, 1.25, 2.0, 4.0)})
+    return [0.0, *sorted({min(w_hyp * q, w_closest) for q in (0.5, 0.8, 0.95, 1.0, 1.05, 1.25, 2.0, 4.0)})]
 
 
 def _hyperfocal_problem(scene: _Scene, fo: FirstOrder, coc_mm: float) -> tuple[_Bracket, Any] | float:
@@ -260,20 +260,20 @@ def _limit_problems(
     ratio = 1.0 if w_focus == 0.0 else (1.0 + w_focus * (fo.z_h_mm - f)) / (1.0 + w_focus * fo.z_e_mm)
     delta = scene.f_number * coc_mm * ratio / (f * f)
     far = None
-    near_candidates = [w_focus] + _pupil_steps(fo, w_focus, delta, _NEAR_FACTORS)
+    near_candidates = [w_focus, *_pupil_steps(fo, w_focus, delta, _NEAR_FACTORS)]
     if excess(scene.evaluate([0.0])[0], 0.0) > 0.0:
-        candidates = [w_focus] + _pupil_steps(fo, w_focus, -delta, _NEAR_FACTORS) + [0.0]
+        candidates = [w_focus, *_pupil_steps(fo, w_focus, -delta, _NEAR_FACTORS), 0.0]
         scene.plan(near_candidates)
         found = scene.bracket(candidates, excess)
         assert found is not None  # excess < 0 at the focus, > 0 at infinity
         far = (found, excess)
-    factors = _NEAR_FACTORS
+    factors: tuple[float, ...] = _NEAR_FACTORS
     for _ in range(60):
         found = scene.bracket(near_candidates, excess)
         if found is not None:
             return (found, excess), far
         factors = tuple(q * 4.0 for q in factors[-3:])
-        near_candidates = [w_focus] + _pupil_steps(fo, w_focus, delta, factors)
+        near_candidates = [w_focus, *_pupil_steps(fo, w_focus, delta, factors)]
     raise RayTraceError(f"{scene.tracer._name()}: no near limit in front of the lens")
 
 

@@ -31,7 +31,7 @@ from camtool.core.errors import require, require_positive
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import lens_distances
 
-__all__ = ["DISTANCE_PLANES", "thick_dof", "working_f_number", "entrance_pupil_offset_mm"]
+__all__ = ["DISTANCE_PLANES", "entrance_pupil_offset_mm", "thick_dof", "working_f_number"]
 
 DISTANCE_PLANES = ("sensor", "lens", "entrance_pupil")
 """Planes a distance may be measured from: the sensor (image) plane, the front

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from camtool.core.errors import require_positive
 from camtool.optics.prescription import Prescription
 
-__all__ = ["FirstOrder", "first_order", "paraxial_dof", "paraxial_trace"]
+__all__ = ["FirstOrder", "first_order", "paraxial_trace"]
 
 
 @dataclass(frozen=True)

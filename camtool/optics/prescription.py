@@ -20,14 +20,15 @@ mapping a YAML loader produced and names the source in its error messages.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 __all__ = [
-    "PrescriptionError",
     "Prescription",
+    "PrescriptionError",
     "Surface",
     "prescription_from_mapping",
 ]
@@ -237,7 +238,7 @@ def _surface(data: Any, number: int, last: bool, source: str) -> Surface:
 
 def _check_contacts(surfaces: tuple[Surface, ...], source: str) -> None:
     """Zero thickness is allowed only where one of the two surfaces is flat (a stop on a vertex)."""
-    for i, (here, after) in enumerate(zip(surfaces, surfaces[1:]), start=1):
+    for i, (here, after) in enumerate(itertools.pairwise(surfaces), start=1):
         if here.thickness_mm == 0.0 and here.curvature != 0.0 and after.curvature != 0.0:
             raise PrescriptionError(
                 source, "thickness_mm", f"is 0 between two curved surfaces ({i} and {i + 1}): they would intersect", i

@@ -14,7 +14,7 @@ import math
 from collections.abc import Callable, Generator, Sequence
 from typing import Any
 
-__all__ = ["brent_steps", "solve_lockstep", "brent"]
+__all__ = ["brent", "brent_steps", "solve_lockstep"]
 
 _EPS = 2.0**-52
 

@@ -39,7 +39,7 @@ from camtool.presets.schema import (
 class _Entry:
     """A record with the file and tier it came from; the record itself is read only when needed."""
 
-    __slots__ = ("keys", "path", "tier", "_record", "_load")
+    __slots__ = ("_load", "_record", "keys", "path", "tier")
 
     def __init__(self, record: dict[str, Any] | None, path: str, tier: str, keys: list[str] | None = None,
                  load: Callable[[], dict[str, Any]] | None = None) -> None:
@@ -286,10 +286,11 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
     r = entry.record
     focal_min = r.get("focal_min_mm", r.get("focal_length_mm"))
     focal_max = r.get("focal_max_mm", r.get("focal_length_mm"))
+    assert focal_min is not None and focal_max is not None  # the schema requires one of the two spellings
     prescription = db._reference(entry, "lens", "prescription") if "prescription" in r else None
     sensor = db._reference(entry, "lens", "sensor") if "sensor" in r else None
     return Lens(
-        r["id"], r["name"], focal_min, focal_max, r.get("f_number_min"), r.get("f_number_max"),
+        r["id"], r["name"], float(focal_min), float(focal_max), r.get("f_number_min"), r.get("f_number_max"),
         r.get("f_number_min_tele"), r.get("min_focus_mm"), r.get("max_magnification"),
         r.get("pupil_magnification"), r.get("hiatus_mm"),
         prescription_id=prescription.id if prescription else None,

@@ -29,6 +29,7 @@ cannot be parsed is reported and skipped, never failing the import.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import re
@@ -227,11 +228,11 @@ def _scan(root: ElementTree.Element, collector: _Collector) -> None:
         if mount and model:
             name = _display_name(_text(camera, "maker"), model)
             collector.mount_cameras.setdefault(mount, []).append((name, slugify(name)))
-    for lens in root.iter("lens"):
-        aspect = _aspect(_text(lens, "aspect-ratio"))
-        for mount in lens.findall("mount"):
-            if aspect and mount.text:
-                collector.mount_aspect.setdefault(mount.text.strip(), aspect)
+    for lens_element in root.iter("lens"):
+        aspect = _aspect(_text(lens_element, "aspect-ratio"))
+        for mount_element in lens_element.findall("mount"):
+            if aspect and mount_element.text:
+                collector.mount_aspect.setdefault(mount_element.text.strip(), aspect)
 
 
 def _cameras(root: ElementTree.Element, source: str, collector: _Collector) -> None:
@@ -426,7 +427,8 @@ def _write_atomically(target: Path, text: str) -> None:
 
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
-        handle = tempfile.NamedTemporaryFile("w", encoding="utf-8", dir=target.parent, prefix=".lensfun-",
+        # closed by hand below, after the rename, so a failed write can remove it
+        handle = tempfile.NamedTemporaryFile("w", encoding="utf-8", dir=target.parent, prefix=".lensfun-",  # noqa: SIM115
                                              suffix=".yaml.tmp", delete=False)
     except OSError as error:
         raise LensfunImportError(f"cannot write {target}: {error.strerror or error}") from None
@@ -442,7 +444,5 @@ def _write_atomically(target: Path, text: str) -> None:
     finally:
         if os.path.exists(handle.name):
             os.unlink(handle.name)
-    try:
+    with contextlib.suppress(PresetFileError):
         read_file(str(target), cache_dir=paths.cache_dir())
-    except PresetFileError:
-        pass

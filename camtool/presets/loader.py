@@ -14,6 +14,7 @@ never imports yaml.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import zlib
@@ -42,7 +43,7 @@ MAX_BYTES = 64 * 1024 * 1024
 class Problem:
     """One problem found in a file (see :class:`PresetFileError` for the fields)."""
 
-    __slots__ = ("problem", "line", "kind", "preset_id", "key")
+    __slots__ = ("key", "kind", "line", "preset_id", "problem")
 
     def __init__(self, problem: str, line: int | None = None, kind: str | None = None,
                  preset_id: str | None = None, key: str | None = None) -> None:
@@ -147,7 +148,7 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     except OSError as error:
         raise PresetFileError(path, f"cannot read the file: {error.strerror or error}") from None
     stamp = [CACHE_FORMAT, os.path.abspath(path), stat.st_size, stat.st_mtime_ns]
-    cache_path = _cache_path(cache_dir, stamp[1]) if cache_dir else None
+    cache_path = _cache_path(cache_dir, os.path.abspath(path)) if cache_dir else None
     if cache_path:
         cached = _read_cache(cache_path, stamp)
         if cached is not None:
@@ -387,7 +388,5 @@ def _write_cache(cache_path: str, stamp: list[Any], records: dict[str, list[dict
             handle.writelines(blobs)
         os.replace(temporary, cache_path)
     except (OSError, TypeError, ValueError):
-        try:
+        with contextlib.suppress(OSError):
             os.unlink(temporary)
-        except OSError:
-            pass

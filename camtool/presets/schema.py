@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -422,7 +422,7 @@ _SCENE_UNIT_KEYS = {"focal_length": "focal_length_mm", "distance": "distance_mm"
                     "subject_size": "subject_size_mm", "background": "background_mm", "coc": "coc_mm"}
 
 
-def suggest(word: str, choices: list[str] | tuple[str, ...] | set[str]) -> str:
+def suggest(word: str, choices: Iterable[str]) -> str:
     """' (did you mean X?)' for the closest choice, or '' when none is close."""
     import difflib
 

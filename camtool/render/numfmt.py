@@ -15,7 +15,7 @@ SIGNIFICANT = 4
 INFINITY = "∞"
 
 
-def significant(value: float, digits: int = SIGNIFICANT) -> str:
+def significant(value: float | None, digits: int = SIGNIFICANT) -> str:
     """Format ``value`` with ``digits`` significant figures, in plain notation up to 10⁷.
 
     >>> significant(4188.234)
@@ -63,7 +63,7 @@ def distance_unit(values_mm: Sequence[float | None], units: str = "metric") -> t
     return table[-1][0], table[-1][1]
 
 
-def feet_inches(value_mm: float) -> str:
+def feet_inches(value_mm: float | None) -> str:
     """A distance as photographers in feet write it: 9' 10.1", 378' 9", ∞.
 
     Inches get one decimal below 100 ft and none above (four significant
