@@ -188,7 +188,7 @@ def ladder_errors(ctx: click.Context) -> Any:
         try:
             yield
         except ModelUnavailable as error:
-            raise click.BadParameter(f"{error.model} is not available here: it needs {error.missing}",
+            raise click.BadParameter(f"{error.model} is not available here: it needs {_missing(ctx, error)}",
                                      ctx=ctx, param=param_named(ctx, "model")) from None
         except DomainError as error:
             name = _LENS_PARAMS.get(error.param)
@@ -204,6 +204,15 @@ def ladder_errors(ctx: click.Context) -> Any:
             raise
 
     return translate()
+
+
+def _missing(ctx: click.Context, error: Any) -> str:
+    """What an unavailable model needs, with only the options this command has."""
+    from camtool.dof.ladder import either
+
+    options = {opt for param in ctx.command.params for opt in (*param.opts, *param.secondary_opts)}
+    sources = [text for text in error.supplied_by if any(word in options for word in text.split())]
+    return f"{error.needs} ({either(sources)})" if sources else error.missing
 
 
 _LENS_PARAMS = {"pupil_magnification": "pupil_mag", "hiatus_mm": "hiatus", "wavelength_nm": "wavelength"}

@@ -28,12 +28,13 @@ from typing import Any
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
+from camtool.core.planes import PLANES, check_plane
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import lens_distances
 
 __all__ = ["DISTANCE_PLANES", "entrance_pupil_offset_mm", "thick_dof", "working_f_number"]
 
-DISTANCE_PLANES = ("sensor", "lens", "entrance_pupil")
+DISTANCE_PLANES = PLANES
 """Planes a distance may be measured from: the sensor (image) plane, the front
 principal plane H (``"lens"``), or the entrance pupil."""
 
@@ -101,8 +102,7 @@ def working_f_number(f_number: Any, magnification: Any, pupil_magnification: Any
 
 def _check(f: Any, n: Any, c: Any, p: Any, hiatus: Any, distance: Any, distance_from: str) -> None:
     """Raise DomainError / ValueError for inputs outside the model's domain."""
-    if distance_from not in DISTANCE_PLANES:
-        raise ValueError(f"distance_from must be one of {', '.join(DISTANCE_PLANES)}, not {distance_from!r}")
+    check_plane(distance_from, DISTANCE_PLANES)
     require_positive("focal_length_mm", f)
     require_positive("f_number", n, unit="")
     require_positive("coc_mm", c)

@@ -15,6 +15,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
+from camtool.core.planes import FOCUS_PLANES, check_plane
 
 
 class LensPlaneDistances(NamedTuple):
@@ -212,18 +213,16 @@ def focus_geometry(
     >>> focus_geometry(50.0, 100.0, distance_from="lens").sensor_distance_mm
     200.0
     """
-    if distance_from == "sensor":
+    if check_plane(distance_from, FOCUS_PLANES) == "sensor":
         u, v = lens_distances(focal_length_mm, distance_mm, hiatus_mm)
         sensor = distance_mm
-    elif distance_from == "lens":
+    else:
         require_positive("focal_length_mm", focal_length_mm)
         require("distance_mm", distance_mm, distance_mm >= 2.0 * focal_length_mm,
                 "at least {limit} from the lens (1:1, 2 × focal length)", limit=2.0 * focal_length_mm)
         u = distance_mm
         v = image_distance_mm(focal_length_mm, u)
         sensor = u + v + hiatus_mm
-    else:
-        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
     m = v / u
     return FocusGeometry(u, v, sensor, m, v - focal_length_mm)
 
