@@ -85,7 +85,7 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
     """The lens data for the ladder, or None when nothing is known beyond the focal length.
 
     ``preset_lens`` is a lens preset (``pupil_magnification``, ``hiatus_mm``
-    and ``prescription``: a mapping, or None); by default the one ``--lens``
+    and ``prescription``: a validated optics prescription, or None); by default the one ``--lens``
     left in ``ctx.meta``. Values on the command line win over the preset's.
     """
     if preset_lens is None:
@@ -95,17 +95,9 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
     prescription = None
     if prescription_file is not None:
         prescription = load_prescription(ctx, prescription_file)
-    elif getattr(preset_lens, "prescription", None) is not None:
-        from camtool.optics.prescription import (
-            PrescriptionError,
-            prescription_from_mapping,
-        )
-
-        try:
-            prescription = prescription_from_mapping(preset_lens.prescription,
-                                                     source=getattr(preset_lens, "prescription_id", None) or "lens")
-        except PrescriptionError as error:
-            raise click.ClickException(str(error)) from None
+    else:
+        # validated once, when the preset was built: camtool.optics.prescription.Prescription
+        prescription = getattr(preset_lens, "prescription", None)
     if p is None and delta is None and prescription is None:
         return None
     return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)

@@ -97,6 +97,7 @@ def estimate_effects(
     hiatus_mm: Any = 0.0,
     airy_mm: Any = 0.0,
     prescription: Any = None,
+    geometry: Any = None,
 ) -> Effects:
     """Estimate, before computing, how much each effect changes this scene's depth of field.
 
@@ -112,6 +113,9 @@ def estimate_effects(
         Airy diameter at the focus when diffraction is asked for, else 0.
     prescription : Prescription or None
         Enables the aberration estimate.
+    geometry : FocusGeometry or None
+        ``focus_geometry(f, distance_mm, distance_from, hiatus_mm)`` when the
+        caller has it (the conversion is then not repeated).
 
     Returns
     -------
@@ -132,7 +136,8 @@ def estimate_effects(
 
     f, nc, p, delta = focal_length_mm, f_number * coc_mm, pupil_magnification, hiatus_mm
     xp = ops(f, f_number, coc_mm, distance_mm, p, delta, airy_mm)
-    geometry = focus_geometry(f, distance_mm, distance_from, delta)
+    if geometry is None:
+        geometry = focus_geometry(f, distance_mm, distance_from, delta)
     with quiet(xp):
         u_e = xp.minimum(geometry.object_mm, f * f / nc + f)
         w = u_e - f

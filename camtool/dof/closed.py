@@ -20,7 +20,7 @@ from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
 from camtool.core.planes import FOCUS_PLANES, check_plane
 from camtool.dof.limits import DofLimits
-from camtool.geometry.thinlens import lens_distances
+from camtool.geometry.thinlens import LensPlaneDistances, lens_distances
 
 DISTANCE_PLANES = FOCUS_PLANES
 
@@ -110,7 +110,8 @@ def approx_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: An
 
 
 def thin_dof(
-    focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor"
+    focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor",
+    focus: LensPlaneDistances | None = None,
 ) -> DofLimits:
     """Exact thin-lens depth of field in mm.
 
@@ -132,6 +133,10 @@ def thin_dof(
     distance_mm : float or array
         Focus distance: from the sensor, ≥ 4f (1:1); from the lens, ≥ 2f. ``inf`` allowed.
     distance_from : ``"sensor"`` or ``"lens"``
+    focus : LensPlaneDistances or None
+        From the sensor: (u, v) of ``distance_mm`` already converted by
+        :func:`camtool.geometry.thinlens.lens_distances` (hiatus 0) and
+        checked, for a caller that has them; None converts here.
 
     References
     ----------
@@ -152,7 +157,7 @@ def thin_dof(
     h0 = f * f / (f_number * coc_mm)
     h = h0 + f
     if check_plane(distance_from, DISTANCE_PLANES) == "sensor":
-        u, v = lens_distances(f, distance_mm)
+        u, v = lens_distances(f, distance_mm) if focus is None else focus
         offset = v
         # H + v_H = H + f + N·c while H ≥ 2f. Below 2f (N·c > f, pinholes) every
         # reachable focus lies beyond H, but D = u + v grows again as u drops

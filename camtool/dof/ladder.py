@@ -18,6 +18,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops
 from camtool.core.errors import DomainError, first_bad
+from camtool.core.planes import FOCUS_PLANES, check_plane
 from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
 from camtool.dof.limits import DofLimits
@@ -281,34 +282,36 @@ def _scene_lens(lens: LensData) -> tuple[Any, Any]:
     return params if params is not None else (1.0, 0.0)
 
 
-def _usable_coc(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, wavelength_nm: Any) -> tuple[Any, Any]:
+def _focus(f: Any, s: Any, plane: str, lens: LensData) -> rungs.Focus:
+    """The one conversion of the focus distance for a call: checked reachable (1:1 at the closest), thin model's messages.
+
+    From the sensor with the lens's hiatus (0 when unknown); from the lens
+    the hiatus does not move u or v.
+    """
+    from camtool.core.errors import require, require_positive
+
+    if check_plane(plane, FOCUS_PLANES) == "lens":
+        require_positive("distance_mm", s, allow_inf=True)
+        require("distance_mm", s, s >= 2.0 * f,
+                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
+        return rungs.Focus(focus_geometry(f, s, plane), 0.0)
+    delta = _scene_lens(lens)[1]
+    return rungs.Focus(focus_geometry(f, s, plane, delta), delta)
+
+
+def _usable_coc(n: Any, c: Any, focus: rungs.Focus, lens: LensData, wavelength_nm: Any) -> tuple[Any, Any]:
     """(usable CoC √(c² − b_airy²), b_airy) with the working f-number at the focus distance."""
     from camtool.dof.diffraction import airy_diameter_mm, usable_coc_mm
 
-    p, delta = _scene_lens(lens)
-    m = focus_geometry(f, s, plane, delta if plane == "sensor" else 0.0).magnification
+    p = _scene_lens(lens)[0]
+    m = focus.geometry.magnification
     usable = usable_coc_mm(c, n, m, p, wavelength_nm)
     return usable, airy_diameter_mm(n * (1.0 + m / p), wavelength_nm)
 
 
-def _check_focus(f: Any, s: Any, plane: str, lens: LensData) -> None:
-    """The focus distance must be reachable (1:1 at the closest), with the thin model's messages."""
-    from camtool.core.errors import require, require_positive
-    from camtool.geometry.thinlens import lens_distances
-
-    if plane == "lens":
-        require_positive("distance_mm", s, allow_inf=True)
-        require("distance_mm", s, s >= 2.0 * f,
-                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
-    elif plane == "sensor":
-        lens_distances(f, s, _scene_lens(lens)[1])
-    else:
-        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {plane!r}")
-
-
-def _effects(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, airy: Any) -> Effects:
-    p, delta = _scene_lens(lens)
-    return estimate_effects(f, n, c, s, plane, p, delta if plane == "sensor" else 0.0, airy, lens.prescription)
+def _effects(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, airy: Any, focus: rungs.Focus) -> Effects:
+    p = _scene_lens(lens)[0]
+    return estimate_effects(f, n, c, s, plane, p, focus.hiatus_mm, airy, lens.prescription, focus.geometry)
 
 
 def _worst(value: Any) -> float:
@@ -337,8 +340,8 @@ def choose(effects: Effects, models: tuple[str, ...], diffraction: bool, toleran
 
 
 def _run(name: str, applied: bool, f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData,
-         usable: Any) -> DofLimits:
-    return rungs.by_name()[name].run(f, n, usable if applied else c, s, plane, lens)
+         usable: Any, focus: rungs.Focus | None = None) -> DofLimits:
+    return rungs.by_name()[name].run(f, n, usable if applied else c, s, plane, lens, focus)
 
 
 def _label(name: str, applied: bool) -> str:
@@ -425,17 +428,16 @@ def depth_of_field(
     from camtool.dof.closed import check_inputs
 
     check_inputs(f, f_number, coc_mm)
-    _check_focus(f, distance_mm, distance_from, lens)
-    usable, airy = _usable_coc(f, f_number, coc_mm, distance_mm, distance_from, lens, wavelength_nm) \
-        if diffraction else (coc_mm, 0.0)
-    effects = _effects(f, f_number, coc_mm, distance_mm, distance_from, lens, airy)
+    focus = _focus(f, distance_mm, distance_from, lens)  # converted once, handed to the estimates and the model
+    usable, airy = _usable_coc(f_number, coc_mm, focus, lens, wavelength_nm) if diffraction else (coc_mm, 0.0)
+    effects = _effects(f, f_number, coc_mm, distance_mm, distance_from, lens, airy, focus)
     if model != "auto":
-        limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
+        limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(model, diffraction), left_out(effects, model, diffraction))
     inputs = (f, f_number, coc_mm, distance_mm, usable)
     if all(isinstance(v, (int, float)) for v in (*inputs, airy)):
         name, applied = choose(effects, available_models(lens), diffraction, tolerance)
-        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
+        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
     return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens)
 

@@ -14,13 +14,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from camtool.dof.closed import approx_dof, thin_dof
 from camtool.dof.limits import DofLimits
-from camtool.geometry.thinlens import focus_geometry
+from camtool.geometry.thinlens import FocusGeometry, LensPlaneDistances, focus_geometry
 
-__all__ = ["NO_LENS", "RUNGS", "LensData", "Rung", "by_name", "names"]
+__all__ = ["NO_LENS", "RUNGS", "Focus", "LensData", "Rung", "by_name", "names"]
 
 
 @dataclass(frozen=True)
@@ -73,8 +73,9 @@ NO_LENS = LensData()
 class Rung:
     """One model of the ladder.
 
-    ``run(f, N, c, s, plane, lens)`` returns :class:`camtool.dof.limits.DofLimits`
-    (lengths in mm). ``can_run(lens)`` says whether the lens data allow it;
+    ``run(f, N, c, s, plane, lens, focus)`` returns :class:`camtool.dof.limits.DofLimits`
+    (lengths in mm); ``focus`` (a :class:`Focus`, or None) is the dispatcher's
+    one conversion of the focus distance, for the rung to reuse. ``can_run(lens)`` says whether the lens data allow it;
     when not, ``needs`` names the missing data and ``supplied_by`` the options
     that supply them (a command names those it has). ``left_out`` lists the
     geometric effects of :class:`camtool.dof.auto.Effects` the model neglects
@@ -93,30 +94,47 @@ class Rung:
     hyperfocal_help: str | None = None
 
 
-def _approx(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    # The approximation has no notion of the closest focus; the scene still must be reachable.
-    focus_geometry(f, s, plane)
+class Focus(NamedTuple):
+    """The focus distance converted once by the dispatcher: the geometry, with the hiatus it used (mm)."""
+
+    geometry: FocusGeometry
+    hiatus_mm: float
+
+
+def _distances(focus: Focus | None, plane: str, hiatus_mm: float) -> LensPlaneDistances | None:
+    """(u, v) of the dispatcher's conversion when it used this plane's hiatus (a rung then converts nothing)."""
+    if focus is None or plane != "sensor" or focus.hiatus_mm != hiatus_mm:
+        return None
+    return LensPlaneDistances(focus.geometry.object_mm, focus.geometry.image_mm)
+
+
+def _approx(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
+    # The approximation has no notion of the closest focus; the scene still must be reachable
+    # (the dispatcher's conversion has checked it).
+    if focus is None:
+        focus_geometry(f, s, plane)
     return approx_dof(f, n, c, s)
 
 
-def _thin(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    return thin_dof(f, n, c, s, plane)
+def _thin(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
+    return thin_dof(f, n, c, s, plane, _distances(focus, plane, 0.0))
 
 
-def _thick(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
+def _thick(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
     from camtool.dof.thick import thick_dof
 
     p, delta = lens.thick_parameters()  # type: ignore[misc]
-    return thick_dof(f, n, c, s, pupil_magnification=p, hiatus_mm=delta, distance_from=plane)
+    return thick_dof(f, n, c, s, pupil_magnification=p, hiatus_mm=delta, distance_from=plane,
+                     focus=_distances(focus, plane, delta))
 
 
-def _paraxial(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
+def _paraxial(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
     from camtool.dof.paraxial import paraxial_dof
 
     return paraxial_dof(lens.prescription, n, c, s, plane)
 
 
-def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
+def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
     from camtool.dof.realray import raytrace_dof
 
     return raytrace_dof(lens.prescription, n, c, s, plane)
