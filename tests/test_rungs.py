@@ -103,3 +103,43 @@ def test_a_lens_preset_hands_over_the_optics_prescription() -> None:
     assert isinstance(lens.prescription, Prescription)
     assert lens.prescription is db.prescription("dgauss100").optics
     assert isinstance(db.prescription("dgauss100").optics, Prescription)
+
+
+@pytest.mark.parametrize("model", ["approx", "thin", "thick", "auto"])
+@pytest.mark.parametrize("diffraction", [False, True])
+def test_the_focus_distance_is_converted_once(monkeypatch: pytest.MonkeyPatch, model: str, diffraction: bool) -> None:
+    import camtool.dof.closed
+    import camtool.dof.thick
+    import camtool.geometry.thinlens as thinlens
+
+    calls = []
+    original = thinlens.lens_distances
+
+    def counted(*args):
+        calls.append(args)
+        return original(*args)
+
+    for module in (thinlens, camtool.dof.closed, camtool.dof.thick):
+        monkeypatch.setattr(module, "lens_distances", counted)
+    # (with a hiatus the thin model, which has none, converts with its own: that is a second, different geometry)
+    lens = LensData(pupil_magnification=0.8)
+    once = depth_of_field(model, 50.0, 8.0, 0.03, 3000.0, lens=lens, diffraction=diffraction)
+    assert len(calls) == 1
+    monkeypatch.undo()
+    # the same answer as each piece converting on its own
+    assert once.limits == thin_or_thick(model, lens, diffraction)
+
+
+def thin_or_thick(model: str, lens: LensData, diffraction: bool):
+    from camtool.dof.rungs import by_name
+
+    result = depth_of_field(model, 50.0, 8.0, 0.03, 3000.0, lens=lens, diffraction=diffraction)
+    name = str(result.model).split("+")[0]
+    c = 0.03
+    if diffraction:
+        from camtool.dof.diffraction import usable_coc_mm
+        from camtool.geometry.thinlens import focus_geometry
+
+        m = focus_geometry(50.0, 3000.0, "sensor").magnification
+        c = usable_coc_mm(0.03, 8.0, m, 0.8, 550.0) if "+diffraction" in str(result.model) else 0.03
+    return by_name()[name].run(50.0, 8.0, c, 3000.0, "sensor", lens)
