@@ -143,3 +143,32 @@ def thin_or_thick(model: str, lens: LensData, diffraction: bool):
         m = focus_geometry(50.0, 3000.0, "sensor").magnification
         c = usable_coc_mm(0.03, 8.0, m, 0.8, 550.0) if "+diffraction" in str(result.model) else 0.03
     return by_name()[name].run(50.0, 8.0, c, 3000.0, "sensor", lens)
+
+
+def test_auto_over_arrays_reuses_the_conversion(monkeypatch: pytest.MonkeyPatch) -> None:
+    import numpy as np
+
+    import camtool.dof.closed
+    import camtool.dof.thick
+    import camtool.geometry.thinlens as thinlens
+    from camtool.dof.rungs import by_name
+
+    distances = np.array([300.0, 3000.0, 30000.0, np.inf])
+    lens = LensData(pupil_magnification=0.8)
+    calls = []
+    original = thinlens.lens_distances
+
+    def counted(*args):
+        calls.append(args)
+        return original(*args)
+
+    for module in (thinlens, camtool.dof.closed, camtool.dof.thick):
+        monkeypatch.setattr(module, "lens_distances", counted)
+    result = depth_of_field("auto", 50.0, 8.0, 0.03, distances, lens=lens)
+    assert len(calls) == 1
+    monkeypatch.undo()
+    assert len(set(result.model)) > 1  # several rungs ran, each on its own scenes
+    for i, s in enumerate(distances):  # each as its rung computes it alone, converting by itself
+        alone = by_name()[result.model[i]].run(50.0, 8.0, 0.03, float(s), "sensor", lens)
+        assert (result.limits.near_mm[i], result.limits.far_mm[i]) == pytest.approx((alone.near_mm, alone.far_mm),
+                                                                                     rel=1e-12)

@@ -23,7 +23,7 @@ from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
 from camtool.dof.limits import DofLimits
 from camtool.dof.rungs import NO_LENS, LensData
-from camtool.geometry.thinlens import focus_geometry
+from camtool.geometry.thinlens import FocusGeometry, focus_geometry
 
 __all__ = [
     "CHOICES",
@@ -439,11 +439,13 @@ def depth_of_field(
         name, applied = choose(effects, available_models(lens), diffraction, tolerance)
         limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
-    return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens)
+    return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
+                      focus)
 
 
 def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tolerance: float,
-               inputs: tuple[Any, ...], airy: Any, plane: str, lens: LensData) -> ModelResult:
+               inputs: tuple[Any, ...], airy: Any, plane: str, lens: LensData,
+               focus: rungs.Focus | None = None) -> ModelResult:
     """``auto`` over arrays: each scene gets its own cheapest sufficient rung, as a single call would.
 
     The scenes are grouped by the rung chosen, each group runs in one
@@ -452,6 +454,8 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     """
     import numpy as np
 
+    if focus is not None:  # the scenes' (u, v) go with them into each group
+        inputs = (*inputs, focus.geometry.object_mm, focus.geometry.image_mm)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (*inputs, airy, *effects)))
     flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in inputs]
     each = Effects(*(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in effects))
@@ -469,8 +473,10 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
             rows = np.nonzero((chosen == index) & (applied == add))[0]
             if rows.size == 0:
                 continue
-            f, n, c, s, usable = (v[rows] for v in flat)
-            limits = _run(name, add, f, n, c, s, plane, lens, usable)
+            f, n, c, s, usable, *uv = (v[rows] for v in flat)
+            part_focus = None if focus is None else rungs.Focus(
+                FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
+            limits = _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
             for out, value in zip(fields, limits):
                 out[rows] = value
             names[rows] = _label(name, add)
