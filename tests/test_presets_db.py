@@ -172,8 +172,8 @@ def test_lens_fields_and_prescription():
     prime = db.lens("dgauss100-lens")
     assert not prime.is_zoom and prime.focal_length_mm == pytest.approx(100.0037570)
     assert prime.prescription_id == "dgauss100"
-    surfaces = prime.prescription["surfaces"]
-    assert len(surfaces) == 11 and sum(bool(s.get("stop")) for s in surfaces) == 1
+    surfaces = prime.prescription.surfaces
+    assert len(surfaces) == 11 and sum(s.stop for s in surfaces) == 1
 
 
 def test_shipped_prescriptions_build_in_the_optics_module():
@@ -185,9 +185,9 @@ def test_shipped_prescriptions_build_in_the_optics_module():
 
 
 def test_cellphone_prescription_keeps_infinite_radius_and_aspherics():
-    data = load_db().prescription("cellphone").data
-    assert math.isinf(data["surfaces"][0]["radius_mm"])
-    assert data["surfaces"][1]["aspheric"]["a3"] == -0.01895
+    lens = load_db().prescription("cellphone").optics
+    assert math.isinf(lens.surfaces[0].radius_mm)
+    assert dict(lens.surfaces[1].aspheric)[3] == -0.01895
 
 
 def test_scene_resolves_equipment_and_units():
@@ -269,7 +269,7 @@ def test_user_file_with_every_kind():
     scene = db.scene("my-scene")
     assert scene.camera.sensor.id == "my-crop" and scene.sensor.width_mm == 20
     assert scene.camera.pixel_pitch_mm == pytest.approx(0.005)
-    assert scene.lens.prescription["surfaces"][5]["stop"] is True
+    assert scene.lens.prescription.stop_index == 5
     assert (scene.f_number, scene.distance_mm, scene.subject_size_mm, scene.background_mm) == (4, 3000, 1800, math.inf)
     assert validate_file(DATA / "user.yaml") == []
 
