@@ -7,8 +7,10 @@ Known exceptions are listed next to each check with the reason.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
+import yaml
 
 from camtool.presets import load_db, paths
 from camtool.presets.loader import read_file
@@ -203,25 +205,31 @@ def test_every_shipped_zoom_has_per_focal_length_rows():
 
 # --- crop factor against lensfun's ----------------------------------------------------------
 
-# lensfun's <cropfactor> for shipped bodies, from lensfun's data/db/mil-sony.xml (lensfun/lensfun
-# on GitHub). camtool's crop factor comes from the maker's own sensor size; the two must agree
-# within 1.5 %.
-LENSFUN_CROP = {
-    "sony-a7-iv": 1.0,  # ILCE-7M4
-    "sony-a7r-v": 1.0,  # ILCE-7RM5
-    "sony-a1": 1.0,  # ILCE-1
-    "sony-a1-ii": 1.0,  # ILCE-1M2
-    "sony-a7c-ii": 1.0,  # ILCE-7CM2
-    "sony-a7s-iii": 1.0,  # ILCE-7SM3
-    "sony-a9-iii": 1.0,  # ILCE-9M3
-    "sony-fx3": 1.0,  # ILME-FX3
-    "sony-a6700": 1.534,  # ILCE-6700
-}
+# lensfun's <cropfactor> for shipped bodies, from lensfun's data/db/*.xml (lensfun/lensfun on
+# GitHub), recorded with the file, commit and camera model string in tests/data/lensfun-crops.yaml.
+# camtool's crop factor comes from the maker's own sensor size; the two must agree within 1.5 %.
+LENSFUN_DATA = yaml.safe_load((Path(__file__).resolve().parent / "data" / "lensfun-crops.yaml").read_text())
+LENSFUN_CROP = {camera: float(entry["cropfactor"]) for camera, entry in LENSFUN_DATA["cameras"].items()}
 
 # Bodies whose crop factor differs from lensfun's by more than 1.5 %, and why. None of the
 # shipped bodies above does; the 4x5 format (no lensfun entry) differs from the research
 # table's nominal sheet for the reason given in lens_db/sensors.yaml.
 CROP_EXCEPTIONS: dict[str, str] = {}
+
+
+def test_lensfun_crop_data_has_provenance():
+    sources = LENSFUN_DATA["sources"]
+    for source in sources.values():
+        assert source["repository"] == "lensfun/lensfun"
+        assert source["path"].startswith("data/db/") and source["path"].endswith(".xml")
+        assert len(source["commit"]) == 40
+    makers = set()
+    for camera, entry in LENSFUN_DATA["cameras"].items():
+        assert entry["source"] in sources, camera
+        assert entry["model"], camera
+        makers.add(camera.split("-")[0])
+    # Every maker whose lensfun file lists a shipped body is compared, not only Sony.
+    assert {"sony", "canon", "nikon", "leica", "om"} <= makers
 
 
 @pytest.mark.parametrize(("camera", "crop"), sorted(LENSFUN_CROP.items()))
