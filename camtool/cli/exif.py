@@ -81,7 +81,7 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
 
     \b
     Examples:
-      camtool exif canon_bracket.jpg
+      camtool exif canon_bracket.jpg nikon.jpg
       camtool exif --format json --field near_mm --field far_mm nikon.jpg
       camtool exif canon_bracket.jpg --model thin --distance-from lens --coc-rule d/1440
       camtool exif -r . --format csv
@@ -94,7 +94,8 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
         raise click.ClickException(str(error)) from None
     files, failed = _expand(paths, recursive)
     settings = {
-        "distance": distance, "sensor": sensor, "crop": crop, "coc": list(coc), "coc_rule": coc_rule,
+        "distance": _single(ctx, distance, "distance"), "sensor": sensor, "crop": crop,
+        "coc": [_single(ctx, coc, "coc")] if coc else [], "coc_rule": coc_rule,
         "pixel_pitch": pixel_pitch[0] if isinstance(pixel_pitch, list) else pixel_pitch,
         "distance_from": distance_from, "model": model, "tolerance": tolerance, "diffraction": diffraction,
         "wavelength": wavelength, "pupil_mag": pupil_mag, "hiatus": hiatus, "prescription_file": prescription_file,
@@ -112,6 +113,18 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     if fmt == "table":
         note = f"{distance_from} plane · model {model} · JSON/CSV carry every key and its *_source"
     return Output(rows, COLUMNS, KEYS, note)
+
+
+def _single(ctx: click.Context, value: Any, name: str) -> float | None:
+    """The one value of a length option (a list type: ``3m`` parses as [3000.0]); a list is an error here."""
+    from camtool.cli.options import param_named
+    from camtool.cli.params import flatten
+
+    values = flatten(value if isinstance(value, (list, tuple)) and value and isinstance(value[0], list)
+                     else [value] if value is not None else None)
+    if len(values) > 1:
+        raise click.BadParameter(f"one value per run here, not {len(values)}", ctx=ctx, param=param_named(ctx, name))
+    return values[0] if values else None
 
 
 def _exit_one() -> None:

@@ -163,14 +163,15 @@ def _short(key: str) -> str:
 
 
 def _reason(error: Exception) -> str:
-    message = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
+    text = str(getattr(error, "message", "") or error).strip()
+    message = text.splitlines()[0] if text else type(error).__name__
     lowered = message.lower()
     if "unknown image type" in lowered or "not an image" in lowered or "supported" in lowered:
         return "not an image libexiv2 can read"
     if "failed to open" in lowered or "no such file" in lowered:
         return "cannot be opened"
-    if "corrupt" in lowered or "eof" in lowered or "truncat" in lowered or "exceeds" in lowered:
-        return f"truncated or corrupt ({message})"
+    if any(word in lowered for word in ("corrupt", "eof", "truncat", "exceeds", "failed to read")):
+        return f"truncated or corrupt ({message[:1].lower() + message[1:]})"
     return message
 
 
