@@ -279,3 +279,17 @@ def test_help_examples_run() -> None:
                               capture_output=True, text=True, env={**os.environ, "COLUMNS": "120"})
         assert "Traceback" not in done.stderr, example
         assert done.returncode == (1 if " -r " in f" {example} " else 0), (example, done.stderr)
+
+
+def test_readme_examples_run() -> None:
+    root = DATA.parent.parent.parent
+    text = (root / "README.md").read_text(encoding="utf-8")
+    section = text.split("## Photos: what depth of field did I have?", 1)[1].split("\n## ", 1)[0]
+    block = section.split("```sh\n", 1)[1].split("```", 1)[0]
+    lines = [line for line in block.splitlines() if line.strip()]
+    assert len(lines) == 4
+    for line in lines:
+        done = subprocess.run(["bash", "-c", line.replace("camtool ", f"{sys.executable} -m camtool ")], cwd=root,
+                              capture_output=True, text=True)
+        assert "Traceback" not in done.stderr and done.stdout, line
+        assert done.returncode == (1 if "exit 1" in line else 0), (line, done.stderr)
