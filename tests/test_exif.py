@@ -25,7 +25,7 @@ pytest.importorskip("exiv2")
 
 DATA = Path(__file__).resolve().parent / "data" / "exif"
 GOOD = ["canon_bracket.jpg", "canon_infinity.jpg", "nikon.jpg", "olympus.jpg", "fujifilm_subject.jpg",
-        "sony_apex_lens.jpg"]
+        "sony_apex_lens.jpg", "resized_high_iso.jpg"]
 BAD = ["no_metadata.jpg", "not_an_image.jpg", "truncated.jpg"]
 EXIFTOOL_MODE = ["--coc-rule", "d/1440", "--distance-from", "lens", "--model", "thin"]
 FULL_FRAME_DIAGONAL = math.sqrt(24 * 24 + 36 * 36)  # ExifTool's CircleOfConfusion: sqrt(24*24+36*36)
@@ -134,6 +134,16 @@ def test_apex_values() -> None:
     assert row["ev100"] == pytest.approx(12.0, rel=1e-12)  # ISO 200: one stop less
 
 
+def test_an_implausible_focal_plane_and_a_16_bit_iso_are_passed_over() -> None:
+    row = one("resized_high_iso.jpg")
+    # 100 px at 5184/22.3 px/mm is 0.43 mm: not a sensor (ExifTool too wants a diagonal of 1 to 100 mm)
+    assert row["sensor_source"] == "Photo.FocalLengthIn35mmFilm / FocalLength"
+    assert row["crop_factor"] == pytest.approx(48 / 30, rel=1e-12)
+    # ISOSpeedRatings 65535 means "65535 or more": the RecommendedExposureIndex, 102400, is the value
+    assert row["iso"] == 102400 and row["iso_source"] == "Photo.RecommendedExposureIndex"
+    assert row["ev100"] == pytest.approx(math.log2(16 * 1000 * 100 / 102400), rel=1e-12)
+
+
 def test_the_bracket_ends_bound_the_limits() -> None:
     row = one("canon_bracket.jpg", *EXIFTOOL_MODE)
     c = FULL_FRAME_DIAGONAL / 1440
@@ -177,7 +187,7 @@ def test_a_lens_preset_matched_by_name_brings_its_prescription() -> None:
 
 
 def test_options_override_the_file() -> None:
-    row = one("nikon.jpg", "--crop", "1.5", "-s", "2m", "--coc", "0.02")
+    row = one("nikon.jpg", "--crop", "1.5", "-s", "2", "--coc", "0.02")  # bare distances are metres, as in dof
     assert row["crop_factor"] == pytest.approx(1.5) and row["sensor_source"] == "--crop"
     assert row["focus_distance_mm"] == 2000.0 and row["focus_distance_source"] == "-s"
     assert row["coc_mm"] == 0.02 and row["coc_source"] == "--coc"

@@ -19,7 +19,7 @@ import click
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.equipment import CAMERA, LENS, open_presets
 from camtool.cli.lensdata import lens_data, model_options
-from camtool.cli.options import LENGTH_MM, coc_options, distance_plane_option, sensor_options
+from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, sensor_options
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, TEXT, Column
 
 BRACKET_KEYS = ["near_min_mm", "near_max_mm", "far_min_mm", "far_max_mm"]
@@ -54,8 +54,8 @@ IMAGE_SUFFIXES = frozenset({
 @click.argument("paths", nargs=-1, metavar="FILE...")
 @click.option("-r", "--recursive", is_flag=True,
               help="Descend into directories given as FILE (files with an image or raw suffix, sorted).")
-@click.option("-s", "--distance", type=LENGTH_MM, default=None, metavar="LENGTH",
-              help="Focus distance to use instead of the recorded one, e.g. 3m (bare numbers are mm here).")
+@click.option("-s", "--distance", type=DISTANCE_M, default=None, metavar="LENGTH",
+              help="Focus distance to use instead of the recorded one: 3 (bare numbers are metres), 3m, 10ft, inf.")
 @sensor_options
 @coc_options
 @distance_plane_option

@@ -149,8 +149,11 @@ def read_file(path: str) -> Reading:
     number("shutter_s", "Exif.Photo.ExposureTime", "Exif.Image.ExposureTime")
     if "shutter_s" not in fields:
         number("shutter_s", "Exif.Photo.ShutterSpeedValue", convert=lambda tv: 2.0 ** (-tv))
-    number("iso", "Exif.Photo.ISOSpeedRatings", "Exif.Photo.StandardOutputSensitivity",
-           "Exif.Photo.RecommendedExposureIndex")
+    # ISOSpeedRatings is a 16-bit field: cameras write 65535 for ISO 65535 and above and put the value in
+    # StandardOutputSensitivity or RecommendedExposureIndex (Exif 2.3, SensitivityType)
+    number("iso", "Exif.Photo.ISOSpeedRatings", convert=lambda iso: iso if iso < 65535 else None)
+    if "iso" not in fields:
+        number("iso", "Exif.Photo.StandardOutputSensitivity", "Exif.Photo.RecommendedExposureIndex")
     _pixels(data, fields, image)
     _focal_plane(data, fields)
     _focus(data, fields)
@@ -225,10 +228,13 @@ def _focal_plane(data: dict[str, Any], fields: dict[str, Any]) -> None:
         y = _float(data[y_key]) if y_key in data else x
         unit = _int(data[unit_key]) if unit_key in data else 2  # Exif default: inches
         if x and y and x > 0 and y > 0 and unit in _RESOLUTION_UNIT_MM:
-            fields["plane_width_mm"] = w / x * _RESOLUTION_UNIT_MM[unit]
-            fields["plane_height_mm"] = h / (y or x) * _RESOLUTION_UNIT_MM[unit]
-            fields["sources"]["sensor"] = f"{group}.FocalPlaneX/YResolution"
-            return
+            width, height = w / x * _RESOLUTION_UNIT_MM[unit], h / y * _RESOLUTION_UNIT_MM[unit]
+            # a diagonal outside 1 to 100 mm is a resized image or a wrong unit, not a sensor (the same
+            # sanity check as ExifTool's CalcScaleFactor35efl); the next source is used instead
+            if 1.0 < math.hypot(width, height) < 100.0:
+                fields["plane_width_mm"], fields["plane_height_mm"] = width, height
+                fields["sources"]["sensor"] = f"{group}.FocalPlaneX/YResolution"
+                return
 
 
 def _focus(data: dict[str, Any], fields: dict[str, Any]) -> None:

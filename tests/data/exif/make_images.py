@@ -140,6 +140,22 @@ def main() -> None:
         ("Exif.Photo.ISOSpeedRatings", ushort(200)), ("Exif.Photo.LensModel", "Double Gauss 100"),
         ("Exif.Photo.SubjectDistance", rational(2)),
     ])
+    # A resized copy: FocalPlane resolution of the full 5184 px frame (22.3 mm wide) kept on a 100 × 67 px image
+    # (a 0.43 mm "sensor", rejected), the 35 mm equivalent 48 at 30 mm (crop 1.6) used instead; ISO 102400,
+    # past ISOSpeedRatings' 16 bits (65535), in RecommendedExposureIndex
+    write("resized_high_iso.jpg", [
+        ("Exif.Image.Make", "Canon"), ("Exif.Image.Model", "Canon EOS 7D"),
+        ("Exif.Photo.FocalLength", rational(30)), ("Exif.Photo.FocalLengthIn35mmFilm", ushort(48)),
+        ("Exif.Photo.FNumber", rational(4)), ("Exif.Photo.ExposureTime", rational(1, 1000)),
+        ("Exif.Photo.ISOSpeedRatings", ushort(65535)),
+        ("Exif.Photo.RecommendedExposureIndex", exiv2.ULongValue([102400])),
+        ("Exif.Photo.PixelXDimension", exiv2.ULongValue([100])),
+        ("Exif.Photo.PixelYDimension", exiv2.ULongValue([67])),
+        ("Exif.Photo.FocalPlaneXResolution", rational(5184 * 254, 223)),
+        ("Exif.Photo.FocalPlaneYResolution", rational(5184 * 254, 223)),
+        ("Exif.Photo.FocalPlaneResolutionUnit", ushort(2)),
+        ("Exif.Photo.SubjectDistance", rational(5)),
+    ])
     # Partial: a make and model no preset knows, a focal length, nothing else
     write("partial.jpg", [
         ("Exif.Image.Make", "Acme"), ("Exif.Image.Model", "Pinhole 1"), ("Exif.Photo.FocalLength", rational(50)),
