@@ -218,6 +218,12 @@ def test_messages_say_what_is_wrong() -> None:
     assert any("is a directory (give --recursive" in line for line in lines)
 
 
+def test_no_file_is_a_usage_error() -> None:
+    result = run("exif")
+    assert result.exit_code == 2
+    assert result.stderr.splitlines()[-1] == "Error: give at least one FILE (or - to read paths from standard input)"
+
+
 def test_partial_metadata_is_null_where_missing_and_named_on_stderr() -> None:
     result = run("exif", str(DATA / "partial.jpg"), "--format", "json")
     assert result.exit_code == 0

@@ -92,6 +92,8 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
         require_exiv2()
     except ExifUnavailable as error:
         raise click.ClickException(str(error)) from None
+    if not paths:
+        raise click.UsageError("give at least one FILE (or - to read paths from standard input)", ctx)
     files, failed = _expand(paths, recursive)
     settings = {
         "distance": _single(ctx, distance, "distance"), "sensor": sensor, "crop": crop,
@@ -111,7 +113,11 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
         ctx.call_on_close(_exit_one)
     note = ""
     if fmt == "table":
-        note = f"{distance_from} plane · model {model} · JSON/CSV carry every key and its *_source"
+        from camtool.geometry.coc import DEFAULT_RULE
+
+        criterion = f"CoC {settings['coc'][0]:g} mm" if settings["coc"] else f"CoC {coc_rule or DEFAULT_RULE} of each sensor"
+        note = (f"distances from the {distance_from} · {criterion} · model {model} · "
+                "JSON/CSV carry every key and its *_source")
     return Output(rows, COLUMNS, KEYS, note)
 
 
@@ -201,7 +207,7 @@ def _compute(ctx: click.Context, path: str, reading: Any, settings: dict[str, An
     if lens_preset is not None:
         row["lens"], row["lens_source"] = lens_preset.name, "--lens"
     elif reading.lens:
-        found = match_preset(open_presets(ctx, settings["preset_files"]), "lens", [normalise(reading.lens)])
+        found = match_preset(_index(ctx, settings, "lens"), [normalise(reading.lens)])
         if found is not None:
             lens_preset = found
             row["lens_source"] = f"{sources.get('lens')} = preset {found.id}"
@@ -255,11 +261,20 @@ def _sensor(ctx, reading, settings, f, from_crop, from_plane, camera_names, matc
     if reading.focal_length_35mm is not None and f is not None:
         return from_crop(reading.focal_length_35mm / f, reading.pixels_w, reading.pixels_h,
                          "Photo.FocalLengthIn35mmFilm / FocalLength")
-    body = match_preset(open_presets(ctx, settings["preset_files"]), "camera",
-                        camera_names(reading.make, reading.model))
+    body = match_preset(_index(ctx, settings, "camera"), camera_names(reading.make, reading.model))
     if body is not None:
         return from_plane(body.sensor.width_mm, body.sensor.height_mm, f"camera preset {body.id}")
     return None
+
+
+def _index(ctx: click.Context, settings: dict[str, Any], kind: str) -> dict[str, list[Any]]:
+    """The presets of ``kind`` by normalised name, built on first use and kept for the run."""
+    from camtool.exif.sensor import name_index
+
+    cache = ctx.meta.setdefault("camtool.exif.index", {})
+    if kind not in cache:
+        cache[kind] = name_index(open_presets(ctx, settings["preset_files"]).all(kind))
+    return cache[kind]
 
 
 def _coc(ctx, settings, size, reading, row) -> float | None:

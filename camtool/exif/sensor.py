@@ -100,14 +100,26 @@ def camera_names(make: str | None, model: str | None) -> list[str]:
     return names
 
 
-def match_preset(db: Any, kind: str, names: list[str]) -> Any:
-    """The preset of ``kind`` whose id, name or an alias normalises to one of ``names``; None if none or several."""
-    if not names:
-        return None
-    wanted = set(names)
-    found = []
-    for preset in db.all(kind):
-        own = {normalise(preset.id), normalise(preset.name), *(normalise(a) for a in preset.aliases)}
-        if own & wanted:
-            found.append(preset)
-    return found[0] if len(found) == 1 else None
+def name_index(presets: Any) -> dict[str, list[Any]]:
+    """Presets by every normalised id, name and alias (built once per run, then looked up per file)."""
+    index: dict[str, list[Any]] = {}
+    for preset in presets:
+        for name in {normalise(preset.id), normalise(preset.name), *(normalise(a) for a in preset.aliases)}:
+            index.setdefault(name, []).append(preset)
+    return index
+
+
+def match_preset(index: dict[str, list[Any]], names: list[str]) -> Any:
+    """The one preset an index holds under any of ``names``; None if none, or several different ones.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace as P
+    >>> index = name_index([P(id="nikon-d850", name="Nikon D850", aliases=("d850",))])
+    >>> match_preset(index, camera_names("NIKON CORPORATION", "NIKON D850")).id
+    'nikon-d850'
+    >>> match_preset(index, ["d85"]) is None
+    True
+    """
+    found = {id(p): p for name in names for p in index.get(name, ())}
+    return next(iter(found.values())) if len(found) == 1 else None
