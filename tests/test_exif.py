@@ -25,7 +25,7 @@ pytest.importorskip("exiv2")
 
 DATA = Path(__file__).resolve().parent / "data" / "exif"
 GOOD = ["canon_bracket.jpg", "canon_infinity.jpg", "nikon.jpg", "olympus.jpg", "fujifilm_subject.jpg",
-        "sony_apex_lens.jpg", "resized_high_iso.jpg"]
+        "sony_apex_lens.jpg", "resized_high_iso.jpg", "canon_shotinfo.jpg"]
 BAD = ["no_metadata.jpg", "not_an_image.jpg", "truncated.jpg"]
 EXIFTOOL_MODE = ["--coc-rule", "d/1440", "--distance-from", "lens", "--model", "thin"]
 FULL_FRAME_DIAGONAL = math.sqrt(24 * 24 + 36 * 36)  # ExifTool's CircleOfConfusion: sqrt(24*24+36*36)
@@ -120,6 +120,9 @@ def test_maker_distances_and_their_sources() -> None:
     assert olympus["focus_distance_mm"] == 2500.0 and olympus["focus_distance_source"] == "OlympusFi.FocusDistance"
     fuji = one("fujifilm_subject.jpg")
     assert fuji["focus_distance_mm"] == 3500.0 and fuji["focus_distance_source"] == "Photo.SubjectDistance"
+    shotinfo = one("canon_shotinfo.jpg")  # ShotInfo 0x13 = 250 cm; no bracket, so no *_min/_max
+    assert shotinfo["focus_distance_mm"] == 2500.0 and shotinfo["focus_distance_source"] == "CanonSi.SubjectDistance"
+    assert shotinfo["focus_distance_min_mm"] is None and shotinfo["near_min_mm"] is None
     canon = one("canon_bracket.jpg")
     assert canon["sensor_source"] == "Photo.FocalPlaneX/YResolution"
     assert canon["f_number_source"] == "Photo.FNumber" and canon["iso_source"] == "Photo.ISOSpeedRatings"

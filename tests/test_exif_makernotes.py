@@ -72,6 +72,13 @@ def test_nikon_step_is_a_fortieth_of_a_decade() -> None:
     assert ratio == pytest.approx(10 ** (1 / 40), rel=1e-12)
 
 
+def test_nikon_inverts_exiftools_inverse() -> None:
+    # ExifTool's ValueConvInv for the same tag: raw = 40·log10(100·d), d in metres
+    for raw in range(256):
+        metres = makernotes.nikon_focus_distance_mm(raw) / 1000
+        assert 40 * math.log10(100 * metres) == pytest.approx(raw, abs=1e-9)
+
+
 @pytest.mark.parametrize("raw", [60, 80, 100, 137])
 def test_nikon_agrees_with_exiv2(raw: int, tmp_path: Path) -> None:
     block = bytearray(b"0101" + bytes(14))  # LensData version 0101: not encrypted, FocusDistance at byte 9

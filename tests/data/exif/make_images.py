@@ -105,6 +105,12 @@ def main() -> None:
         ("Exif.Photo.PixelYDimension", exiv2.ULongValue([3456])),
         ("Exif.CanonFi.FocusDistanceUpper", ushort(65535)), ("Exif.CanonFi.FocusDistanceLower", ushort(1000)),
     ])
+    # Canon, older layout: ShotInfo 0x13 (exiv2's CanonSi.SubjectDistance, ExifTool's FocusDistanceUpper), 250 cm
+    write("canon_shotinfo.jpg", [
+        ("Exif.Image.Make", "Canon"), ("Exif.Image.Model", "Canon EOS 5D Mark II"),
+        ("Exif.Photo.FocalLength", rational(85)), ("Exif.Photo.FNumber", rational(2)), *EXPOSURE,
+        ("Exif.CanonSi.SubjectDistance", ushort(250)),
+    ])
     # Nikon: lens data FocusDistance raw 100 (10^(100/40) cm); the sensor from the camera preset nikon-d850
     write("nikon.jpg", [
         ("Exif.Image.Make", "NIKON CORPORATION"), ("Exif.Image.Model", "NIKON D850"),
