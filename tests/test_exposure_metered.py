@@ -152,3 +152,36 @@ def test_foot_candles_and_apex() -> None:
     # APEX: Av + Tv = Bv + Sv; ISO 100 is Sv 5 (ASA PH2.5-1960).
     assert (row["av"], row["tv"], row["sv"]) == (4.0, 6.0, pytest.approx(6.0))
     assert row["av"] + row["tv"] == pytest.approx(row["bv"] + row["sv"])
+
+
+# --- films in preset files -------------------------------------------------------
+
+
+def test_films_preset_kind(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    good = tmp_path / "films.yaml"
+    good.write_text("films:\n  - id: my-pan-100\n    name: My Pan 100\n    p: 1.35\n"
+                    "  - id: my-slide\n    points: [[1, '+0 stops'], [10, 20]]\n", encoding="utf-8")
+    (row,) = run_json("exposure", "-N", "8", "-t", "10", "--film", "my-pan-100", "--presets", str(good))
+    assert row["corrected_shutter_s"] == pytest.approx(10**1.35, rel=1e-12)
+    (row,) = run_json("exposure", "-N", "8", "-t", "10", "--film", "my-slide", "--presets", str(good))
+    assert row["corrected_shutter_s"] == pytest.approx(20.0, rel=1e-12)
+    result = run("exposure", "-N", "8", "-t", "30", "--film", "my-slide", "--presets", str(good))
+    assert result.exit_code == 2 and "up to 10 s" in result.stderr
+
+
+@pytest.mark.parametrize(
+    ("entry", "problem"),
+    [
+        ("p: 0.5", "p: must be from 1 to 3"),
+        ("points: [[10, 5]]", "shorter than the metered"),
+        ("points: [[10, 20], [5, 8]]", "metered times must increase"),
+        ("points: [[1, 'lots']]", "a correction is written"),
+        ("p: 1.3\n    points: [[1, 2]]", "give p (an exponent) or points"),
+        ("name: nothing", "give p (an exponent) or points"),
+    ],
+)
+def test_films_preset_validation(tmp_path, entry: str, problem: str) -> None:  # type: ignore[no-untyped-def]
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(f"films:\n  - id: bad-film\n    {entry}\n", encoding="utf-8")
+    result = run("presets", "validate", str(bad))
+    assert result.exit_code == 1 and problem in result.stdout + result.stderr

@@ -277,7 +277,10 @@ def _film(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
 def _film_preset(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
     """A film from the user's preset files (kind ``films``), or None when there is none of that name."""
     from camtool.cli.equipment import open_presets
+    from camtool.presets import PresetNotFound
 
     db = open_presets(ctx, preset_files)
-    getter = getattr(db, "film", None)
-    return getter(name) if getter is not None else None
+    try:
+        return db.film(name).reciprocity()
+    except PresetNotFound:
+        return None
