@@ -185,3 +185,25 @@ def test_films_preset_validation(tmp_path, entry: str, problem: str) -> None:  #
     bad.write_text(f"films:\n  - id: bad-film\n    {entry}\n", encoding="utf-8")
     result = run("presets", "validate", str(bad))
     assert result.exit_code == 1 and problem in result.stdout + result.stderr
+
+
+def test_t_stop_and_f_number() -> None:
+    from camtool.exposure.ev import f_number_from_t_stop, t_stop
+
+    assert t_stop(2.0, 0.75) == pytest.approx(2.309, abs=5e-4)  # Wikipedia, "F-number", T-stop: f/2.0 at 75 % is T2.3
+    assert t_stop(4.0, 0.5) == pytest.approx(4 * math.sqrt(2))  # idigitalphoto.com, "T-number": f/4 at 50 % is T5.6
+    assert f_number_from_t_stop(t_stop(2.8, 0.9), 0.9) == pytest.approx(2.8, rel=1e-15)
+
+
+def test_two_step_equals_one_step() -> None:
+    # Issue 15: "--ev100 $(camtool exposure -N 8 -t 1/60 --field ev100) -N 8 --nd ND1000" was the workaround.
+    level = run("exposure", "-N", "8", "-t", "1/60", "--field", "ev100").stdout.strip()
+    (two,) = run_json("exposure", "--ev100", level, "-N", "8", "--nd", "ND1000")
+    (one,) = run_json("exposure", "-N", "8", "-t", "1/60", "--nd", "ND1000")
+    assert two["shutter_s"] == pytest.approx(one["corrected_shutter_s"], rel=1e-9)
+
+
+def test_metered_equivalents_include_the_filter() -> None:
+    rows = run_json("exposure", "-N", "8", "-t", "1/60", "--nd", "ND1000", "--equivalents", "--step", "full")
+    row = next(r for r in rows if r["f_number_nominal"] == 8.0)
+    assert row["shutter_exact_s"] == pytest.approx(1000 / 60 * 64 / 2 ** (2 * math.log2(8)), rel=1e-9)

@@ -238,7 +238,12 @@ def work_out(
         level = ev100_from_ev(exposure_value(f_number, shutter_s), iso)
         if not equivalents:
             return _settings(f_number, shutter_s, iso, level, t_stop, step, count)
-        return _equivalents(level, iso, 0.0, 0.0, step, "f_number")
+        if count != 1:
+            raise SettingsError("{equivalents} needs a single exposure (one value per option).", ["equivalents"])
+        answer = _equivalents(level, iso if new_iso is None else new_iso, loss_nd, loss_close, step, "shutter_s")
+        if film is not None or reciprocity_p is not None:
+            answer = answer._replace(notes=(answer.notes[0] + " · times before reciprocity failure",))
+        return answer
     if new_iso is not None or new_f_number is not None:
         names = ["new_iso" if new_iso is not None else "new_f_number", *_light_names(ev100, ev, light, luminance,
                                                                                      illuminance)]
