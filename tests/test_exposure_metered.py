@@ -207,3 +207,26 @@ def test_metered_equivalents_include_the_filter() -> None:
     rows = run_json("exposure", "-N", "8", "-t", "1/60", "--nd", "ND1000", "--equivalents", "--step", "full")
     row = next(r for r in rows if r["f_number_nominal"] == 8.0)
     assert row["shutter_exact_s"] == pytest.approx(1000 / 60 * 64 / 2 ** (2 * math.log2(8)), rel=1e-9)
+
+
+def test_meter_c_in_foot_candle_seconds() -> None:
+    # C = 250 lx·s is 250 × 0.09290304 = 23.23 fc·s: the same answer (lightmeter-shutter-02: 400 lx, f/4 -> 0.1 s).
+    (row,) = run_json("exposure", "--illuminance", "400", "-N", "4", "--meter-c", f"{250 * 0.09290304!r}fc")
+    assert row["shutter_s"] == pytest.approx(0.1, rel=1e-12)
+    (k14,) = run_json("exposure", "--luminance", "4096", "-N", "16", "--meter-k", "14")
+    assert k14["ev100"] == pytest.approx(math.log2(4096 * 100 / 14), rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("args", "option", "value"),
+    [
+        (["-N", "8", "-t", "30", "--nd", "20stops", "--equivalents"], "'-t' / '--shutter'", "30"),
+        (["--ev100", "-10", "--iso", "100", "--nd", "20stops"], "'--ev100'", "-10"),
+        (["--light", "moonlight", "-N", "16", "--nd", "ND1000"], "'--light'", "moonlight"),
+    ],
+)
+def test_errors_name_the_option_and_value_typed(args: list[str], option: str, value: str) -> None:
+    result = run("exposure", *args)
+    assert result.exit_code == 2
+    assert result.stderr.startswith(f"Error: Invalid value for {option}: {value} is outside the valid range: ")
+    assert len(result.stderr.splitlines()) == 1

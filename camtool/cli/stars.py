@@ -10,7 +10,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import required, rows_from
 from camtool.cli.equipment import resolve_sensor
 from camtool.cli.options import LENGTH_MM, focal_option, library_errors, sensor_options
-from camtool.cli.params import NumberType, flatten
+from camtool.cli.params import FNumberType, NumberType, flatten
 from camtool.render.columns import SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "crop_factor", "pixel_pitch_um", "declination_deg", "rule500_s",
@@ -26,7 +26,7 @@ COLUMNS = [
 
 @camtool_command("stars", keys=KEYS)
 @focal_option
-@click.option("-N", "--f-number", "f_number", type=NumberType(0.5, 64), multiple=True,
+@click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
               help="f-number (the NPF rule needs it; the 500 rule does not); a list gives a row each.")
 @sensor_options
 @click.option("--pixel-pitch", type=LENGTH_MM, help="Pixel pitch, e.g. 4.3um (default: from --camera).")

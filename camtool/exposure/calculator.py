@@ -240,7 +240,8 @@ def work_out(
             return _settings(f_number, shutter_s, iso, level, t_stop, step, count)
         if count != 1:
             raise SettingsError("{equivalents} needs a single exposure (one value per option).", ["equivalents"])
-        answer = _equivalents(level, iso if new_iso is None else new_iso, loss_nd, loss_close, step, "shutter_s")
+        answer = _equivalents(level, iso if new_iso is None else new_iso, loss_nd, loss_close, step, "shutter_s",
+                              shutter_s)
         if film is not None or reciprocity_p is not None:
             answer = answer._replace(notes=(answer.notes[0] + " · times before reciprocity failure",))
         return answer
@@ -260,15 +261,23 @@ def work_out(
                             "{shutter_s} nothing is left to solve: leave out one of them, or give {ev100} to solve "
                             "the ISO.", ["ev", "f_number", "shutter_s", "ev100"])
     if f_number is None and shutter_s is None:
-        return _equivalents(level, 100.0 if iso is None else iso, loss_nd, loss_close, step, light_name)
+        return _equivalents(level, 100.0 if iso is None else iso, loss_nd, loss_close, step, light_name,
+                            _typed(light_name, (ev100, ev, light, luminance, illuminance)))
     answer = _scene(level, f_number, shutter_s, iso, loss_nd, loss_close, film, reciprocity_p, t_stop, step,
                     count, light_name, (ev100, ev, light, luminance, illuminance))
     if equivalents:
         if count != 1:
             raise SettingsError("{equivalents} needs a single exposure (one value per option).", ["equivalents"])
         values = answer.values
-        return _equivalents(values["ev100"], values["iso"], loss_nd, loss_close, step, light_name)
+        return _equivalents(values["ev100"], values["iso"], loss_nd, loss_close, step, light_name,
+                            _typed(light_name, (ev100, ev, light, luminance, illuminance)))
     return answer
+
+
+def _typed(name: str, levels: tuple[Any, ...]) -> Any:
+    """The value the user gave for the light level ``name`` (its first, for a list)."""
+    value = dict(zip(LIGHT_PARAMS, levels))[name]
+    return value if isinstance(value, str) else _first(value)
 
 
 def _light_names(*levels: Any) -> list[str]:
@@ -389,8 +398,7 @@ def _scene(level: Any, f_number: Any, shutter_s: Any, iso: Any, loss_nd: Any, lo
     except DomainError as error:
         if error.param not in ("shutter_s", "f_number", "iso") or error.value is iso:
             raise
-        typed = dict(zip(LIGHT_PARAMS, levels))[light_name]
-        shown = _first(typed) if not isinstance(typed, str) else typed
+        shown = _typed(light_name, levels)
         what = {"shutter_s": "time", "f_number": "f-number", "iso": "ISO"}[error.param]
         raise DomainError(light_name, shown, f"a light level these settings can expose ({what} within "
                           f"{error.valid})", f"it needs a {what} of {error.value:g}") from None
@@ -407,19 +415,24 @@ def _scene(level: Any, f_number: Any, shutter_s: Any, iso: Any, loss_nd: Any, lo
     return Answer("scene", count, values, solved, film, ())
 
 
-def _equivalents(level: Any, iso: Any, loss_nd: Any, loss_close: Any, step: str, light_name: str) -> Answer:
-    """The f-number and time pairs for a light level at one ISO, over the stops."""
+def _equivalents(level: Any, iso: Any, loss_nd: Any, loss_close: Any, step: str, light_name: str,
+                 typed: Any) -> Answer:
+    """The f-number and time pairs for a light level at one ISO, over the stops.
+
+    ``light_name`` and ``typed`` are the option the light level came from and
+    the value the user gave it, for errors.
+    """
     from camtool.exposure.equivalents import equivalent_exposures
 
     level, iso = _first(level), _first(iso)
     check("iso", iso)
     ev = level + math.log2(iso / 100.0) - _first(loss_nd) - _first(loss_close)
     if not EV_RANGE[0] <= ev <= EV_RANGE[1]:
-        raise DomainError(light_name, level, "a light level whose settings' EV at this ISO, behind the filters, "
+        raise DomainError(light_name, typed, "a value whose settings' EV at this ISO, behind the filters, "
                           "lies within -10 to +25", f"it is {ev:.3g}")
     table = equivalent_exposures(ev, step=step)
     if not table.f_number:
-        raise DomainError(light_name, level, f"a light level with times within 1/64000 s to {SHUTTER_RANGE_S[1]:g} s "
+        raise DomainError(light_name, typed, f"a value with times within 1/64000 s to {SHUTTER_RANGE_S[1]:g} s "
                           "between f/1 and f/32")
     n = len(table.f_number)
     values: dict[str, Any] = {**table._asdict(), "iso": [iso] * n, "ev100": [level] * n}
