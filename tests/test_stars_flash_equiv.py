@@ -110,3 +110,16 @@ def test_equiv_command() -> None:
     (row,) = run_json("equiv", "-f", "25", "-N", "1.4", "--iso", "200", "--crop", "2")
     assert (row["equivalent_focal_length_mm"], row["equivalent_f_number"], row["equivalent_iso"]) == \
         pytest.approx((50.0, 2.8, 800.0))
+
+
+def test_batch_rows(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    scenes = tmp_path / "stars.csv"
+    scenes.write_text("focal_length,f_number,pixel_pitch,declination\n24,2.8,4.3um,0\n50,1.8,4.3um,60\n",
+                      encoding="utf-8")
+    rows = run_json("stars", "--batch", str(scenes))
+    assert [r["npf_simple_s"] for r in rows] == pytest.approx([(35 * 2.8 + 30 * 4.3) / 24,
+                                                               2 * (35 * 1.8 + 30 * 4.3) / 50])
+    flashes = tmp_path / "flash.csv"
+    flashes.write_text("gn,distance,iso,gn_iso\n20,5,100,100\n51,9,800,200\n", encoding="utf-8")
+    rows = run_json("flash", "--batch", str(flashes))
+    assert [r["f_number"] for r in rows] == pytest.approx([4.0, 102 / 9])

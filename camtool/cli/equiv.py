@@ -8,6 +8,7 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import required, rows_from
+from camtool.cli.exposure import single
 from camtool.cli.equipment import FULL_FRAME, resolve_sensor
 from camtool.cli.options import focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
@@ -62,7 +63,7 @@ def equiv(ctx: click.Context, focal_length, f_number, iso, sensor, crop, to_sens
     speeds = flatten(iso) or [100.0]
     source = resolve_sensor(ctx, sensor, crop, preset_files)
     target = FULL_FRAME if to_sensor is None and to_crop is None else _target(ctx, to_sensor, to_crop, preset_files)
-    converter = teleconverter[0] if teleconverter else (speed_booster[0] if speed_booster else 1.0)
+    converter = single(ctx, teleconverter) or single(ctx, speed_booster, 1.0)
     count, (f, n, s) = combine_params(ctx, focal, apertures, speeds)
     with library_errors(ctx):
         e = equivalent_settings(f, n, s, math.hypot(source.width_mm, source.height_mm),

@@ -93,6 +93,21 @@ class IlluminanceType(_ListType):
         return self.low <= value <= self.high and math.isfinite(value)
 
 
+def single(ctx: click.Context, values: Any, default: float | None = None) -> Any:
+    """The one value of a list option that must not vary between rows (in a batch too), or ``default``.
+
+    A batch hands every list option over as a column; a column that holds
+    different values in different rows is a usage error.
+    """
+    flat = flatten(values) if values else []
+    if not flat:
+        return default
+    if any(v != flat[0] for v in flat[1:]):
+        raise click.UsageError(f"Give one value, not {', '.join(f'{v:g}' for v in flat)}, for a setting that applies "
+                               "to every row.", ctx)
+    return flat[0]
+
+
 def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
     """A :class:`SettingsError` as a usage error, each parameter shown as the option the user types."""
     names = {}

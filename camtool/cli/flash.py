@@ -6,6 +6,7 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
+from camtool.cli.exposure import single
 from camtool.cli.options import DISTANCE_M, library_errors, param_named
 from camtool.cli.params import FNumberType, NumberType, _ListType, flatten
 from camtool.core.units import UnitError
@@ -79,7 +80,7 @@ def flash(ctx: click.Context, guide_number, gn_iso, distance, f_number, iso, fmt
     count, columns = combine_params(ctx, *given.values())
     with library_errors(ctx):
         try:
-            result = solve_flash(**dict(zip(given, columns)), quoted_iso=gn_iso[0])
+            result = solve_flash(**dict(zip(given, columns)), quoted_iso=single(ctx, gn_iso, 100.0))
         except DomainError as error:
             raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, error.param)) from None
     rows = rows_from(count, {"guide_number_m": result.guide_number_m, "guide_number_at_iso_m":

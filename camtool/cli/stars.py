@@ -8,16 +8,18 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import required, rows_from
+from camtool.cli.exposure import single
 from camtool.cli.equipment import resolve_sensor
 from camtool.cli.options import LENGTH_MM, focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
-from camtool.render.columns import SMALL, TEXT, Column
+from camtool.render.columns import NUMBER, SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "crop_factor", "pixel_pitch_um", "declination_deg", "rule500_s",
         "npf_simple_s", "npf_s"]
 COLUMNS = [
     Column("focal_length_mm", "f", SMALL),
     Column("aperture", "N", TEXT),
+    Column("declination_deg", "δ (°)", NUMBER),
     Column("rule500", "500 rule", TEXT),
     Column("npf_simple", "NPF simple", TEXT),
     Column("npf", "NPF", TEXT),
@@ -29,8 +31,9 @@ COLUMNS = [
 @click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
               help="f-number (the NPF rule needs it; the 500 rule does not); a list gives a row each.")
 @sensor_options
-@click.option("--pixel-pitch", type=LENGTH_MM, help="Pixel pitch, e.g. 4.3um (default: from --camera).")
-@click.option("--declination", type=NumberType(-89, 89), default="0", show_default=True,
+@click.option("--pixel-pitch", type=LENGTH_MM, multiple=True,
+              help="Pixel pitch, e.g. 4.3um (default: from --camera); a list gives a row each.")
+@click.option("--declination", type=NumberType(-89, 89), multiple=True, default=["0"], show_default=True,
               help="Declination of the stars in degrees (0: the celestial equator, where they move fastest).")
 @click.option("--rule-constant", type=NumberType(100, 1000), default="500", show_default=True,
               help="The constant of the 500 rule (600 and 450 are common variants).")
@@ -58,26 +61,29 @@ def stars(ctx: click.Context, focal_length, f_number, sensor, crop, pixel_pitch,
 
     focal = required(ctx, focal_length, "-f")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    pitch_mm = pixel_pitch[0] if pixel_pitch else chosen.pixel_pitch_mm
-    pitch_um = None if pitch_mm is None else pitch_mm * 1000.0
+    pitches = [p * 1000.0 for p in flatten(pixel_pitch)]
+    if not pitches and chosen.pixel_pitch_mm is not None:
+        pitches = [chosen.pixel_pitch_mm * 1000.0]
     apertures = flatten(f_number)
-    if pitch_um is not None and not apertures:
+    if pitches and not apertures:
         raise click.UsageError("The NPF rule needs the f-number: give -N (or leave out the pixel pitch).", ctx)
-    count, columns = combine_params(ctx, focal, apertures or [math.nan])
-    f, n = columns
+    count, (f, n, p, dec) = combine_params(ctx, focal, apertures or [math.nan], pitches or [math.nan],
+                                           flatten(declination))
     with library_errors(ctx):
-        limits = star_limits(f, n, chosen.crop_factor, pitch_um, declination[0], rule_constant[0], npf_k[0])
+        limits = star_limits(f, n, chosen.crop_factor, p if pitches else None, dec, single(ctx, rule_constant),
+                             single(ctx, npf_k))
+    pitch_um = p if pitches else None
     rows = rows_from(count, {"focal_length_mm": f, "f_number": n if apertures else None,
                              "crop_factor": chosen.crop_factor, "pixel_pitch_um": pitch_um,
-                             "declination_deg": declination[0], "rule500_s": limits.rule500_s,
+                             "declination_deg": dec, "rule500_s": limits.rule500_s,
                              "npf_simple_s": limits.npf_simple_s, "npf_s": limits.npf_s})
     for row in rows:
         row["aperture"] = f"f/{row['f_number']:g}" if apertures else "—"
         row["rule500"] = format_time(row["rule500_s"])
         row["npf_simple"] = format_time(row["npf_simple_s"]) if pitch_um is not None else "—"
         row["npf"] = format_time(row["npf_s"]) if pitch_um is not None else "—"
-    pitch_note = f"pixel pitch {pitch_um:.3g} µm" if pitch_um is not None else \
-        "no pixel pitch (--pixel-pitch or --camera) for the NPF rule"
-    note = (f"{chosen.label}, crop {chosen.crop_factor:.3g} · {pitch_note} · declination {declination[0]:g}° · "
-            f"{rule_constant[0]:g} rule")
+    pitch_note = (f"pixel pitch {', '.join(f'{v:.3g}' for v in pitches)} µm" if pitches else
+                  "no pixel pitch (--pixel-pitch or --camera) for the NPF rule")
+    note = (f"{chosen.label}, crop {chosen.crop_factor:.3g} · {pitch_note} · declination in degrees · "
+            f"{single(ctx, rule_constant):g} rule")
     return Output(rows, COLUMNS, KEYS, note if fmt == "table" else "")
