@@ -8,8 +8,8 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import required, rows_from
-from camtool.cli.exposure import single
 from camtool.cli.equipment import resolve_sensor
+from camtool.cli.exposure import single
 from camtool.cli.options import LENGTH_MM, focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
 from camtool.render.columns import NUMBER, SMALL, TEXT, Column
