@@ -230,3 +230,22 @@ def test_errors_name_the_option_and_value_typed(args: list[str], option: str, va
     assert result.exit_code == 2
     assert result.stderr.startswith(f"Error: Invalid value for {option}: {value} is outside the valid range: ")
     assert len(result.stderr.splitlines()) == 1
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "says"),
+    [
+        ({"ev100": 12.0, "light": "sunny", "f_number": 8.0}, "Give only one light level: {ev100}, {light}."),
+        ({"f_number": 8.0, "shutter_s": 1.0, "film": find_film("hp5"), "reciprocity_p": 1.3}, "not both"),
+        ({"ev100": 12.0, "f_number": 8.0, "new_iso": 400.0}, "{new_iso} moves metered settings"),
+        ({"f_number": 8.0, "shutter_s": 1.0, "new_iso": 400.0, "solve": "iso"}, "give one of them"),
+        ({"ev100": 12.0, "f_number": 8.0, "shutter_s": 1.0, "iso": 100.0}, "give at most two"),
+        ({"shutter_s": 1.0}, "or the metered {f_number} and {shutter_s}"),
+    ],
+)
+def test_questions_that_need_other_settings(kwargs: dict, says: str) -> None:  # type: ignore[type-arg]
+    from camtool.exposure.calculator import SettingsError
+
+    with pytest.raises(SettingsError) as info:
+        work_out(**kwargs)
+    assert says in info.value.template

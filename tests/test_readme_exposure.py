@@ -24,3 +24,22 @@ def test_documented_example_runs(line: str) -> None:
     result = run(*args)
     assert result.exit_code == 0, result.stderr
     assert result.stdout
+
+
+def _help_examples() -> list[str]:
+    from camtool.cli import cli
+
+    lines = []
+    for name in ("exposure", "stars", "flash", "equiv"):
+        command = cli.get_command(None, name)  # type: ignore[arg-type]
+        assert command is not None and command.help
+        lines += [line.strip() for line in command.help.split("Examples:")[1].splitlines()
+                  if line.strip().startswith("camtool ")]
+    return lines
+
+
+@pytest.mark.parametrize("line", _help_examples())
+def test_help_example_runs(line: str) -> None:
+    result = run(*shlex.split(line)[1:])
+    assert result.exit_code == 0, result.stderr
+    assert result.stdout
