@@ -49,8 +49,12 @@ RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
 SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
 
 
+class TStop(float):
+    """A T-stop read from -N T2: a float (exposure uses it as the f-number) that remembers it was a T-stop."""
+
+
 class ApertureType(_ListType):
-    """f-numbers (8, f/8, f8) or T-stops (T2, T/2.8); a T-stop comes back negative, to be told apart."""
+    """f-numbers (8, f/8, f8) or T-stops (T2, T/2.8, returned as :class:`TStop`)."""
 
     name = "f-number"
     valid = "0.7 to 1024 (written 8, f/8, f8, or a T-stop T2)"
@@ -58,14 +62,14 @@ class ApertureType(_ListType):
     def parse(self, text: str) -> float:
         t_stop = parse_t_stop(text)
         if t_stop is not None:
-            return -t_stop
+            return TStop(t_stop)
         try:
             return parse_f_number(text)
         except UnitError:
             raise UnitError(f"{text!r} is not an f-number or T-stop (examples: 8, f/8, f8, T2)") from None
 
     def check(self, value: float) -> bool:
-        return 0.7 <= abs(value) <= 1024
+        return 0.7 <= value <= 1024
 
 
 class IlluminanceType(_ListType):
@@ -197,11 +201,11 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     from camtool.exposure.timefmt import format_time
 
     apertures = flatten(f_number)
-    t_stop = any(n < 0 for n in apertures)
-    if t_stop and not all(n < 0 for n in apertures):
+    t_stop = any(isinstance(n, TStop) for n in apertures)
+    if t_stop and not all(isinstance(n, TStop) for n in apertures):
         raise click.BadParameter("give all f-numbers or all T-stops, not a mix", ctx=ctx,
                                  param=param_named(ctx, "f_number"))
-    apertures = [abs(n) for n in apertures]
+    apertures = [float(n) for n in apertures]
     if exact_stops:
         apertures = [exact_f_number(n) for n in apertures]
     film_data = _film(ctx, film, preset_files) if film else None
@@ -218,7 +222,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
                 pupil_magnification=pupil_magnification[0], film=film_data,
                 reciprocity_p=reciprocity_p[0] if reciprocity_p else None,
                 new_iso=new_iso[0] if new_iso else None,
-                new_f_number=abs(new_f_number[0]) if new_f_number else None,
+                new_f_number=float(new_f_number[0]) if new_f_number else None,
                 solve=solve.replace("-", "_"), t_stop=t_stop, step=step, equivalents=equivalents, count=count)
         except SettingsError as error:
             raise _settings_error(ctx, error) from None

@@ -33,12 +33,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from camtool.core.arrays import ops
 from camtool.core.domain import EV_RANGE, SHUTTER_RANGE_S, check
 from camtool.core.errors import DomainError
-from camtool.exposure.reciprocity import Film
+
+if TYPE_CHECKING:
+    from camtool.exposure.reciprocity import Film
 
 LIGHT_PARAMS = ("ev100", "ev", "light", "luminance", "illuminance")
 """The parameters that each give the light level; at most one may be given."""

@@ -14,7 +14,6 @@ works through :func:`corrected_time_s` with its own p.
 
 from __future__ import annotations
 
-import difflib
 import functools
 import itertools
 import math
@@ -213,6 +212,8 @@ def find_film(name: str) -> Film:
     found = index.get(_key(name))
     if found is not None:
         return found
+    import difflib  # only on this error path
+
     close = difflib.get_close_matches(_key(name), list(index), n=6, cutoff=0.65)
     ids = sorted({index[k].id for k in close})
     hint = (f"did you mean {', '.join(ids)}?" if ids else
