@@ -96,7 +96,7 @@ def parse_f_number(text: str | float) -> float:
     return float(match.group(1))
 
 
-_T_STOP = re.compile(rf"^\s*[tT]\s*/?\s*({_NUMBER})\s*$")
+_T_STOP = rf"^\s*[tT]\s*/?\s*({_NUMBER})\s*$"
 
 
 def parse_t_stop(text: str | float) -> float | None:
@@ -110,15 +110,16 @@ def parse_t_stop(text: str | float) -> float | None:
     """
     if isinstance(text, (int, float)):
         return None
-    match = _T_STOP.match(text)
+    match = re.match(_T_STOP, text)  # compiled on first use (re caches it): no start-up cost
     return float(match.group(1)) if match else None
 
 
 _TIME_UNITS = {"h": 3600.0, "min": 60.0, "m": 60.0, "'": 60.0, "s": 1.0, '"': 1.0}
 _TIME_RANK = {"h": 0, "min": 1, "m": 1, "'": 1, "s": 2, '"': 2}
-_TIME_PART = re.compile(rf"\s*({_NUMBER})\s*(h|min|m|s|'|\"|)\s*", re.IGNORECASE)
+# Patterns of the time parser, compiled on first use (re caches them): commands without times pay nothing.
+_TIME_PART = rf"\s*({_NUMBER})\s*(h|min|m|s|'|\"|)\s*"  # matched on lower case
 _FRACTION = re.compile(rf"^\s*({_NUMBER})\s*/\s*({_NUMBER})\s*s?\s*$")
-_CLOCK = re.compile(r"^\s*(\d+):(\d\d(?:\.\d*)?)(?::(\d\d(?:\.\d*)?))?\s*$")
+_CLOCK = r"^\s*(\d+):(\d\d(?:\.\d*)?)(?::(\d\d(?:\.\d*)?))?\s*$"
 _TIME_EXAMPLES = "examples: 1/250, 0.5, 2s, 90s, 1m30s, 1:30, 2h5m, 1:02:03"
 
 
@@ -155,14 +156,14 @@ def parse_time(text: str | float) -> float:
         if denominator == 0:
             raise UnitError(f"{text!r} divides by zero")
         return float(match.group(1)) / denominator
-    match = _CLOCK.match(text)
+    match = re.match(_CLOCK, text)
     if match:
         return _clock_seconds(text, match)
-    raw = text.strip()
+    raw = text.strip().lower()
     parts: list[tuple[float, str]] = []
     position = 0
     while position < len(raw):
-        part = _TIME_PART.match(raw, position)
+        part = re.compile(_TIME_PART).match(raw, position)
         if part is None or part.end() == position:
             raise UnitError(f"{text!r} is not a time ({_TIME_EXAMPLES})")
         parts.append((float(part.group(1)), part.group(2).lower()))
