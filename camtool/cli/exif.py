@@ -20,6 +20,7 @@ from camtool.cli.command import Output, camtool_command
 from camtool.cli.equipment import CAMERA, LENS, open_presets
 from camtool.cli.lensdata import lens_data, model_options
 from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, sensor_options
+from camtool.dof.ladder import model_choices
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, TEXT, Column
 
 BRACKET_KEYS = ["near_min_mm", "near_max_mm", "far_min_mm", "far_max_mm"]
@@ -59,7 +60,7 @@ IMAGE_SUFFIXES = frozenset({
 @sensor_options
 @coc_options
 @distance_plane_option
-@click.option("--model", type=click.Choice(("approx", "thin", "thick", "paraxial", "raytrace", "auto")),
+@click.option("--model", type=click.Choice([m for m in model_choices() if m != "all"]),
               default="auto", show_default=True,
               help="Depth-of-field model (see camtool dof --help); --model thin --distance-from lens "
                    "--coc-rule d/1440 gives ExifTool's Composite:DOF.")
