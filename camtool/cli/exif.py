@@ -77,8 +77,9 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     matching Make and Model; the focus distance from the maker note (Canon,
     Nikon, Olympus) or Exif SubjectDistance. Each *_source key names the tag
     used; a value the file lacks is null and named on stderr. --lens, --camera,
-    --sensor/--crop and -s override what the file says. Needs the exif extra:
-    pip install 'camtool[exif]'.
+    --sensor/--crop and -s override what the file says. A file that cannot be
+    read gives a row of nulls and a line on stderr, and the exit status is 1.
+    Needs the exif extra: pip install 'camtool[exif]'. See docs/exif.md.
 
     \b
     Examples:
