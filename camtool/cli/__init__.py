@@ -58,6 +58,12 @@ class CamtoolGroup(click.Group):
             raise click.UsageError(f"No such command {name!r}.{hint}", ctx)
         return super().resolve_command(ctx, args)
 
+    def invoke(self, ctx: click.Context) -> Any:
+        try:
+            return super().invoke(ctx)
+        except OSError as error:  # past click, which would make a closed pipe exit 1
+            raise _WriteFailed(error) from None
+
     def main(self, args: Any = None, prog_name: str | None = None, **extra: Any) -> Any:  # type: ignore[override]
         """Run the group; expected errors become one line on stderr, never a traceback.
 
@@ -79,9 +85,19 @@ class CamtoolGroup(click.Group):
             _flush_stdout()
             click.echo(f"Error: {error.format_message()}", err=True)
             sys.exit(error.exit_code)
+        except _WriteFailed as failure:
+            _output_failed(failure.error)
         except OSError as error:
             _output_failed(error)
         sys.exit(code if isinstance(code, int) else 0)
+
+
+class _WriteFailed(Exception):
+    """An OSError from a command (a closed pipe, a full disk), carried past click's own handling."""
+
+    def __init__(self, error: OSError) -> None:
+        super().__init__(str(error))
+        self.error = error
 
 
 class _ClosedOutput(io.StringIO):
