@@ -21,7 +21,7 @@ ZIP = "camtool.zip"
 class Output(NamedTuple):
     """What a command computed: rows of raw values, table columns, JSON/CSV keys, table footer."""
 
-    rows: list[dict[str, Any]]
+    rows: Sequence[dict[str, Any]]
     columns: Sequence[Column]
     keys: Sequence[str]
     footer: str = ""

@@ -9,14 +9,18 @@ at :meth:`RowWriter.close`, from rows kept until then.
 
 from __future__ import annotations
 
+import itertools
+import json
 import sys
 from collections.abc import Callable, Sequence
 from typing import IO, Any
 
+from camtool.render.columnar import ColumnRows, texts
 from camtool.render.columns import Column
 from camtool.render.serial import ERROR, csv_cells, field_line, json_row
 
 FORMATS = ("table", "json", "csv")
+_ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
 
 
 class RowWriter:
@@ -105,6 +109,9 @@ class RowWriter:
         if not rows:
             return
         keys = self.keys or []
+        if isinstance(rows, ColumnRows) and not rows.materialised and (self.fields or self.fmt in ("csv", "json")):
+            self._emit_columns(rows, keys)
+            return
         if self.fields:
             self.stream.write("".join(field_line(row, self.fields) + "\n" for row in rows))
         elif self.fmt == "json":
@@ -117,6 +124,39 @@ class RowWriter:
             csv.writer(self.stream, lineterminator="\n").writerows(csv_cells(row, keys) for row in rows)
         else:
             self.table_rows.extend(rows)
+
+    def _emit_columns(self, rows: ColumnRows, keys: list[str]) -> None:
+        """Write rows held as columns: each column turned to text at once, then joined line by line."""
+        count = rows.size
+        errors = rows.errors or []
+        skipped = [i for i, message in enumerate(errors) if message is not None]
+
+        def cells(key: str, style: str) -> list[str]:
+            return texts(rows.columns.get(key), count, style, () if key in rows.kept else skipped)
+
+        if self.fields:
+            columns = [cells(key, "field") for key in self.fields]
+            self.stream.write("\n".join(map("\t".join, zip(*columns))) + "\n")
+        elif self.fmt == "csv":
+            columns = [cells(key, "csv") for key in keys]
+            self.stream.write("\n".join(map(",".join, zip(*columns))) + "\n")
+        else:
+            parts: list[Any] = []
+            for index, key in enumerate(keys):
+                parts.append(itertools.repeat(("{" if index == 0 else ", ") + _ENCODER.encode(key) + ": "))
+                parts.append(cells(key, "json"))
+            if not keys:
+                parts.append(itertools.repeat("{"))
+            if skipped:
+                tail = ["}"] * count
+                for index in skipped:
+                    tail[index] = (", " if keys else "") + f"{_ENCODER.encode(ERROR)}: {_ENCODER.encode(errors[index])}}}"
+                parts.append(tail)
+            else:
+                parts.append(itertools.repeat("}", count))
+            text = ",\n".join(map("".join, zip(*parts)))
+            self.stream.write(("[\n" if not self.started else ",\n") + text)
+            self.started = True
 
 
 def write_rows(
