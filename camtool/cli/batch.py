@@ -34,15 +34,18 @@ import csv
 import difflib
 import io
 import json
+import math
 import os
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from typing import IO, Any
 
 import click
 
-from camtool.cli.params import _ListType
+from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType
 from camtool.cli.rows import ZIP, Output, open_writer
+from camtool.core.units import UnitError
+from camtool.render.columnar import ColumnRows, values_of
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
 
@@ -124,11 +127,14 @@ def _lines(source: IO[str]) -> Iterator[str]:
         yield line
 
 
-Record = tuple[int, "dict[str, Any] | None", "str | None"]
+Record = tuple[int, Any, "str | None"]
 
 
 def _records(source: IO[str], name: str) -> Iterator[Record]:
-    """(row number, {column: cell}, None) per input row, or (row number, None, error) for a bad one."""
+    """(row number, cells, None) per input row, or (row number, None, error) for a bad one.
+
+    CSV rows are lists of cells, after the header as row 0; JSON lines are dicts.
+    """
     lines = _lines(source)
     first = ""
     for line in lines:
@@ -158,6 +164,7 @@ def _records(source: IO[str], name: str) -> Iterator[Record]:
     else:
         reader = csv.reader(_chain(first, lines))
         header = next(reader)
+        yield 0, header, None
         number = 0
         while True:
             try:
@@ -175,7 +182,7 @@ def _records(source: IO[str], name: str) -> Iterator[Record]:
                 yield number, None, (f"--batch row {number}: {len(cells)} cells, more than the "
                                      f"{len(header)} header columns")
                 continue
-            yield number, dict(zip(header, cells)), None
+            yield number, cells, None
 
 
 def _csv_message(error: csv.Error) -> str:
@@ -255,10 +262,6 @@ def _convert(ctx: click.Context, param: click.Parameter, cell: str, unit: str | 
     return value
 
 
-Parsed = tuple[int, dict[str, Any], dict[str, Any]]
-"""(row number, parameter values, passed-through cells) of a good input row."""
-
-
 def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any], source: str,
               on_error: str, fields: tuple[str, ...]) -> None:
     """Compute and write one output row per input row, chunk by chunk; exit 1 if a row was skipped."""
@@ -270,23 +273,23 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
     stream, name = open_source(source)
     try:
         with stream:
-            chunk: list[Parsed] = []
-            bad: dict[int, tuple[str, dict[str, Any]]] = {}
+            header: list[str] | None = None
+            numbers: list[int] = []
+            records: list[Any] = []
+            errors: list[str | None] = []
             for number, record, error in _records(stream, name):
-                passed: dict[str, Any] = {}
-                if error is None:
-                    assert record is not None
-                    values, passed, error = _parse(ctx, columns, record, number)
-                    if error is None:
-                        chunk.append((number, values, passed))
-                if error is not None:
-                    bad[number] = (error, passed)
-                    if on_error == "stop":
-                        break
-                if len(chunk) + len(bad) >= CHUNK:
-                    batch.run(chunk, bad)
-                    chunk, bad = [], {}
-            batch.run(chunk, bad)
+                if number == 0:
+                    header = record
+                    continue
+                numbers.append(number)
+                records.append(record)
+                errors.append(error)
+                if error is not None and on_error == "stop":
+                    break
+                if len(numbers) >= CHUNK:
+                    batch.run(header, numbers, records, errors)
+                    numbers, records, errors = [], [], []
+            batch.run(header, numbers, records, errors)
     except UnicodeDecodeError as error:
         batch.end(failed=True)
         raise BatchFileError(f"--batch {name}: not UTF-8 text ({error.reason}, byte 0x{error.object[error.start]:02x}); "
@@ -300,32 +303,8 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
         ctx.exit(1)
 
 
-def _parse(ctx: click.Context, columns: _Columns, record: dict[str, Any], number: int) -> tuple[
-        dict[str, Any], dict[str, Any], str | None]:
-    """A row's parameter values, its passed-through cells, and the error of its first bad cell."""
-    values: dict[str, Any] = {}
-    passed: dict[str, Any] = {}
-    error = None
-    for column, cell in record.items():
-        target = columns.resolve(column)
-        if target is None:
-            continue
-        if target == PASS:
-            passed[column] = cell
-            continue
-        text = "" if cell is None else cell if isinstance(cell, str) else str(cell)
-        if not text.strip() or error is not None:
-            continue
-        name, unit = target
-        try:
-            values[name] = _convert(ctx, columns.params[name], text, unit, number, column)
-        except BatchRowError as row_error:
-            error = row_error.format_message()
-    return values, passed, error
-
-
 class _Batch:
-    """Computes chunks of parsed rows and writes them in input order."""
+    """Parses chunks of rows column by column, computes them in groups, and writes them in input order."""
 
     def __init__(self, ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any],
                  defaults: dict[str, Any], columns: _Columns, writer: RowWriter, on_error: str) -> None:
@@ -334,91 +313,266 @@ class _Batch:
         self.skipped = self.total = 0
         self.shape: tuple[list[Column], list[str]] | None = None
         self.fallback: list[str] = []
+        self.factors: dict[tuple[str, str | None], float] = {}
 
-    def run(self, chunk: list[Parsed], bad: dict[int, tuple[str, dict[str, Any]]]) -> None:
-        """Compute one chunk and write its rows; in stop mode, the rows before the first bad one, then raise."""
-        results: dict[int, tuple[dict[str, Any], Output]] = {}
-        bad = dict(bad)
-        groups: dict[tuple[Any, ...], list[Parsed]] = {}
-        for member in chunk:
-            settings = tuple(sorted((k, _hashable(v)) for k, v in member[1].items()
-                                    if not isinstance(self.columns.params[k].type, _ListType)))
-            groups.setdefault(settings, []).append(member)
-        for members in groups.values():
-            self._solve(members, results, bad)
-        order = sorted([*results, *bad])
-        self.total += len(order)
-        run: list[dict[str, Any]] = []
-        current: Output | None = None
-        for number in order:
-            if number in bad:
-                self._flush(run, current)
-                run = []
-                message, passed = bad[number]
-                if self.on_error == "stop":
-                    raise BatchRowError(message)
-                click.echo(f"Error: {message} (skipped)", err=True)
-                self.skipped += 1
-                self._start_shape()
-                self.writer.skip(message, passed)
+    # -- parsing: a column at a time ------------------------------------------------------------
+
+    def _parse(self, header: list[str] | None, numbers: list[int], records: list[Any],
+               errors: list[str | None]) -> tuple[dict[str, Any], dict[str, list[Any]]]:
+        """Parameter values by name (float arrays, NaN where a cell is empty; lists for the others) and
+        the passed-through cells by column; a bad cell's message goes to ``errors`` (the first per row)."""
+        if header is not None:
+            width = len(header)
+            rows = [cells if cells is not None and len(cells) == width
+                    else [*(cells or []), *[""] * (width - len(cells or []))] for cells in records]
+            data: dict[str, Sequence[Any]] = dict(zip(header, zip(*rows))) if width else {}
+        else:
+            keys = dict.fromkeys(key for record in records if record for key in record)
+            data = {key: [record.get(key) if record else None for record in records] for key in keys}
+        values: dict[str, Any] = {}
+        passed: dict[str, list[Any]] = {}
+        for column, cells in data.items():
+            target = self.columns.resolve(column)
+            if target is None:
                 continue
-            row, out = results[number]
-            if out is not current:
-                self._flush(run, current)
-                run, current = [], out
-            run.append(row)
-        self._flush(run, current)
+            if target == PASS:
+                passed[column] = list(cells)
+                continue
+            name, unit = target
+            param = self.columns.params[name]
+            if isinstance(param.type, _ListType):
+                values[name] = self._numbers(param, unit, column, cells, numbers, errors)
+            else:
+                values[name] = self._settings(param, unit, column, cells, numbers, errors)
+        return values, passed
 
-    def _solve(self, members: list[Parsed], results: dict[int, tuple[dict[str, Any], Output]],
-               bad: dict[int, tuple[str, dict[str, Any]]]) -> None:
+    def _numbers(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
+                 numbers: list[int], errors: list[str | None]) -> Any:
+        """One list-option column as floats: plain numbers parsed at once, cells with units one by one."""
+        import numpy as np
+
+        key = (str(param.name), unit)
+        if key not in self.factors:
+            self.factors[key] = float(param.type.parse("1" + (unit or "")))  # type: ignore[attr-defined]
+        factor = self.factors[key]
+        array = None
+        try:
+            array = np.array(cells, dtype=float)
+            if np.isnan(array).any():
+                array = None  # "nan" typed in a cell: an error, found below
+        except (ValueError, TypeError):
+            array = _suffixed(cells, param)
+            factor = 1.0 if array is not None else factor
+        if array is not None:
+            array = array * factor if factor != 1.0 else array
+        else:
+            array = np.empty(len(cells))
+            for index, cell in enumerate(cells):
+                text = "" if cell is None else cell if isinstance(cell, str) else str(cell)
+                if not text.strip():
+                    array[index] = np.nan
+                    continue
+                try:
+                    number = float(text)
+                except ValueError:
+                    number = math.nan
+                array[index] = number * factor if number == number else self._one(
+                    param, text, unit, column, numbers[index], errors, index)
+        bad = np.flatnonzero(~_valid(param.type, array) & ~np.isnan(array))
+        for index in bad.tolist():
+            cell = cells[index]
+            array[index] = self._one(param, cell if isinstance(cell, str) else str(cell), unit, column,
+                                     numbers[index], errors, index)
+        return array
+
+    def _one(self, param: click.Parameter, text: str, unit: str | None, column: str, number: int,
+             errors: list[str | None], index: int) -> float:
+        """One cell parsed as on the command line; NaN, and its message in ``errors``, if it is bad."""
+        try:
+            return float(_convert(self.ctx, param, text, unit, number, column))
+        except BatchRowError as error:
+            if errors[index] is None:
+                errors[index] = error.format_message()
+            return math.nan
+
+    def _settings(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
+                  numbers: list[int], errors: list[str | None]) -> list[Any]:
+        """A column of other options (sensor, model, ...): each distinct cell converted once."""
+        known: dict[str, Any] = {}
+        out: list[Any] = [None] * len(cells)
+        for index, cell in enumerate(cells):
+            text = "" if cell is None else cell if isinstance(cell, str) else str(cell)
+            if not text.strip():
+                continue
+            if text not in known:
+                try:
+                    known[text] = _convert(self.ctx, param, text, unit, numbers[index], column)
+                except BatchRowError:
+                    known[text] = _BAD
+            if known[text] is _BAD:
+                try:
+                    _convert(self.ctx, param, text, unit, numbers[index], column)
+                except BatchRowError as error:
+                    if errors[index] is None:
+                        errors[index] = error.format_message()
+                continue
+            out[index] = known[text]
+        return out
+
+    # -- computing: one call per group of rows sharing their settings ------------------------------
+
+    def run(self, header: list[str] | None, numbers: list[int], records: list[Any],
+            errors: list[str | None]) -> None:
+        """Compute one chunk and write its rows; in stop mode, the rows before the first bad one, then raise."""
+        if not numbers:
+            return
+        import numpy as np
+
+        errors = list(errors)
+        values, passed = self._parse(header, numbers, records, errors)
+        for name, column in values.items():
+            param = self.columns.params[name]
+            if isinstance(param.type, _ListType) and self.defaults[name] is None:
+                missing = np.isnan(column)
+                if missing.all():
+                    continue  # not this chunk's column at all: the command says what it needs
+                for index in np.flatnonzero(missing).tolist():
+                    if errors[index] is None:
+                        errors[index] = f"--batch row {numbers[index]}: no value for {param.opts[-1]}"
+        settings = [name for name in values if not isinstance(self.columns.params[name].type, _ListType)]
+        groups: dict[tuple[Any, ...], list[int]] = {}
+        for index in range(len(numbers)):
+            if errors[index] is None:
+                key = tuple(_hashable(values[name][index]) for name in settings)
+                groups.setdefault(key, []).append(index)
+        results: list[tuple[list[int], Output]] = []
+        for members in groups.values():
+            self._solve(members, values, numbers, errors, results)
+        self.total += len(numbers)
+        bad = [index for index, error in enumerate(errors) if error is not None]
+        if bad and self.on_error == "stop":
+            self._write_rows(results, passed, errors, bad[0])
+            raise BatchRowError(str(errors[bad[0]]))
+        for index in bad:
+            click.echo(f"Error: {errors[index]} (skipped)", err=True)
+        self.skipped += len(bad)
+        if bad:
+            self._start_shape(passed)
+        if results and all(isinstance(out.rows, ColumnRows) and not out.rows.materialised for _, out in results):
+            self._write_columns(results, passed, errors)
+        else:
+            self._write_rows(results, passed, errors, len(numbers))
+
+    def _solve(self, members: list[int], values: dict[str, Any], numbers: list[int], errors: list[str | None],
+               results: list[tuple[list[int], Output]]) -> None:
         """Compute a group in one call; if it fails, halve it until the bad rows are found."""
         try:
-            out = self._compute_group(members)
+            out = self._compute_group(members, values)
         except click.ClickException as error:
             if len(members) > 1:
                 half = len(members) // 2
-                self._solve(members[:half], results, bad)
-                self._solve(members[half:], results, bad)
+                self._solve(members[:half], values, numbers, errors, results)
+                self._solve(members[half:], values, numbers, errors, results)
                 return
-            number, _, passed = members[0]
             message = error.format_message()
-            bad[number] = (message if isinstance(error, BatchRowError) else f"--batch row {number}: {message}",
-                           passed)
+            number = numbers[members[0]]
+            errors[members[0]] = message if isinstance(error, BatchRowError) else f"--batch row {number}: {message}"
             return
-        for (number, _, passed), row in zip(members, out.rows):
-            if passed:
-                row = {**passed, **row}
-            results[number] = (row, out)
+        results.append((members, out))
 
-    def _compute_group(self, members: list[Parsed]) -> Output:
+    def _compute_group(self, members: list[int], values: dict[str, Any]) -> Output:
+        import numpy as np
+
         merged = dict(self.params)
-        first = members[0][1]
-        for name, param in self.columns.params.items():
+        for name, column in values.items():
+            param = self.columns.params[name]
             if isinstance(param.type, _ListType):
-                present = [values.get(name) for _, values, _ in members]
-                if any(v is not None for v in present):
-                    default = self.defaults[name]
-                    if default is None and any(v is None for v in present):
-                        missing = next(n for n, v in zip((n for n, _, _ in members), present) if v is None)
-                        raise BatchRowError(f"--batch row {missing}: no value for {param.opts[-1]}")
-                    merged[name] = [[v if v is not None else default for v in present]]
-            elif name in first:
-                merged[name] = first[name]
+                chosen = column[members]
+                missing = np.isnan(chosen)
+                if missing.all():
+                    continue
+                if missing.any():
+                    chosen = np.where(missing, self.defaults[name], chosen)
+                merged[name] = [chosen.tolist()]
+            elif column[members[0]] is not None:
+                merged[name] = column[members[0]]
         self.ctx.meta[ZIP] = True
         try:
             return self.compute(self.ctx, **merged)
         finally:
             self.ctx.meta[ZIP] = False
 
-    def _flush(self, rows: list[dict[str, Any]], out: Output | None) -> None:
-        if out is None or not rows:
-            return
+    # -- writing, in input order ---------------------------------------------------------------------
+
+    def _shape(self, out: Output) -> tuple[list[Column], list[str]]:
         if self.shape is None:
             passed = self.columns.passed
             self.shape = ([*(Column(k, k, TEXT) for k in passed), *out.columns], [*passed, *out.keys])
-        self.writer.write(rows, self.shape[0], self.shape[1], out.footer)
+        return self.shape
 
-    def _start_shape(self) -> None:
+    def _write_columns(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
+                       errors: list[str | None]) -> None:
+        """The chunk as one block of columns: each group's columns put in its rows' places."""
+        import numpy as np
+
+        count = len(errors)
+        columns, keys = self._shape(results[0][1])
+        whole = len(results) == 1 and len(results[0][0]) == count
+        data: dict[str, Any] = {}
+        for key in keys:
+            if key in passed:
+                data[key] = passed[key]
+                continue
+            parts = [(members, out.rows.columns.get(key)) for members, out in results]  # type: ignore[attr-defined]
+            same = all(isinstance(v, str) or v is None for _, v in parts) and len({v for _, v in parts}) == 1
+            if whole or same:
+                data[key] = parts[0][1]
+            elif all(_numeric(v) for _, v in parts):
+                column = np.full(count, np.nan)
+                for members, value in parts:
+                    column[members] = np.asarray(value, dtype=float).reshape(-1) if not isinstance(
+                        value, (int, float)) else value
+                data[key] = column
+            else:
+                column = np.empty(count, dtype=object)
+                for members, value in parts:
+                    column[members] = values_of(value, len(members)) if value is not None else None
+                data[key] = column
+        skipped = errors if any(error is not None for error in errors) else None
+        rows = ColumnRows(count, data, skipped, kept=frozenset(passed))
+        for _, out in results:
+            self.writer.write(rows if out is results[0][1] else [], columns, keys, out.footer)
+
+    def _write_rows(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
+                    errors: list[str | None], end: int) -> None:
+        """Rows before index ``end`` one by one (row dicts): skipped rows in place, runs of one output together."""
+        found: dict[int, tuple[dict[str, Any], Output]] = {}
+        for members, out in results:
+            for index, row in zip(members, out.rows):
+                if index < end:
+                    found[index] = ({**{k: v[index] for k, v in passed.items()}, **row} if passed else row, out)
+        run: list[dict[str, Any]] = []
+        current: Output | None = None
+        for index in range(end):
+            if errors[index] is not None:
+                self._flush(run, current)
+                run = []
+                self.writer.skip(str(errors[index]), {k: v[index] for k, v in passed.items()})
+                continue
+            row, out = found[index]
+            if out is not current:
+                self._flush(run, current)
+                run, current = [], out
+            run.append(row)
+        self._flush(run, current)
+
+    def _flush(self, rows: list[dict[str, Any]], out: Output | None) -> None:
+        if out is None or not rows:
+            return
+        columns, keys = self._shape(out)
+        self.writer.write(rows, columns, keys, out.footer)
+
+    def _start_shape(self, passed: dict[str, list[Any]]) -> None:
         """Keys for skipped rows before any row was computed: the passed-through columns and the command's."""
         if self.writer.keys is None and not self.writer.pending:
             keys = getattr(self.ctx.command, "output_key_list", [])
@@ -432,6 +586,54 @@ class _Batch:
         if failed and self.writer.keys is None:
             return
         self.writer.close(self.fallback, [Column(k, k, TEXT) for k in self.fallback])
+
+
+_BAD = object()
+
+
+def _numeric(value: Any) -> bool:
+    if isinstance(value, (int, float)):
+        return True
+    return getattr(value, "dtype", None) is not None and value.dtype.kind in "fiub"
+
+
+def _suffixed(cells: Sequence[Any], param: click.Parameter) -> Any:
+    """Cells that all end in the same unit (``3.2m``), as numbers in the option's unit; None otherwise."""
+    import numpy as np
+
+    first = cells[0] if cells else None
+    if not isinstance(first, str):
+        return None
+    text = first.rstrip()
+    suffix = text[len(text.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")):]
+    if not suffix or not all(isinstance(cell, str) and cell.rstrip().endswith(suffix) for cell in cells):
+        return None
+    try:
+        scale = float(param.type.parse("1" + suffix))  # type: ignore[attr-defined]
+        array = np.array([cell.rstrip()[:-len(suffix)] for cell in cells], dtype=float)
+    except (ValueError, TypeError, UnitError):
+        return None
+    if np.isnan(array).any():
+        return None
+    return array * scale
+
+
+def _valid(kind: click.ParamType, array: Any) -> Any:
+    """Which values pass the option's range check (the check of :mod:`camtool.cli.params`, on arrays)."""
+    import numpy as np
+
+    check = type(kind).check  # type: ignore[attr-defined]
+    with np.errstate(invalid="ignore"):
+        if check is LengthType.check:
+            ok = array > 0
+            return ok if kind.allow_inf else ok & np.isfinite(array)  # type: ignore[attr-defined]
+        if check is FNumberType.check:
+            return (array >= 0.7) & (array <= 1024)
+        if check is NumberType.check:
+            return (array >= kind.low) & (array <= kind.high)  # type: ignore[attr-defined]
+        if check is _ListType.check:
+            return (array > 0) & np.isfinite(array)
+    return np.array([value != value or kind.check(value) for value in array.tolist()], dtype=bool)  # type: ignore[attr-defined]
 
 
 def _hashable(value: Any) -> Any:
