@@ -112,7 +112,9 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
 
         array = np.asarray(values).reshape(-1)
         if array.dtype.kind not in "fiub":
-            out = [_string(str(v), style) for v in array.tolist()]
+            items = array.tolist()
+            shown = {item: _string(str(item), style) for item in set(items)}
+            out = list(map(shown.__getitem__, items))
         else:
             array = array.astype(float, copy=False)
             if len(array) == 1 and count > 1:
