@@ -120,3 +120,21 @@ def test_a_grid_above_the_limit_is_refused_with_a_hint() -> None:
     assert result.stderr == ("Error: the list options ask for 1000 × 1000 = 1,000,000 combinations; the limit is "
                              "100,000 (write the scenes to a file, one per row, and use --batch, which streams "
                              "any number)\n")
+
+
+@pytest.mark.parametrize("output", [["--format", "json"], ["--format", "csv"], ["--field", "near_mm",
+                                                                                 "--field", "file"]])
+def test_column_writer_and_row_writer_give_the_same_bytes(output: list[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    # two sensors (two groups computed apart, interleaved), a bad cell, a scene too close, a passed-through column
+    text = ("file,focal-length,f-number,distance,sensor\n"
+            "a,50,8,3m,36x24\nb,25,4,3m,18x12\nc,50,x,3m,36x24\nd,50,11,0.01m,36x24\ne,24,8,inf,18x12\n"
+            'f,"35",f/2.8,10ft,36x24\n')
+    code, fast, fast_err = batch(text, "dof", *output, "--on-error", "skip")
+    monkeypatch.setattr("camtool.render.columnar.ColumnRows.materialised", property(lambda self: True))
+    code2, slow, slow_err = batch(text, "dof", *output, "--on-error", "skip")
+    assert (code, fast, fast_err) == (code2, slow, slow_err)
+    assert code == 1 and fast_err.count("(skipped)") == 2
+    if "json" in output:
+        rows = json.loads(fast)
+        assert [row["file"] for row in rows] == list("abcdef")
+        assert rows[4]["far_mm"] is None and rows[2]["near_mm"] is None and "error" in rows[3]

@@ -15,10 +15,13 @@ may carry units (``3m``); bare numbers mean what they mean on the command
 line, except in ``*_mm`` columns, which are millimetres. Options given on the
 command line apply to every row; a column overrides them.
 
-Rows are read in chunks of :data:`CHUNK` rows; within a chunk, rows sharing
-the same non-numeric settings (sensor, model, ...) are computed in one
-vectorised call (a failing call is bisected to find its bad rows), and the
-output keeps the input order. Output goes through the one
+Rows are read in chunks of :data:`CHUNK` rows and parsed a column at a time:
+plain numbers (and cells that all share one unit, ``3.2m``) at once, other
+cells one by one; a validity mask finds the bad cells, which alone are
+parsed again for their messages. Within a chunk, rows sharing the same
+non-numeric settings (sensor, model, ...) are computed in one vectorised
+call (a failing call is bisected to find its bad rows), and the output
+keeps the input order, written column by column. Output goes through the one
 :class:`~camtool.render.output.RowWriter`: memory stays bounded for JSON, CSV
 and ``--field`` output; a table is drawn once at the end from every row.
 
