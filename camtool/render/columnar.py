@@ -69,6 +69,27 @@ class ColumnRows(Sequence[dict[str, Any]]):
             self._rows = rows
         return self._rows
 
+    def slice(self, start: int, stop: int) -> ColumnRows:
+        """Rows ``start`` to ``stop`` (unmade dicts stay unmade).
+
+        >>> import numpy as np
+        >>> ColumnRows(3, {"f": 50.0, "N": np.array([2.8, 4.0, 8.0])}).slice(1, 3)[0]
+        {'f': 50.0, 'N': 4.0}
+        """
+        stop = min(stop, self.size)
+        count = max(0, stop - start)
+
+        def cut(values: Any) -> Any:
+            if isinstance(values, (str, int, float)) or values is None:
+                return values
+            if hasattr(values, "reshape"):
+                flat = values.reshape(-1)
+                return flat if len(flat) == 1 else flat[start:stop]
+            return values[start:stop]
+
+        errors = self.errors[start:stop] if self.errors is not None else None
+        return ColumnRows(count, {key: cut(value) for key, value in self.columns.items()}, errors, self.kept)
+
     def __len__(self) -> int:
         return self.size
 

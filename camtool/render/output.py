@@ -21,6 +21,8 @@ from camtool.render.serial import ERROR, csv_cells, field_line, json_row
 
 FORMATS = ("table", "json", "csv")
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
+SLICE = 20_000
+"""Rows turned to text at a time by the column writer."""
 
 
 class RowWriter:
@@ -110,7 +112,8 @@ class RowWriter:
             return
         keys = self.keys or []
         if isinstance(rows, ColumnRows) and not rows.materialised and (self.fields or self.fmt in ("csv", "json")):
-            self._emit_columns(rows, keys)
+            for start in range(0, rows.size, SLICE):  # a slice at a time: the text of one slice in memory
+                self._emit_columns(rows.slice(start, start + SLICE) if rows.size > SLICE else rows, keys)
             return
         if self.fields:
             self.stream.write("".join(field_line(row, self.fields) + "\n" for row in rows))
