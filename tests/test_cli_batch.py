@@ -6,7 +6,7 @@ import json
 import random
 
 import pytest
-from cli_helpers import run, run_json
+from cli_helpers import run, run_json, time_bound  # noqa: F401 - an autouse fixture
 
 from camtool.dof.closed import thin_dof
 from camtool.dof.ladder import depth_of_field

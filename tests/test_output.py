@@ -6,13 +6,15 @@ import json
 import re
 
 import pytest
-from cli_helpers import run
+from cli_helpers import run, time_bound  # noqa: F401 - an autouse fixture
 from click.testing import CliRunner
 
 from camtool.cli import cli
 from camtool.dof.closed import thin_dof
 
 SCENES = ["dof", "-f", "50", "-s", "3"]
+
+
 
 
 def batch(text: str, *args: str, env: dict[str, str | None] | None = None) -> tuple[int, str, str]:

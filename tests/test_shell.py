@@ -230,3 +230,17 @@ def test_a_narrow_terminal_names_the_columns_left_out() -> None:
     table = drawn.split("thin model")[0]
     assert max(len(re.sub(r"\x1b\[[0-9;]*m", "", line)) for line in table.splitlines()) <= 60
     assert "622.6" in drawn  # the front depth at f/8, whole
+
+
+def test_a_grid_of_a_million_rows_is_refused_without_the_memory_it_would_take() -> None:
+    import resource
+
+    many = ",".join(str(1 + i / 100) for i in range(1000))
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (512 << 20, 512 << 20))
+
+    result = subprocess.run([CAMTOOL, "dof", "-f", "50", "-N", many, "-s", many], capture_output=True, text=True,
+                            env=_camtool_env({"OPENBLAS_NUM_THREADS": "1"}), timeout=30, preexec_fn=limit)
+    assert result.returncode == 2 and result.stdout == ""
+    assert "1,000,000 combinations; the limit is 100,000" in result.stderr and "--batch" in result.stderr
