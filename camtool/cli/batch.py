@@ -339,7 +339,9 @@ class _Batch:
             if target is None:
                 continue
             if target == PASS:
-                passed[column] = list(cells)
+                # JSON's NaN and Infinity have no place in JSON output: null
+                passed[column] = list(cells) if header is not None else [
+                    None if isinstance(cell, float) and not math.isfinite(cell) else cell for cell in cells]
                 continue
             name, unit = target
             param = self.columns.params[name]
