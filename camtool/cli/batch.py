@@ -115,10 +115,13 @@ def open_source(source: str) -> tuple[IO[str], str]:
     return io.TextIOWrapper(binary, encoding=encoding, newline=""), name
 
 
-def _lines(source: IO[str]) -> Iterator[str]:
+def _lines(source: IO[str], name: str) -> Iterator[str]:
     """The lines of ``source``, none longer than :data:`LINE_LIMIT` (memory stays bounded)."""
     while True:
-        line = source.readline(LINE_LIMIT)
+        try:
+            line = source.readline(LINE_LIMIT)
+        except OSError as error:  # e.g. standard input redirected from a directory
+            raise BatchFileError(f"--batch {name}: cannot read it ({error.strerror or error})") from None
         if not line:
             return
         if len(line) >= LINE_LIMIT and not line.endswith("\n"):
@@ -138,7 +141,7 @@ def _records(source: IO[str], name: str) -> Iterator[Record]:
 
     CSV rows are lists of cells, after the header as row 0; JSON lines are dicts.
     """
-    lines = _lines(source)
+    lines = _lines(source, name)
     first = ""
     for line in lines:
         if line.strip():

@@ -17,11 +17,10 @@ keep their cells).
 
 from __future__ import annotations
 
-import csv
 import json
 import math
 from collections.abc import Sequence
-from typing import IO, Any
+from typing import Any
 
 Row = dict[str, Any]
 
@@ -76,18 +75,3 @@ def field_line(row: Row, fields: Sequence[str]) -> str:
         value = row.get(key)
         values.append("" if value is None else repr(value) if isinstance(value, float) else str(value))
     return "\t".join(values)
-
-
-def write_json(rows: Sequence[Row], keys: Sequence[str], stream: IO[str]) -> None:
-    """Write ``rows`` as a JSON array of objects holding ``keys``, one per line (an infinite value is null)."""
-    if not rows:
-        stream.write("[]\n")
-        return
-    stream.write("[\n" + ",\n".join(json_row(row, keys) for row in rows) + "\n]\n")
-
-
-def write_csv(rows: Sequence[Row], keys: Sequence[str], stream: IO[str]) -> None:
-    """Write ``rows`` as CSV with a header of ``keys`` (an infinite value is an empty cell)."""
-    writer = csv.writer(stream, lineterminator="\n")
-    writer.writerow(keys)
-    writer.writerows(csv_cells(row, keys) for row in rows)
