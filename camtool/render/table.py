@@ -4,7 +4,7 @@ Drawn as plain text (three spaces between columns, a rule under the
 headers), so every cell is printed whole: a number is never cropped. On a
 terminal, or with ``COLUMNS`` set, a table wider than the screen leaves out
 columns, pictures first and then from the right, and says on standard error
-which ones and how to get them; into a pipe with no ``COLUMNS`` the table
+which ones (but for pictures, which hold no value) and how to get them; into a pipe with no ``COLUMNS`` the table
 takes the width it needs. ``COLUMNS`` that is not a positive number is
 ignored.
 """
@@ -152,8 +152,10 @@ def write_table(
         and os.environ.get("TERM") != "dumb"
     rendered = render_table(rows, columns, units, footer, width, bold)
     stream.write(rendered.text)
-    if rendered.left_out and errors is not None:
-        names = ", ".join(column.header for column in rendered.left_out)
+    # a picture (a column with a legend, the sharp-zone bar) gives way quietly: it holds no value
+    left_out = [column for column in rendered.left_out if not column.legend]
+    if left_out and errors is not None:
+        names = ", ".join(column.header for column in left_out)
         errors.write(f"camtool: left out to fit {width} columns: {names} (a wider terminal or COLUMNS shows them; "
                      "--format csv or json gives every value)\n")
 
