@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 import pytest
 from cli_helpers import run, time_bound  # noqa: F401 - an autouse fixture
@@ -25,13 +26,17 @@ def batch(text: str, *args: str, env: dict[str, str | None] | None = None) -> tu
 
 @pytest.mark.parametrize("output", [["--format", "table"], ["--format", "json"], ["--format", "csv"],
                                     ["--field", "near_mm", "--field", "far_mm"], ["--units", "imperial"]])
-def test_options_and_batch_give_the_same_bytes(output: list[str]) -> None:
+def test_options_and_batch_give_the_same_bytes(output: list[str], tmp_path: Path) -> None:
     single = run(*SCENES, "-N", "2.8,4,8", *output)
     assert single.exit_code == 0
     for text in ("f-number\n2.8\n4\n8\n", '{"f_number": 2.8}\n{"f_number": "f/4"}\n{"f_number": 8}\n'):
         code, out, err = batch(text, *SCENES, *output)
         assert code == 0, err
         assert out == single.stdout
+    scenes = tmp_path / "scenes.csv"
+    scenes.write_text("f-number\n2.8\n4\n8\n", encoding="utf-8")
+    from_file = run(*SCENES, *output, "--batch", str(scenes))
+    assert from_file.exit_code == 0 and from_file.stdout == single.stdout
 
 
 def test_json_layout_is_one_row_per_line_in_an_array() -> None:
