@@ -1,7 +1,8 @@
 """The ``raytrace`` model against the real-ray reference rows, plus ray-level checks.
 
 Reference: tests/data/oracle-dof.csv (rayoptics 0.9.8 for dgauss100 and cellphone,
-optiland 0.6.3 for telephoto127; definitions in tests/data/oracle-README.md). Required
+optiland 0.6.3 for telephoto127, telecentric36 and wideangle17; definitions in
+tests/data/oracle-README.md). Required
 agreement: 0.5 % of the front and rear depths (real_defocus) and 1 % of blur_at_focus_mm
 (real_rms); the assertions below are far tighter, which the README's ~6e-9 says is possible.
 """
@@ -26,7 +27,7 @@ from camtool.optics.tracer import RayTraceError, real_tracer
 DATA = Path(__file__).parent / "data"
 LENSES = {
     name: prescription_from_mapping(yaml.safe_load((DATA / "prescriptions" / f"{name}.yaml").read_text()), name)
-    for name in ("dgauss100", "telephoto127", "cellphone")
+    for name in ("dgauss100", "telephoto127", "cellphone", "telecentric36", "wideangle17")
 }
 with open(DATA / "oracle-dof.csv", newline="") as _handle:
     ROWS = list(csv.DictReader(_handle))
