@@ -45,7 +45,7 @@ from camtool.optics.tracer import _SQRT8, CRITERIA, RayTraceError, RealRayTracer
 __all__ = ["NoDepthOfField", "RealFocus", "closest_focus_mm", "raytrace_dof", "real_focus"]
 
 _PLANES = ("sensor", "lens", "entrance_pupil")
-_DEGREE = 16
+_DEGREE = 24
 _TRUST = 1e-11
 """Largest trusted interpolation error, relative to f (z_best) or to the value (S, B)."""
 

@@ -66,7 +66,6 @@ class _Surface:
     z: float
     c: float
     k: float
-    lowest: int
     dense: tuple[float, ...]
     n_before: float
     n_after: float
@@ -76,6 +75,12 @@ class _Surface:
     def spherical(self) -> bool:
         """True for a sphere or a plane (no conic, no polynomial): the closed-form fast path."""
         return self.k == 0.0 and not self.dense
+
+    @functools.cached_property
+    def terms(self) -> tuple[np.ndarray, np.ndarray]:
+        """Polynomial coefficients a_1…a_P and the slope coefficients 2·a_2…P·a_P."""
+        values = np.array(self.dense)
+        return values, values[1:] * np.arange(2, values.size + 1)
 
 
 @dataclass(frozen=True)
@@ -96,19 +101,19 @@ class FanSummary:
     aim_mm: np.ndarray
 
 
-def _poly(lowest: int, dense: tuple[float, ...], r: np.ndarray) -> tuple[Any, Any]:
-    """Σ a_n rⁿ and its derivative Σ n·a_n rⁿ⁻¹ at r ≥ 0, by Horner's rule.
+def _poly(values: np.ndarray, slopes: np.ndarray, r: Any) -> tuple[Any, Any]:
+    """Σ a_n rⁿ and its derivative Σ n·a_n rⁿ⁻¹ at r ≥ 0, from the powers r¹…r^P.
 
-    ``dense`` holds a_lowest, a_lowest+1, … (zeros included), so no array
-    is raised to a power.
+    ``values`` holds a_1…a_P (zeros included), ``slopes`` 2·a_2…P·a_P: the
+    sums are two matrix products over the stacked powers.
     """
-    value: Any = 0.0
-    slope: Any = 0.0
-    for offset in range(len(dense) - 1, -1, -1):
-        value = value * r + dense[offset]
-        slope = slope * r + (lowest + offset) * dense[offset]
-    r_low = r ** (lowest - 1) if lowest != 2 else r
-    return value * r_low * r, slope * r_low
+    r = np.asarray(r)
+    flat = r.reshape(-1)
+    powers = np.empty((values.size, flat.size))
+    powers[0] = flat
+    for k in range(1, values.size):
+        np.multiply(powers[k - 1], flat, out=powers[k])
+    return (values @ powers).reshape(r.shape), (slopes @ powers[:-1]).reshape(r.shape)
 
 
 def _propagate(
@@ -174,7 +179,7 @@ def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool
         dzdy = dsag * np.sign(y + t * m)
         step = (z0 + t * l - sag) / (l - dzdy * m)
         t = t - step
-        if not np.any(np.abs(step) > 1e-8):
+        if not np.fmax.reduce(np.abs(step), axis=None) > 1e-8:
             break  # quadratic convergence: the error left is ~ step² ≪ 1e-13 mm
     y = y + t * m
     z0 = z0 + t * l
@@ -223,11 +228,8 @@ class RealRayTracer:
         prepared = []
         for surface, z in zip(prescription.surfaces, prescription.vertices_mm):
             terms = dict(surface.aspheric)
-            lowest = min(terms, default=2)
-            dense = tuple(terms.get(p, 0.0) for p in range(lowest, max(terms, default=1) + 1))
-            prepared.append(
-                _Surface(z, surface.curvature, surface.conic, lowest, dense, n_before, surface.n, surface.thickness_mm)
-            )
+            dense = tuple(terms.get(p, 0.0) for p in range(1, max(terms, default=0) + 1))
+            prepared.append(_Surface(z, surface.curvature, surface.conic, dense, n_before, surface.n, surface.thickness_mm))
             n_before = surface.n
         self.surfaces = tuple(prepared)
         self.stop = prescription.stop_index
@@ -384,7 +386,7 @@ def _sag(s: _Surface, r: Any) -> tuple[Any, Any]:
     sag = s.c * r * r / (1.0 + root)
     slope = s.c * r / root
     if s.dense:
-        extra, extra_slope = _poly(s.lowest, s.dense, r)
+        extra, extra_slope = _poly(*s.terms, r)
         sag, slope = sag + extra, slope + extra_slope
     return sag, slope
 
