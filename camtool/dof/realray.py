@@ -121,6 +121,7 @@ class _Curves:
         if not z_e - z_close > 0.0:
             raise RayTraceError(f"{tracer._name()}: the entrance pupil lies in front of the closest object")
         self.at_vertex = z_close == 0.0
+        self.v_front = 1.0 / z_e if z_e > 0.0 else math.inf  # the object at the first vertex
         v_cap = 1.0 / (z_e - z_close)
         for _ in range(4):
             nodes = v_cap * (1.0 - np.cos(np.pi * np.arange(_DEGREE + 1) / _DEGREE)) / 2.0
@@ -335,12 +336,19 @@ class _Problem:
         return near, far
 
     def _near_beyond(self, z_film: float) -> float:
-        """Near limit closer than the 1:1 object, by direct traces towards the front focal point."""
+        """Near limit closer than the 1:1 object, by direct traces towards the front focal point.
+
+        Objects stay in front of the first vertex: when the blur there is
+        still below c, the near limit is the first vertex.
+        """
         curves = self.curves
         fo = curves.fo
         gap = fo.z_e_mm - fo.z_f_mm  # 1/v of an object at the front focal point F
-        v_pole = 1.0 / gap if gap > 0.0 else 2.0 * curves.v_cap
-        candidates = [curves.v_cap + (v_pole - curves.v_cap) * q for q in (0.05, 0.15, 0.3, 0.5, 0.7, 0.85, 0.95)]
+        v_pole = 1.0 / gap if gap > 0.0 else 4.0 * curves.v_cap
+        v_front = curves.v_front
+        end = min(v_pole, v_front)
+        factors = (0.05, 0.15, 0.3, 0.5, 0.7, 0.85, 0.95) + ((1.0,) if end == v_front else ())
+        candidates = [curves.v_cap + (end - curves.v_cap) * q for q in factors]
 
         def excess(v: float) -> float:
             z, s, b = curves.exact([v])
@@ -353,6 +361,8 @@ class _Problem:
             if value > 0.0:
                 return brent(excess, low, v, 1e-14 * v)
             low = v
+        if end == v_front:
+            return v_front  # nothing can be put closer than the first vertex
         raise RayTraceError(f"{curves.tracer._name()}: no near limit in front of the front focal point")
 
 
@@ -406,7 +416,7 @@ def _object_z(curves: _Curves, v: float) -> float:
     """Lens coordinate of the object at pupil vergence v (−inf at infinity, 0 at the first vertex)."""
     if v == 0.0:
         return -math.inf
-    if curves.at_vertex and v == curves.v_cap:
+    if v == curves.v_front:
         return 0.0
     return curves.fo.z_e_mm - 1.0 / v
 
