@@ -37,6 +37,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from camtool.core.arrays import is_scalar
 from camtool.core.errors import DomainError, require_positive
+from camtool.core.planes import check_plane
 from camtool.dof.limits import DofLimits
 from camtool.optics.prescription import Prescription
 from camtool.optics.roots import brent
@@ -44,7 +45,6 @@ from camtool.optics.tracer import _SQRT8, CRITERIA, RayTraceError, RealRayTracer
 
 __all__ = ["NoDepthOfField", "RealFocus", "closest_focus_mm", "raytrace_dof", "real_focus"]
 
-_PLANES = ("sensor", "lens", "entrance_pupil")
 _DEGREE = 24
 _TRUST = 1e-11
 """Largest trusted interpolation error, relative to f (z_best) or to the value (S, B)."""
@@ -221,8 +221,7 @@ def _check_scene(
     prescription: Prescription, f_number: float, distance_mm: float, distance_from: str, criterion: str
 ) -> None:
     """Validate the scalar inputs of the real-ray functions."""
-    if distance_from not in _PLANES:
-        raise ValueError(f"distance_from must be one of {', '.join(_PLANES)}, not {distance_from!r}")
+    check_plane(distance_from)
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {', '.join(CRITERIA)}, not {criterion!r}")
     require_positive("f_number", f_number, unit="")
