@@ -54,12 +54,13 @@ def test_the_disk_cache_holds_what_a_fresh_calibration_computes(tmp_path, monkey
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     lens = load("telecentric36")
     computed = auto._compute_table(lens)
-    path = auto._cache_path(lens)
-    auto._write_table(path, computed)
-    assert auto._read_table(path) == computed  # floats survive JSON exactly (shortest repr)
+    path, content = auto._cache_path(lens), auto._content(lens)
+    auto._write_table(path, computed, content)
+    assert auto._read_table(path, content) == computed  # floats survive JSON exactly (shortest repr)
     assert json.loads(Path(path).read_text())["f_numbers"][0] == 1.0
+    assert auto._read_table(path, content + " ") is None  # a file of other content is not used
     Path(path).write_text("{not json")
-    assert auto._read_table(path) is None  # a damaged file is recomputed, not trusted
+    assert auto._read_table(path, content) is None  # a damaged file is recomputed, not trusted
 
 
 def test_the_cache_key_follows_the_prescription_content(tmp_path, monkeypatch):

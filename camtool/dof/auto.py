@@ -255,34 +255,45 @@ def aberration_table(prescription: Any) -> Table:
     >>> len(grid), grid[0], grid[-1], table[0][0][0]
     (13, 1.0, 64.0, 0.0)
     """
-    path = _cache_path(prescription)
-    table = _read_table(path)
+    path, content = _cache_path(prescription), _content(prescription)
+    table = _read_table(path, content)
     if table is None:
         table = _compute_table(prescription)
-        _write_table(path, table)
+        _write_table(path, table, content)
     return table
 
 
-def _cache_path(prescription: Any) -> str:
-    """Cache file of a prescription's table: named by a hash of its surfaces, media and the table version."""
-    import hashlib
-    import os
+def _content(prescription: Any) -> str:
+    """What the table depends on: the surfaces, the object medium, the grids and the table version."""
+    return repr((_TABLE_VERSION, _grid(prescription), _ABERRATION_MAGNIFICATIONS, prescription.surfaces,
+                 prescription.object_index))
 
-    content = repr((_TABLE_VERSION, _grid(prescription), _ABERRATION_MAGNIFICATIONS, prescription.surfaces,
-                    prescription.object_index))
-    key = hashlib.sha256(content.encode("utf-8")).hexdigest()[:32]
+
+def _cache_path(prescription: Any) -> str:
+    """Cache file of a prescription's table, named by two checksums of :func:`_content`.
+
+    (zlib's checksums import in no time, unlike hashlib; the file also holds
+    the content itself, and a file whose content differs is not used.)
+    """
+    import os
+    import zlib
+
+    data = _content(prescription).encode("utf-8")
+    key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
     base = os.environ.get("XDG_CACHE_HOME", "")
     base = base if base and os.path.isabs(base) else os.path.join(os.path.expanduser("~"), ".cache")
     return os.path.join(base, "camtool", "aberrations", f"{key}.json")
 
 
-def _read_table(path: str) -> Table | None:
-    """The cached table, or None when the file is missing, unreadable or not a table of the grid's size."""
+def _read_table(path: str, content: str) -> Table | None:
+    """The cached table, or None when the file is missing, unreadable, of other content or of another grid size."""
     import json
 
     try:
         with open(path, encoding="utf-8") as handle:
             data = json.load(handle)
+        if data["content"] != content:
+            return None
         grid = tuple(float(n) for n in data["f_numbers"])
         table = tuple(tuple((float(m), float(s)) for m, s in row) for row in data["table"])
     except (OSError, ValueError, KeyError, TypeError):
@@ -292,7 +303,7 @@ def _read_table(path: str) -> Table | None:
     return grid, table
 
 
-def _write_table(path: str, table: Table) -> None:
+def _write_table(path: str, table: Table, content: str) -> None:
     """Store the table (atomically; a cache that cannot be written is skipped)."""
     import json
     import os
@@ -301,7 +312,7 @@ def _write_table(path: str, table: Table) -> None:
     try:
         os.makedirs(os.path.dirname(path), exist_ok=True)
         with tempfile.NamedTemporaryFile("w", dir=os.path.dirname(path), delete=False, suffix=".tmp") as handle:
-            json.dump({"version": _TABLE_VERSION, "f_numbers": table[0], "table": table[1]}, handle)
+            json.dump({"content": content, "f_numbers": table[0], "table": table[1]}, handle)
         os.replace(handle.name, path)
     except OSError:
         pass
