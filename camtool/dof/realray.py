@@ -45,9 +45,9 @@ from camtool.optics.tracer import _SQRT8, CRITERIA, RayTraceError, RealRayTracer
 
 __all__ = ["NoDepthOfField", "RealFocus", "closest_focus_mm", "raytrace_dof", "real_focus"]
 
-_DEGREE = 24
-_TRUST = 1e-11
-"""Largest trusted interpolation error, relative to f (z_best) or to the value (S, B)."""
+_DEGREE = 16
+_TRUST = 1e-10
+"""Largest trusted interpolation error, relative to f (z_best) or to the largest value (S, B²)."""
 
 
 class NoDepthOfField(DomainError):
@@ -113,7 +113,7 @@ class _Curves:
 
     def __init__(self, tracer: RealRayTracer, f_number: float) -> None:
         self.tracer, self.f_number = tracer, f_number
-        self.trusted = False
+        self.trusted = self.rms_trusted = False
         self.tails: tuple[float, float, float] = (math.inf, math.inf, math.inf)
         fo = self.fo = tracer.first
         f, z_e = fo.efl_mm, fo.z_e_mm
@@ -136,20 +136,35 @@ class _Curves:
             raise tracer.failure(f_number, summary, ok)
         self.v_cap = v_cap
         self._pole = fo.z_f_mm - z_e
+        self._full = v_cap == 1.0 / (z_e - z_close)  # the whole range traced (no rays failed at close range)
+        self._nodes, self._summary = nodes, summary
         self._fit(nodes, summary)
-        if not self.trusted and self.v_cap == 1.0 / (z_e - z_close):
-            # double the degree: the 2n-point nodes are the n-point ones and their midpoints
-            odd = v_cap * (1.0 - np.cos(np.pi * np.arange(1, 2 * _DEGREE, 2) / (2 * _DEGREE))) / 2.0
-            more, ok = tracer.summarise(odd, f_number)
-            if np.all(ok):
-                merged = np.empty(2 * _DEGREE + 1)
-                merged[0::2], merged[1::2] = nodes, odd
-                both = [np.empty(2 * _DEGREE + 1) for _ in range(4)]
-                fields = ("z_best", "slope_rms", "best_blur", "aim_mm")
-                for array, name in zip(both, fields):
-                    array[0::2], array[1::2] = getattr(summary, name), getattr(more, name)
-                self._fit(merged, type(summary)(both[0], both[1], both[2], both[2], both[3]))
-        self.trusted = self.trusted and self.v_cap == 1.0 / (z_e - z_close)
+        if not self.trusted:
+            self.refine()
+
+    def refine(self) -> None:
+        """Double the degree once (the 2n-point nodes are the n-point ones and their midpoints)."""
+        nodes, summary = self._nodes, self._summary
+        degree = nodes.size - 1
+        if degree != _DEGREE or not self._full:
+            return
+        odd = self.v_cap * (1.0 - np.cos(np.pi * np.arange(1, 2 * degree, 2) / (2 * degree))) / 2.0
+        more, ok = self.tracer.summarise(odd, self.f_number)
+        if not np.all(ok):
+            return
+        merged = np.empty(2 * degree + 1)
+        merged[0::2], merged[1::2] = nodes, odd
+        both = [np.empty(2 * degree + 1) for _ in range(4)]
+        for array, name in zip(both, ("z_best", "slope_rms", "best_blur", "aim_mm")):
+            array[0::2], array[1::2] = getattr(summary, name), getattr(more, name)
+        self._nodes, self._summary = merged, type(summary)(both[0], both[1], both[2], both[2], both[3])
+        self._fit(self._nodes, self._summary)
+
+    def trusts(self, criterion: str) -> bool:
+        """Whether the interpolants are good enough for ``criterion`` (refining them once if not)."""
+        if not self.trusted or (criterion == "rms" and not self.rms_trusted):
+            self.refine()
+        return self._full and self.trusted and (criterion != "rms" or self.rms_trusted)
 
     def _fit(self, nodes: np.ndarray, summary: Any) -> None:
         """Chebyshev interpolants through the traced nodes, and whether to trust them."""
@@ -161,12 +176,17 @@ class _Curves:
         self.at_zero = (float(summary.z_best[0]), float(summary.slope_rms[0]), float(summary.best_blur[0]))
 
         def tail(c: np.ndarray) -> float:
-            return float(abs(c[-1]) + abs(c[-2]))
+            # error of the interpolant ≈ twice the coefficients left out; they fall geometrically by
+            # about ρ = |c_n/c_(n−1)| (analytic functions), so ≈ 2·|c_n|·ρ/(1 − ρ); no clear decay: 8·|c_n|
+            last, before = abs(float(c[-1])), abs(float(c[-2]))
+            ratio = last / before if before > 0.0 else 1.0
+            return 2.0 * last * min(ratio / (1.0 - ratio), 4.0) if ratio < 0.8 else 8.0 * last
 
         f = self.fo.efl_mm
         self.tails = (tail(self.coef_z) / f, tail(self.coef_s) / float(np.max(summary.slope_rms)),
                       tail(self.coef_b2) / float(np.max(summary.best_blur**2) + 1e-30))
-        self.trusted = max(self.tails) <= _TRUST
+        self.trusted = max(self.tails[:2]) <= _TRUST  # z_best and S: every criterion
+        self.rms_trusted = self.tails[2] <= _TRUST  # B², for the total-blur criterion only
 
     def _base(self, v: Any) -> Any:
         """Paraxial image position z_F′ + f²·v/(1 + v·(z_F − z_E)) (Newton's x·x′ = −f²)."""
@@ -422,17 +442,18 @@ def _object_z(curves: _Curves, v: float) -> float:
 
 def _solve(curves: _Curves, distance_mm: float, distance_from: str, coc_mm: float, criterion: str) -> Any:
     """Focus, film, hyperfocal, near and far of one scene (pupil vergences; film z in mm)."""
+    trusted = curves.trusts(criterion)
     v_focus = _focus_vergence(curves, distance_mm, distance_from)
     problem = _Problem(curves, coc_mm, criterion, v_focus, distance_mm)
     problem.free_focus = distance_from == "sensor" and v_focus > 0.0
     z_film, _, own = curves.curve(v_focus)
     if criterion == "rms":
-        own = own if curves.trusted else float(curves.exact([v_focus])[2][0])
+        own = own if trusted else float(curves.exact([v_focus])[2][0])
         if own >= coc_mm:
             raise NoDepthOfField(coc_mm, own)
     hyper = problem.hyperfocal()
     near, far = problem.limits(z_film)
-    if not curves.trusted:
+    if not trusted:
         roots = [math.nan if hyper is None else hyper, near, far]
         v_focus, z_film, roots = _polish(problem, roots)
         problem.v_focus = v_focus
@@ -493,8 +514,9 @@ def real_focus(
     """
     _check_scene(prescription, f_number, distance_mm, distance_from, criterion)
     curves = _curves(prescription, float(f_number))
+    trusted = curves.trusts("defocus")  # the focus needs z_best alone
     v = _focus_vergence(curves, float(distance_mm), distance_from)
-    if not curves.trusted and distance_from == "sensor" and v > 0.0:
+    if not trusted and distance_from == "sensor" and v > 0.0:
         problem = _Problem(curves, 1.0, criterion, v, float(distance_mm))
         problem.free_focus = True
         v, _, _ = _polish(problem, [])
