@@ -17,7 +17,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from camtool.dof.realray import closest_focus_mm, raytrace_dof, real_focus
+from camtool.dof import realray
+from camtool.dof.realray import NoDepthOfField, closest_focus_mm, raytrace_dof, real_focus
 from camtool.optics.paraxial import first_order
 from camtool.optics.prescription import prescription_from_mapping
 
@@ -74,3 +75,37 @@ def test_retrofocus_closest_focus_puts_the_object_at_the_first_vertex():
     assert r.near_mm == pytest.approx(focus.film_z_mm, rel=1e-12)
     with pytest.raises(Exception, match="distance_mm"):
         raytrace_dof(lens, 4.0, 0.019, 0.99 * closest_focus_mm(lens, 4.0))
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_total_blur_criterion_traces_too(name):
+    # the rms criterion over part of the grid: limits in order, or NoDepthOfField where the lens's
+    # own blur at the focus already reaches c (a legitimate answer, not a failure to trace)
+    lens = load(name)
+    for n in (lens.f_number, 11.0):
+        for c in (0.019, 0.1):
+            for distance in focus_distances(lens, n, c)[::2]:
+                try:
+                    r = raytrace_dof(lens, n, c, distance, criterion="rms")
+                except NoDepthOfField as caught:
+                    assert caught.blur_at_focus_mm >= c
+                    continue
+                assert 0.0 < r.near_mm <= distance <= r.far_mm, (name, n, c, distance)
+
+
+def test_polished_roots_agree_with_the_interpolated_ones(monkeypatch):
+    # with the interpolants distrusted, every root is polished by Newton steps on direct traces:
+    # both paths give the same limits (to the precision of the roots, ~1e-12 of the depth)
+    scenes = [("dgauss100", 2.0, 0.03, 700.0), ("wideangle17", 4.0, 0.019, 1500.0), ("cellphone", 3.5, 0.0048, 300.0),
+              ("telecentric36", 2.0, 0.0095, 250.0)]
+    fast = [raytrace_dof(load(name), n, c, d) for name, n, c, d in scenes]
+    monkeypatch.setattr(realray, "_TRUST", 0.0)
+    realray._curves.cache_clear()
+    try:
+        for (name, n, c, d), one in zip(scenes, fast):
+            slow = raytrace_dof(load(name), n, c, d)
+            assert slow.front_mm == pytest.approx(one.front_mm, rel=1e-9), name
+            assert slow.rear_mm == pytest.approx(one.rear_mm, rel=1e-9), name
+            assert slow.hyperfocal_mm == pytest.approx(one.hyperfocal_mm, rel=1e-9), name
+    finally:
+        realray._curves.cache_clear()
