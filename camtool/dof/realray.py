@@ -111,7 +111,7 @@ def _clenshaw(coef: list[float], x: float) -> float:
 class _Curves:
     """z_best, S and B of one lens at one f-number as Chebyshev interpolants in pupil vergence v."""
 
-    def __init__(self, tracer: RealRayTracer, f_number: float) -> None:
+    def __init__(self, tracer: RealRayTracer, f_number: float, traced: Any = None) -> None:
         self.tracer, self.f_number = tracer, f_number
         self.trusted = self.rms_trusted = False
         self.tails: tuple[float, float, float] = (math.inf, math.inf, math.inf)
@@ -123,9 +123,9 @@ class _Curves:
         self.at_vertex = z_close == 0.0
         self.v_front = 1.0 / z_e if z_e > 0.0 else math.inf  # the object at the first vertex
         v_cap = 1.0 / (z_e - z_close)
-        for _ in range(4):
-            nodes = v_cap * (1.0 - np.cos(np.pi * np.arange(_DEGREE + 1) / _DEGREE)) / 2.0
-            summary, ok = tracer.summarise(nodes, f_number)
+        for attempt in range(4):
+            nodes = _nodes(v_cap)
+            summary, ok = traced if attempt == 0 and traced is not None else tracer.summarise(nodes, f_number)
             if np.all(ok):
                 break
             if not ok[0]:
@@ -216,10 +216,54 @@ class _Curves:
         return summary.z_best, summary.slope_rms, summary.best_blur
 
 
-@functools.lru_cache(maxsize=64)
-def _curves(prescription: Prescription, f_number: float) -> _Curves:
-    """Cached interpolants of one lens at one f-number."""
-    return _Curves(real_tracer(prescription), f_number)
+def _nodes(v_cap: float) -> np.ndarray:
+    """The Chebyshev–Lobatto nodes of degree _DEGREE on [0, v_cap]."""
+    return v_cap * (1.0 - np.cos(np.pi * np.arange(_DEGREE + 1) / _DEGREE)) / 2.0
+
+
+class _CurvesCache:
+    """Interpolants per (prescription, f-number), the most recent 256; several f-numbers are built in one trace."""
+
+    def __init__(self) -> None:
+        self._store: dict[tuple[Prescription, float], _Curves] = {}
+
+    def __call__(self, prescription: Prescription, f_number: float) -> _Curves:
+        key = (prescription, f_number)
+        if key not in self._store:
+            self._keep(key, _Curves(real_tracer(prescription), f_number))
+        return self._store[key]
+
+    def prepare(self, prescription: Prescription, f_numbers: Any) -> None:
+        """Build the missing interpolants of many f-numbers, up to 16 per batched trace (a batch or grid)."""
+        missing = sorted({float(n) for n in f_numbers if (prescription, float(n)) not in self._store})
+        if len(missing) < 2:
+            return
+        tracer = real_tracer(prescription)
+        fo = tracer.first
+        z_close = min(fo.z_h_mm - 2.0 * fo.efl_mm, 0.0)
+        if not fo.z_e_mm - z_close > 0.0:
+            return
+        nodes = _nodes(1.0 / (fo.z_e_mm - z_close))
+        for start in range(0, len(missing), 16):
+            chunk = missing[start : start + 16]
+            summary, ok = tracer.summarise(np.tile(nodes, len(chunk)), np.repeat(chunk, nodes.size))
+            for i, n in enumerate(chunk):
+                part = slice(i * nodes.size, (i + 1) * nodes.size)
+                fields = (summary.z_best, summary.slope_rms, summary.best_blur, summary.edge_mm, summary.aim_mm)
+                traced = (type(summary)(*(field[part] for field in fields)), ok[part])
+                self._keep((prescription, n), _Curves(tracer, n, traced))
+
+    def _keep(self, key: tuple[Prescription, float], curves: _Curves) -> None:
+        if len(self._store) >= 256:
+            del self._store[next(iter(self._store))]
+        self._store[key] = curves
+
+    def cache_clear(self) -> None:
+        """Forget every interpolant."""
+        self._store.clear()
+
+
+_curves = _CurvesCache()
 
 
 def _first_crossing(curves: _Curves, value: Any, v_from: float, v_to: float) -> float | None:
@@ -650,6 +694,9 @@ def _raytrace_many(
 ) -> DofLimits:
     """Element-wise :func:`raytrace_dof` over broadcast arrays (the interpolants are shared per f-number)."""
     n, c, d = np.broadcast_arrays(*(np.asarray(v, float) for v in (f_number, coc_mm, distance_mm)))
+    valid = n[np.isfinite(n) & (n > 0.0)]
+    if valid.size and prescription.object_index == 1.0 and prescription.image_index == 1.0:
+        _curves.prepare(prescription, np.unique(valid))
     rows = [
         raytrace_dof(prescription, float(a), float(b), float(e), distance_from, criterion)
         for a, b, e in zip(n.flat, c.flat, d.flat)

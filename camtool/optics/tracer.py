@@ -282,8 +282,10 @@ class RealRayTracer:
         with np.errstate(all="ignore"):
             return np.where(np.isinf(w), 1.0 / z_e if z_e else np.inf, w / (1.0 + w * z_e))
 
-    def aims(self, v: Any, f_number: float, guess: Any = None) -> np.ndarray:
+    def aims(self, v: Any, f_number: Any, guess: Any = None) -> np.ndarray:
         """Aim height of the edge ray (meeting the stop at r_stop) for each pupil vergence v (mm).
+
+        ``f_number`` is one N, or one per vergence.
 
         Starts from ``guess`` (default: the paraxial entrance-pupil radius
         f/(2N), exact in the paraxial limit) and refines by Newton's method
@@ -293,8 +295,9 @@ class RealRayTracer:
         NaN where the edge ray cannot be traced.
         """
         v = np.atleast_1d(np.asarray(v, float))
-        r_stop = self.first.stop_radius_mm(f_number)
-        p = np.full(v.shape, self.first.efl_mm / (2.0 * f_number)) if guess is None else np.array(guess, float)
+        n = np.asarray(f_number, float)
+        r_stop = self.first.efl_mm / (2.0 * n * self.first.m_e)  # f/(2·N·m_E), as FirstOrder.stop_radius_mm
+        p = np.broadcast_to(self.first.efl_mm / (2.0 * n), v.shape).copy() if guess is None else np.array(guess, float)
         pair_v = np.concatenate([v, v])
         with np.errstate(all="ignore"):
             for _ in range(40):
@@ -326,8 +329,10 @@ class RealRayTracer:
         self._survivors = ok.sum(axis=1)
         return np.where(ok, a, 0.0), np.where(ok, t, 0.0), weights
 
-    def summarise(self, v: Any, f_number: float, guess: Any = None) -> tuple[FanSummary, np.ndarray]:
+    def summarise(self, v: Any, f_number: Any, guess: Any = None) -> tuple[FanSummary, np.ndarray]:
         """Fan summaries per pupil vergence v, and a mask of those that could be traced.
+
+        ``f_number`` is one N, or one per vergence (several f-numbers in one batch).
 
         Where the edge ray fails or fewer than 9 of 65 rays survive, the
         mask is False and the summary NaN; nothing is raised.
