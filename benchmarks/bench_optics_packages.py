@@ -200,7 +200,7 @@ class Reference:
         raise RuntimeError("no bracket")
 
 
-def camtool_pair(lens, n, c, distance, repeat=3):
+def camtool_pair(lens, n, c, distance, repeat=5):
     """camtool's limits and its best time for a cold near/far pair (interpolants rebuilt)."""
     best = math.inf
     for _ in range(repeat):

@@ -220,3 +220,19 @@ def test_array_call_matches_scalar_calls():
         one = raytrace_dof(lens, 5.6, 0.03, float(distances[index]))
         for field in one._fields:
             assert getattr(many, field)[index] == getattr(one, field), field
+
+
+def test_arrays_of_f_numbers_match_scalar_calls():
+    # several f-numbers in one call share one batched trace for their interpolants
+    from camtool.dof.realray import _curves
+
+    lens = LENSES["wideangle17"]
+    n = np.array([4.0, 4.4, 5.2, 7.1, 9.9, 13.0])
+    _curves.cache_clear()
+    many = raytrace_dof(lens, n, 0.019, 1500.0)
+    _curves.cache_clear()
+    for i, value in enumerate(n):
+        one = raytrace_dof(lens, float(value), 0.019, 1500.0)
+        assert many.front_mm[i] == pytest.approx(one.front_mm, rel=1e-10)
+        assert many.rear_mm[i] == pytest.approx(one.rear_mm, rel=1e-10)
+        assert many.hyperfocal_mm[i] == pytest.approx(one.hyperfocal_mm, rel=1e-10)

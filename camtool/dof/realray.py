@@ -28,6 +28,7 @@
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -472,7 +473,61 @@ def _polish(problem: _Problem, roots: list[float]) -> tuple[float, float, list[f
             moved = max(moved, abs(step))
         if moved <= 1e-14 * curves.v_cap:
             return v_focus, z_film, roots
-    raise RayTraceError(f"{curves.tracer._name()}: the real-ray limits did not converge")
+    return _bracketed(problem, roots)
+
+
+def _bracketed(problem: _Problem, roots: list[float]) -> tuple[float, float, list[float]]:
+    """Every root from direct traces alone: a batched scan for the first sign change, then Brent's method.
+
+    The slow, safe path (when Newton steps from the interpolants do not
+    settle) for fans whose summaries are not smooth: rays dropped at an
+    aperture wider than the lens was designed for make z_best jump.
+    ``roots`` only says which roots exist.
+    """
+    curves = problem.curves
+    fo = curves.fo
+    steps = np.concatenate([[0.0], np.geomspace(1e-10, 1.0, 48)])
+
+    def exact(v: float) -> tuple[float, float, float]:
+        z, s, b = curves.exact([v])
+        return float(z[0]), float(s[0]), float(b[0])
+
+    def first_root(value: Any, v_from: float, v_to: float) -> float | None:
+        vs = v_from + (v_to - v_from) * steps
+        z, s, b = curves.exact(vs.tolist())
+        values = [value(*point) for point in zip(z.tolist(), s.tolist(), b.tolist(), vs.tolist())]
+        for (va, fa), (vb, fb) in itertools.pairwise(zip(vs.tolist(), values)):
+            if fa == 0.0:
+                return va
+            if (fa > 0.0) != (fb > 0.0):
+                low, high = min(va, vb), max(va, vb)
+                return brent(lambda v: value(*exact(v), v), low, high, 1e-15 * high)
+        return None
+
+    v_focus = problem.v_focus
+    if problem.free_focus:
+        d = problem.distance_mm
+        found = first_root(lambda z, s, b, v: v * (z - fo.z_e_mm - d) + 1.0, 0.0, curves.v_cap)
+        v_focus = curves.v_cap if found is None else found
+    z_film = exact(v_focus)[0]
+    roots = list(roots)
+    z_film_h = problem.hyperfocal_film()
+    if roots and math.isfinite(roots[0]) and z_film_h is not None:
+        found = first_root(lambda z, s, b, v: z - z_film_h, 0.0, curves.v_cap)
+        roots[0] = curves.v_cap if found is None else found
+
+    def excess(z: float, s: float, b: float, v: float) -> float:
+        return float(problem.blur(z, s, b, z_film)) - problem.coc
+
+    if len(roots) > 1:
+        found = first_root(excess, v_focus, curves.v_cap)
+        if found is None:
+            found = curves.v_cap if curves.at_vertex else problem._near_beyond(z_film)
+        roots[1] = found
+    if len(roots) > 2:
+        found = first_root(excess, v_focus, 0.0) if excess(*exact(0.0), 0.0) > 0.0 else None
+        roots[2] = 0.0 if found is None else found
+    return v_focus, z_film, roots
 
 
 def _object_z(curves: _Curves, v: float) -> float:
