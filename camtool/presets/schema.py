@@ -230,6 +230,43 @@ def f_number_text(value: Any) -> float:
     return number
 
 
+CLOSE_FOCUS_FIELDS: dict[str, Callable[[Any], Any]] = {
+    "focal_length_mm": positive_mm,
+    "min_focus_mm": positive_mm,
+    "max_magnification": positive,
+}
+
+
+def close_focus_rows(value: Any) -> list[dict[str, float]]:
+    """A zoom's closest focus per focal length: ``[{focal_length_mm, min_focus_mm[, max_magnification]}]``.
+
+    One row per focal length the maker publishes, in increasing focal length.
+
+    >>> close_focus_rows([{"focal_length_mm": 24, "min_focus_mm": 210}, {"focal_length_mm": 70, "min_focus_mm": 380}])
+    [{'focal_length_mm': 24.0, 'min_focus_mm': 210.0}, {'focal_length_mm': 70.0, 'min_focus_mm': 380.0}]
+    >>> close_focus_rows([{"focal_length_mm": 70, "min_focus_mm": 380}, {"focal_length_mm": 24, "min_focus_mm": 210}])
+    Traceback (most recent call last):
+    ...
+    camtool.presets.schema.Bad: row 2: focal_length_mm must be greater than the row before (70)
+    """
+    if not isinstance(value, list) or not value:
+        raise Bad(f"expected a non-empty list of {{focal_length_mm, min_focus_mm[, max_magnification]}}, "
+                  f"got {show(value)}")
+    out: list[dict[str, float]] = []
+    for number, raw in enumerate(value, start=1):
+        if not isinstance(raw, Mapping):
+            raise Bad(f"row {number} must be a mapping, got {show(raw)}")
+        record, problems = check_fields(raw, CLOSE_FOCUS_FIELDS, ("focal_length_mm", "min_focus_mm"))
+        if problems:
+            key, problem = problems[0]
+            raise Bad(f"row {number}, {key}: {problem}")
+        if out and record["focal_length_mm"] <= out[-1]["focal_length_mm"]:
+            raise Bad(f"row {number}: focal_length_mm must be greater than the row before "
+                      f"({out[-1]['focal_length_mm']:g})")
+        out.append(record)
+    return out
+
+
 def sensor_ref(value: Any) -> str | dict[str, Any]:
     """A sensor: the name of a sensor preset, or an inline ``{width_mm, height_mm[, coc_mm]}``."""
     if isinstance(value, Mapping):
@@ -363,6 +400,10 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "f_number_min_tele": positive,
         "min_focus_mm": positive_mm,
         "max_magnification": positive,
+        "min_magnification": positive,
+        "close_focus": close_focus_rows,
+        "t_number_min": positive,
+        "equivalent_focal_length_mm": positive_mm,
         "pupil_magnification": positive,
         "hiatus_mm": finite,
         "prescription": reference,
@@ -501,6 +542,32 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
             return [("f_number_min_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
         if widest is None or tele < widest:
             return [("f_number_min_tele", "needs f_number_min and must be >= it")]
+    t_stop = record.get("t_number_min")
+    if t_stop is not None and widest is not None and t_stop < widest:
+        return [("t_number_min", f"a T-stop cannot be below the f-number ({widest:g})")]
+    low, high = record.get("min_magnification"), record.get("max_magnification")
+    if low is not None and high is not None and low > high:
+        return [("min_magnification", f"must be <= max_magnification ({high:g})")]
+    if "close_focus" in record:
+        return _check_close_focus(record)
+    return []
+
+
+def _check_close_focus(record: dict[str, Any]) -> list[tuple[str, str]]:
+    """A zoom's per-focal-length rows lie in its range and agree with its lens-level figures."""
+    rows = record["close_focus"]
+    if "focal_min_mm" not in record:
+        return [("close_focus", "applies only to a zoom (focal_min_mm/focal_max_mm); a prime has min_focus_mm")]
+    low, high = record["focal_min_mm"], record["focal_max_mm"]
+    outside = [r["focal_length_mm"] for r in rows if not low - 0.5 <= r["focal_length_mm"] <= high + 0.5]
+    if outside:
+        return [("close_focus", f"focal length {outside[0]:g} mm is outside {low:g}-{high:g} mm")]
+    shortest = min(r["min_focus_mm"] for r in rows)
+    if "min_focus_mm" in record and not math.isclose(record["min_focus_mm"], shortest, abs_tol=0.5):
+        return [("min_focus_mm", f"must be the shortest closest focus of close_focus ({shortest:g} mm)")]
+    largest = max((r["max_magnification"] for r in rows if "max_magnification" in r), default=None)
+    if largest is not None and record.get("max_magnification", math.inf) < largest - 1e-9:
+        return [("max_magnification", f"must be at least the largest of close_focus ({largest:g})")]
     return []
 
 
