@@ -302,7 +302,7 @@ def coc_for_depth(f_number: Any, magnification: Any, depth_mm: Any, pupil_magnif
     Examples
     --------
     >>> round(coc_for_depth(4.0, 2.5, 0.2), 6)
-    0.017857
+    0.044643
     """
     require_positive("depth_mm", depth_mm)
     require_positive("f_number", f_number, unit="")
@@ -316,7 +316,7 @@ def f_number_for_depth(coc_mm: Any, magnification: Any, depth_mm: Any, pupil_mag
     Examples
     --------
     >>> round(f_number_for_depth(0.03, 2.5, 0.2), 4)
-    2.381
+    5.9524
     """
     require_positive("depth_mm", depth_mm)
     require_positive("coc_mm", coc_mm)

@@ -345,8 +345,8 @@ def _solve_focus(scene: _Scene, fo: FirstOrder, distance_mm: float, distance_fro
     else:
         z_ref = fo.z_h_mm if distance_from == "lens" else fo.z_e_mm
         z_obj = z_ref - distance_mm
-        if not z_obj < 0.0 or not (distance_from != "lens" or distance_mm >= 2.0 * fo.efl_mm):
-            raise DomainError("distance_mm", distance_mm, "an object in front of the lens, at least 1:1 away")
+        if not z_obj < 0.0 or not (distance_from != "lens" or distance_mm > fo.efl_mm):
+            raise DomainError("distance_mm", distance_mm, "an object in front of the lens, more than f away")
         w = _vergence(z_obj)
     roots = scene.refine(jobs) if jobs else []
     if w is None:

@@ -107,8 +107,8 @@ def with_teleconverter(focal_length_mm: Any, f_number: Any, factor: Any) -> tupl
 
     Examples
     --------
-    >>> with_teleconverter(100.0, 2.8, 1.4)
-    (140.0, 3.92)
+    >>> [round(x, 6) for x in with_teleconverter(100.0, 2.8, 1.4)]
+    [140.0, 3.92]
     """
     require_positive("teleconverter", factor, unit="")
     return focal_length_mm * factor, f_number * factor

@@ -296,7 +296,9 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         prescription_id=prescription.id if prescription else None,
         prescription=prescription.data if prescription else None,
         sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
-        approximate=r.get("approximate", False), **_common(entry))
+        approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
+        close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
+                          for row in r.get("close_focus", ())), **_common(entry))
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:

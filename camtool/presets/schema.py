@@ -740,6 +740,8 @@ class Lens:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    min_magnification: float | None = None
+    close_focus: tuple[tuple[float, float, float | None], ...] = ()  # (focal length, closest focus, magnification)
 
     kind = "lens"
 
