@@ -192,10 +192,9 @@ def internal_focus_at_distance(lens: InternalFocus, sensor_distance_mm: Any) -> 
     xp = ops(sensor_distance_mm)
     where = _range_text(lens)
     high, low = lens.max_magnification * 1.001, lens.min_magnification * 0.999
-    if low == 0.0:
-        require("distance_mm", sensor_distance_mm, sensor_distance_mm >= lens.min_focus_mm * 0.999,
-                "at least {limit} from the sensor (the closest focus of this lens, " + where + ")",
-                limit=lens.min_focus_mm)
+    require("distance_mm", sensor_distance_mm, sensor_distance_mm >= lens.min_focus_mm * 0.999,
+            "at least {limit} from the sensor (the closest focus of this lens, " + where + ")",
+            limit=lens.min_focus_mm)
     span = sensor_distance_mm - delta
     a = f0 - kappa * span
     b = 2.0 * f0 - span
