@@ -171,7 +171,7 @@ MAGNIFICATIONS = [0.01, 0.03, 0.1, 0.3, 0.5, 0.9, 1.0, 1.1, 2.0, 3.0, 5.0, 10.0,
 @pytest.mark.parametrize("plane", ["lens", "sensor"])
 def test_closeup_limits_against_mpmath(m, plane):
     f, n, c = 65.0, 2.8, 0.03
-    u, v, near, far = _mp_limits(f, n, c, m)
+    _u, v, near, far = _mp_limits(f, n, c, m)
     shift = v if plane == "sensor" else 0
     r = closeup_dof(f, n, c, m, distance_from=plane)
     assert r.near_mm == pytest.approx(float(near + shift), rel=1e-14)
@@ -184,7 +184,7 @@ def test_closeup_limits_against_mpmath(m, plane):
 def test_thin_model_at_lens_plane_distance_between_f_and_2f(m):
     # the ladder's thin model reached through a lens-plane distance u = f(1 + 1/m), any m
     f, n, c = 65.0, 2.8, 0.03
-    u, v, near, far = _mp_limits(f, n, c, m)
+    u, _v, near, _far = _mp_limits(f, n, c, m)
     r = thin_dof(f, n, c, float(u), distance_from="lens")
     assert r.near_mm == pytest.approx(float(near), rel=1e-13)
     assert r.front_mm == pytest.approx(float(u - near), rel=1e-9)
@@ -200,7 +200,7 @@ def test_sensor_distance_has_both_branches(m):
     assert high == pytest.approx(1.0 / m, rel=1e-12)
     # the thin model from the sensor answers the m ≤ 1 branch; the other branch matches mpmath
     assert thin_dof(f, 8.0, 0.03, d).magnification == pytest.approx(m, rel=1e-10)
-    u, v, near, far = _mp_limits(f, 8.0, 0.03, 1.0 / m)
+    _u, v, near, _far = _mp_limits(f, 8.0, 0.03, 1.0 / m)
     assert closeup_dof(f, 8.0, 0.03, high).near_mm == pytest.approx(float(near + v), rel=1e-12)
 
 
@@ -249,7 +249,7 @@ MACROS = [lens for lens in load_db().all("lens") if lens.category == "macro"]
 def test_every_macro_preset_reaches_its_published_magnification_at_its_closest_focus(lens):
     # lens_db/lenses.yaml: each maker's closest focus and maximum magnification (source: field)
     model = focus_model(lens, lens.focal_min_mm)
-    m, f = internal_focus_at_distance(model, lens.min_focus_mm)
+    m, _f = internal_focus_at_distance(model, lens.min_focus_mm)
     assert m == pytest.approx(lens.max_magnification, rel=0.02)
     assert internal_focus_at_magnification(model, lens.max_magnification)[1] == pytest.approx(lens.min_focus_mm,
                                                                                               rel=0.02)
@@ -272,7 +272,7 @@ def test_mp_e_65_range_and_canon_distance():
 def test_unit_focusing_is_kappa_zero():
     model = internal_focus(50.0, 200.0, 1.0)
     assert model.kappa == pytest.approx(0.0, abs=1e-15)
-    m, f = internal_focus_at_distance(model, 5000.0)
+    m, _f = internal_focus_at_distance(model, 5000.0)
     assert m == pytest.approx(magnification_branches(50.0, 5000.0).low, rel=1e-13)
 
 

@@ -98,26 +98,27 @@ def closeup_dof(
     f, n, c, m, p = focal_length_mm, f_number, coc_mm, magnification, pupil_magnification
     xp = ops(f, n, c, m, p, hiatus_mm)
     nc = n * c
+    k = nc / f  # m ≤ k: focused at or beyond the hyperfocal distance
     spread = nc * (1.0 + m / p)
     u = f + f / m
-    v = f + f * m
     with quiet(xp):
-        front = spread / (m * m + m * nc / f)
-        gap = m * m - m * nc / f
-        beyond = m * f <= nc
-        rear = xp.where(beyond, xp.inf, spread / xp.where(beyond, 1.0, gap))
+        front = spread / (m * (m + k))
+        beyond = m <= k
+        rear = xp.where(beyond, xp.inf, spread / (m * (m - k)))
         h = f * f / nc + f
         if distance_from == "sensor":
-            offset = v + hiatus_mm
+            offset = u + f + f * m + hiatus_mm  # u + v + δ
             hyper = h + f + nc + hiatus_mm
         elif distance_from == "lens":
-            offset = 0.0
+            offset = u
             hyper = h
         else:
             raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
-        near = u - front + offset
-        far = u + rear + offset
-    return DofLimits(near, far, front, rear, front + rear, broadcast(hyper, m), broadcast(m, near))
+        near = offset - front
+        far = offset + rear
+    shape = getattr(near, "shape", None)
+    same = (lambda x: x) if shape is None else (lambda x: x if getattr(x, "shape", None) == shape else broadcast(x, near))
+    return DofLimits(near, far, front, rear, front + rear, same(hyper), same(m))
 
 
 def macro_depth_mm(f_number: Any, coc_mm: Any, magnification: Any, pupil_magnification: Any = 1.0) -> Any:
