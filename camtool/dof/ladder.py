@@ -235,8 +235,9 @@ def _check_focus(f: Any, s: Any, plane: str, lens: LensData) -> None:
 
     if plane == "lens":
         require_positive("distance_mm", s, allow_inf=True)
-        require("distance_mm", s, s >= 2.0 * f,
-                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
+        require("distance_mm", s, s > f,
+                "more than {limit} from the lens (the focal length; between f and 2f the magnification is above 1)",
+                limit=f)
     elif plane == "sensor":
         lens_distances(f, s, _scene_lens(lens)[1])
     else:
