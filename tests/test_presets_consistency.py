@@ -7,8 +7,10 @@ Known exceptions are listed next to each check with the reason.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
+import yaml
 
 from camtool.presets import load_db, paths
 from camtool.presets.loader import read_file
@@ -201,27 +203,74 @@ def test_every_shipped_zoom_has_per_focal_length_rows():
             assert "close_focus" in record, record["id"]
 
 
+# --- closest focus and magnification against the cited pages ----------------------------------
+
+# (lens, focal length, closest focus mm, magnification or None) as the page cited in each entry's
+# source gives them; each row must be in the entry (its close_focus row, or the prime's own figures).
+CITED_CLOSE_FOCUS = [
+    # Photography Life, Nikon Z 24-70mm f/2.8 S review p. 2: 0.38 m, 0.22x.
+    ("nikon-z-24-70mm-f2.8-s", 70, 380, 0.22),
+    # Nikon's Z 24-120mm f/4 S page as quoted in Photography Stack Exchange q. 132297: 0.35 m, 0.39x.
+    ("nikon-z-24-120mm-f4-s", 24, 350, None), ("nikon-z-24-120mm-f4-s", 120, 350, 0.39),
+    # Photo Review / desnoulez.fr: 0.16 m, 1:1.
+    ("nikon-z-mc-50mm-f2.8", 50, 160, 1.0),
+    # OpticalLimits: 0.17 m, 1:2.
+    ("canon-rf-35mm-f1.8-macro-is-stm", 35, 170, 0.5),
+    # DPReview hands-on / Digital Camera World: 0.9 m at 100 mm, 1.2 m and 0.33x at 500 mm.
+    ("canon-rf-100-500mm-f4.5-7.1l-is-usm", 100, 900, None), ("canon-rf-100-500mm-f4.5-7.1l-is-usm", 500, 1200, 0.33),
+    # Digital Camera World / Photo Review: 6 m, 0.14x.
+    ("canon-rf-800mm-f11-is-stm", 800, 6000, 0.14),
+    # Wikipedia infobox / Photography Life: 2.4 m, 0.2x.
+    ("sony-fe-200-600mm-f5.6-6.3-g-oss", 200, 2400, None), ("sony-fe-200-600mm-f5.6-6.3-g-oss", 600, 2400, 0.2),
+    # savazzi.net and Eric Svendsen's blog: 1.3 m at 180 mm, 2.4 m at 600 mm, 0.25x.
+    ("nikon-z-180-600mm-f5.6-6.3-vr", 180, 1300, None), ("nikon-z-180-600mm-f5.6-6.3-vr", 600, 2400, 0.25),
+    # Le Monde de la Photo: 0.3 m at every focal length, 0.5x.
+    ("panasonic-lumix-s-24-105mm-f4-macro-ois", 24, 300, None),
+    ("panasonic-lumix-s-24-105mm-f4-macro-ois", 105, 300, 0.5),
+    # Photography Life announcement: 0.28 m, 0.21x.
+    ("canon-rf-15-35mm-f2.8l-is-usm", 15, 280, None), ("canon-rf-15-35mm-f2.8l-is-usm", 35, 280, 0.21),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "focal", "distance", "magnification"), CITED_CLOSE_FOCUS)
+def test_close_focus_against_the_cited_pages(lens_id, focal, distance, magnification):
+    record = next(r for r in lens_records() if r["id"] == lens_id)
+    assert not record.get("approximate"), lens_id
+    rows = record.get("close_focus") or [
+        {"focal_length_mm": record["focal_length_mm"], "min_focus_mm": record["min_focus_mm"],
+         "max_magnification": record["max_magnification"]}]
+    row = next(r for r in rows if r["focal_length_mm"] == focal)
+    assert row["min_focus_mm"] == distance
+    assert row.get("max_magnification") == magnification
+
+
 # --- crop factor against lensfun's ----------------------------------------------------------
 
-# lensfun's <cropfactor> for shipped bodies, from lensfun's data/db/mil-sony.xml (lensfun/lensfun
-# on GitHub). camtool's crop factor comes from the maker's own sensor size; the two must agree
-# within 1.5 %.
-LENSFUN_CROP = {
-    "sony-a7-iv": 1.0,  # ILCE-7M4
-    "sony-a7r-v": 1.0,  # ILCE-7RM5
-    "sony-a1": 1.0,  # ILCE-1
-    "sony-a1-ii": 1.0,  # ILCE-1M2
-    "sony-a7c-ii": 1.0,  # ILCE-7CM2
-    "sony-a7s-iii": 1.0,  # ILCE-7SM3
-    "sony-a9-iii": 1.0,  # ILCE-9M3
-    "sony-fx3": 1.0,  # ILME-FX3
-    "sony-a6700": 1.534,  # ILCE-6700
-}
+# lensfun's <cropfactor> for shipped bodies, from lensfun's data/db/*.xml (lensfun/lensfun on
+# GitHub), recorded with the file, commit and camera model string in tests/data/lensfun-crops.yaml.
+# camtool's crop factor comes from the maker's own sensor size; the two must agree within 1.5 %.
+LENSFUN_DATA = yaml.safe_load((Path(__file__).resolve().parent / "data" / "lensfun-crops.yaml").read_text())
+LENSFUN_CROP = {camera: float(entry["cropfactor"]) for camera, entry in LENSFUN_DATA["cameras"].items()}
 
 # Bodies whose crop factor differs from lensfun's by more than 1.5 %, and why. None of the
 # shipped bodies above does; the 4x5 format (no lensfun entry) differs from the research
 # table's nominal sheet for the reason given in lens_db/sensors.yaml.
 CROP_EXCEPTIONS: dict[str, str] = {}
+
+
+def test_lensfun_crop_data_has_provenance():
+    sources = LENSFUN_DATA["sources"]
+    for source in sources.values():
+        assert source["repository"] == "lensfun/lensfun"
+        assert source["path"].startswith("data/db/") and source["path"].endswith(".xml")
+        assert len(source["commit"]) == 40
+    makers = set()
+    for camera, entry in LENSFUN_DATA["cameras"].items():
+        assert entry["source"] in sources, camera
+        assert entry["model"], camera
+        makers.add(camera.split("-")[0])
+    # Every maker whose lensfun file lists a shipped body is compared, not only Sony.
+    assert {"sony", "canon", "nikon", "leica", "om"} <= makers
 
 
 @pytest.mark.parametrize(("camera", "crop"), sorted(LENSFUN_CROP.items()))

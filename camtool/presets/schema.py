@@ -278,40 +278,6 @@ def sensor_ref(value: Any) -> str | dict[str, Any]:
     return reference(value)
 
 
-_ASPHERIC_TERM = re.compile(r"^a([0-9]+)$")
-
-
-def _aspheric(value: Any) -> dict[str, float]:
-    if not isinstance(value, Mapping):
-        raise Bad(f"expected a mapping such as {{a4: 1.2e-5, a6: ...}}, got {show(value)}")
-    out = {}
-    for key, coefficient in value.items():
-        match = _ASPHERIC_TERM.match(str(key).strip().lower())
-        if not match or not 2 <= int(match.group(1)) <= 30:
-            raise Bad(f"term {show(key)} is not one of a2 ... a30 (aN: coefficient of r^N)")
-        try:
-            out[str(key)] = finite(coefficient)
-        except Bad as error:
-            raise Bad(f"{key}: {error}") from None
-    return out
-
-
-def _radius(value: Any) -> float:
-    if isinstance(value, str) and value.strip().lower() in {"inf", ".inf", "+inf", "infinity", "flat"}:
-        return math.inf
-    number = _real(value, "mm")
-    if number == 0:
-        raise Bad("must not be 0 (write inf for a flat surface)")
-    return number
-
-
-def _thickness(value: Any) -> float:
-    number = finite(value)
-    if number < 0:
-        raise Bad(f"must be >= 0 mm, got {value!r}")
-    return number
-
-
 def _index(value: Any) -> float:
     number = finite(value)
     if number < 1.0:
@@ -319,40 +285,16 @@ def _index(value: Any) -> float:
     return number
 
 
-SURFACE_FIELDS: dict[str, Callable[[Any], Any]] = {
-    "radius_mm": _radius,
-    "thickness_mm": _thickness,
-    "n": _index,
-    "semi_diameter_mm": positive_mm,
-    "stop": boolean,
-    "conic": finite,
-    "aspheric": _aspheric,
-    "name": text,
-    "glass": text,
-    "note": text,
-}
+def surfaces(value: Any) -> list[Any]:
+    """The surfaces of a prescription, from the object side: a non-empty list.
 
-
-def surfaces(value: Any) -> list[dict[str, Any]]:
-    """The surfaces of a prescription, from the object side; exactly one has ``stop: true``."""
+    What each surface holds (and the one stop) is checked with the rest of the
+    prescription by :func:`camtool.optics.prescription.prescription_from_mapping`
+    (:func:`_check_prescription`), the one validation of a prescription.
+    """
     if not isinstance(value, list) or not value:
         raise Bad(f"expected a non-empty list of surfaces, got {show(value)}")
-    out = []
-    for number, raw in enumerate(value, start=1):
-        if not isinstance(raw, Mapping):
-            raise Bad(f"surface {number} must be a mapping, got {show(raw)}")
-        record, problems = check_fields(raw, SURFACE_FIELDS, ("radius_mm", "thickness_mm", "n"))
-        if problems:
-            key, problem = problems[0]
-            raise Bad(f"surface {number}, {key}: {problem}")
-        out.append(record)
-    stops = [i for i, s in enumerate(out, start=1) if s.get("stop")]
-    if len(stops) != 1:
-        found = "surfaces " + ", ".join(map(str, stops)) if stops else "none"
-        raise Bad(f"exactly one surface must have stop: true (found {found})")
-    if out[-1]["thickness_mm"] <= 0:
-        raise Bad("the last thickness_mm (the back focal distance) must be > 0")
-    return out
+    return value
 
 
 # --- the keys of each kind ------------------------------------------------------------------
@@ -582,9 +524,28 @@ def _check_scene(record: dict[str, Any]) -> list[tuple[str, str]]:
     return problems
 
 
+def _check_prescription(record: dict[str, Any]) -> list[tuple[str, str]]:
+    """The prescription as :mod:`camtool.optics.prescription` validates it; a surface's problem is on ``surfaces``."""
+    from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
+
+    try:
+        prescription_from_mapping(optics_mapping(record), source=record["id"])
+    except PrescriptionError as error:
+        if error.surface is not None:
+            return [("surfaces", f"surface {error.surface}, {error.key}: {error.problem}")]
+        return [("surfaces" if error.key == "stop" else error.key, error.problem)]
+    return []
+
+
+def optics_mapping(record: Mapping[str, Any]) -> dict[str, Any]:
+    """The keys of a prescription record that :func:`camtool.optics.prescription.prescription_from_mapping` reads."""
+    return {key: value for key, value in record.items() if not str(key).startswith("_")}
+
+
 _CROSS_CHECKS: dict[str, Callable[[dict[str, Any]], list[tuple[str, str]]]] = {
     "camera": _check_camera,
     "lens": _check_lens,
+    "prescription": _check_prescription,
     "scene": _check_scene,
 }
 
@@ -673,10 +634,11 @@ class Camera:
 
 @dataclass(frozen=True)
 class Prescription:
-    """A lens prescription preset; ``data`` is the validated mapping for :mod:`camtool.optics`.
+    """A lens prescription preset: its names and ``optics``, the validated lens.
 
-    Only the structure is checked here (keys, types, one stop); tracing it is
-    :func:`camtool.optics.prescription.prescription_from_mapping`'s job.
+    ``optics`` is the :class:`camtool.optics.prescription.Prescription` that
+    :func:`camtool.optics.prescription.prescription_from_mapping` built from
+    ``data`` (the mapping as written), the one validation of a prescription.
     """
 
     id: str
@@ -690,18 +652,19 @@ class Prescription:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    optics: Any = field(default=None, compare=False, hash=False, repr=False)
 
     kind = "prescription"
 
     @property
     def surfaces(self) -> list[dict[str, Any]]:
-        """The surface mappings, from the object side."""
+        """The surface mappings as written, from the object side."""
         return list(self.data["surfaces"])
 
     @property
     def stop_index(self) -> int:
         """0-based index of the aperture stop."""
-        return next(i for i, s in enumerate(self.data["surfaces"]) if s.get("stop"))
+        return int(self.optics.stop_index)
 
 
 @dataclass(frozen=True)
@@ -711,7 +674,8 @@ class Lens:
     ``f_number_min`` is the widest aperture (smallest f-number), at the short
     end for a variable-aperture zoom, whose widest f-number at the long end is
     ``f_number_min_tele``. ``min_focus_mm`` is measured from the sensor plane.
-    ``prescription`` is the resolved prescription mapping (or None).
+    ``prescription`` is the resolved, validated
+    :class:`camtool.optics.prescription.Prescription` (or None).
 
     >>> zoom = Lens("z", "Z", 24.0, 70.0, 4.0, 22.0, f_number_min_tele=5.6)
     >>> zoom.is_zoom, zoom.widest_f_number(24.0), zoom.widest_f_number(70.0)
@@ -730,7 +694,7 @@ class Lens:
     pupil_magnification: float | None = None
     hiatus_mm: float | None = None
     prescription_id: str | None = None
-    prescription: dict[str, Any] | None = field(default=None, compare=False, hash=False, repr=False)
+    prescription: Any = field(default=None, compare=False, hash=False, repr=False)
     sensor_id: str | None = None
     mount: str | None = None
     aliases: tuple[str, ...] = ()
