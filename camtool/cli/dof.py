@@ -198,6 +198,8 @@ def _closeup(ctx, model, f, n, w, c, by_m, extension, teleconverter, distance_fr
         used = " / ".join(dict.fromkeys(row["model"] for row in answered))
         label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
         extra = " · ".join(part for part in (branch_note(rows) if not by_m else "",
+                                             "-s is the lens's own focus setting; focus is where the subject then is"
+                                             if (extension or teleconverter) and not by_m else "",
                                              _dominance(rows) if diffraction else "",
                                              "┃ focus, H hyperfocal, ▶ ∞") if part)
         note = label + " · " + footer(None, cocs, coc_origin, sensor_label, distance_from, extra)

@@ -32,6 +32,7 @@ from camtool.dof.limits import DofLimits
 __all__ = [
     "DiffractionRow",
     "Optimum",
+    "OptimumFocus",
     "closeup_dof",
     "coc_for_depth",
     "diffraction_row",
@@ -39,6 +40,7 @@ __all__ = [
     "focus_spread_mm",
     "macro_depth_mm",
     "optimum_aperture",
+    "optimum_for_limits",
     "wave_depth_mm",
 ]
 
@@ -323,3 +325,45 @@ def f_number_for_depth(coc_mm: Any, magnification: Any, depth_mm: Any, pupil_mag
     require_positive("coc_mm", coc_mm)
     require_positive("magnification", magnification, unit="")
     return depth_mm * magnification * magnification / (2.0 * coc_mm * (1.0 + magnification / pupil_magnification))
+
+
+class OptimumFocus(NamedTuple):
+    """Where to focus between a near and a far subject, and the optimum aperture there (mm)."""
+
+    distance_mm: Any  # focus distance, in the plane of the limits given
+    magnification: Any  # at that focus
+    focus_spread_mm: Any  # image-side spread Δ between the near and far images
+    optimum: Optimum
+
+
+def optimum_for_limits(focal_length_mm: Any, near_mm: Any, far_mm: Any, distance_from: str = "sensor",
+                       hiatus_mm: Any = 0.0, pupil_magnification: Any = 1.0,
+                       wavelength_nm: Any = 550.0) -> OptimumFocus:
+    """Focus half-way between the images of a near and a far subject, and the optimum f-number there.
+
+    The near and far subjects (from the sensor: the m ≤ 1 branch) are imaged
+    at v₁ > v₂; the sensor goes to v = (v₁ + v₂)/2, which focuses on
+    u = f·v/(v − f) at m = v/f − 1, and :func:`optimum_aperture` of the
+    spread Δ = v₁ − v₂ at that m gives the f-number.
+
+    Examples
+    --------
+    >>> r = optimum_for_limits(150.0, 2000.0, float("inf"), distance_from="lens")
+    >>> round(r.focus_spread_mm, 4), round(r.distance_mm, 1), round(r.optimum.f_number, 1)
+    (12.1622, 3850.0, 64.7)
+    """
+    from camtool.geometry.thinlens import focus_geometry, image_distance_mm
+
+    require_positive("focal_length_mm", focal_length_mm)
+    require_positive("near_mm", near_mm)
+    require_positive("far_mm", far_mm, allow_inf=True)
+    require("far_mm", far_mm, far_mm > near_mm, "beyond the near limit")
+    f = focal_length_mm
+    u_near = focus_geometry(f, near_mm, distance_from, hiatus_mm).object_mm
+    u_far = focus_geometry(f, far_mm, distance_from, hiatus_mm).object_mm
+    spread = focus_spread_mm(f, u_near, u_far)
+    v = 0.5 * (image_distance_mm(f, u_near) + image_distance_mm(f, u_far))
+    m = (v - f) / f
+    u = f + f / m
+    distance = u + v + hiatus_mm if distance_from == "sensor" else u
+    return OptimumFocus(distance, m, spread, optimum_aperture(spread, m, pupil_magnification, wavelength_nm))

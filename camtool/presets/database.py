@@ -319,7 +319,7 @@ def _build_scene(db: Database, entry: _Entry) -> Scene:
     lens = db._reference(entry, "scene", "lens") if "lens" in r else None
     return Scene(r["id"], r["name"], camera, sensor, lens, r.get("focal_length_mm"), r.get("f_number"),
                  r.get("distance_mm"), r.get("subject_size_mm"), r.get("background_mm"), r.get("coc_mm"),
-                 **_common(entry))
+                 magnification=r.get("magnification"), **_common(entry))
 
 
 _BUILDERS = {

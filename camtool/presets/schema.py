@@ -382,6 +382,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "background_mm": positive_mm,
         "coc": _length_with_default("mm", allow_inf=False),
         "coc_mm": positive_mm,
+        "magnification": positive,
     },
 }
 
@@ -757,6 +758,7 @@ class Scene:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    magnification: float | None = None
 
     kind = "scene"
 
