@@ -165,3 +165,36 @@ def test_batch_magnification_column():
     rows = json.loads(result.stdout)
     assert [r["magnification"] for r in rows] == [1.0, 5.0]
     assert rows[1]["total_mm"] == pytest.approx(closeup_dof(65.0, 2.8, FF_COC, 5.0).total_mm, rel=1e-11)
+
+
+def _examples(text: str) -> list[list[str]]:
+    import shlex
+
+    lines = []
+    for line in text.splitlines():
+        line = line.split("  #")[0].strip()
+        if line.startswith("camtool ") and "FILE" not in line and ".yaml" not in line and ".csv" not in line:
+            lines.append(shlex.split(line)[1:])
+    return lines
+
+
+def test_readme_close_up_examples_run():
+    from pathlib import Path
+
+    readme = (Path(__file__).parent.parent / "README.md").read_text(encoding="utf-8")
+    section = readme.split("### Close-up and macro", 1)[1].split("```", 2)[1]
+    examples = _examples(section)
+    assert len(examples) >= 8
+    for args in examples:
+        result = run(*args)
+        assert result.exit_code == 0, (args, result.output)
+
+
+@pytest.mark.parametrize("command", ["dof", "focus", "fov", "compose"])
+def test_help_examples_run(command):
+    help_text = run(command, "--help").stdout
+    examples = [args for args in _examples(help_text.split("Examples:", 1)[1]) if args[0] == command]
+    assert examples
+    for args in examples:
+        result = run(*args)
+        assert result.exit_code == 0, (args, result.output)

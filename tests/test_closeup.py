@@ -281,3 +281,45 @@ def test_zoom_rows_are_used_per_focal_length():
     lens = load_db().get("lens", "rf-24-70-2.8")
     assert focus_model(lens, 24.0).min_focus_mm == 210.0
     assert focus_model(lens, 70.0).min_focus_mm == 380.0
+
+
+def _published_pairs():
+    for lens in load_db().all("lens"):
+        for f, distance, m in lens.close_focus:
+            if m is not None:
+                yield pytest.param(lens, f, distance, m, id=f"{lens.id}@{f:g}")
+        if not lens.is_zoom and lens.min_focus_mm and lens.max_magnification and lens.prescription is None:
+            yield pytest.param(lens, lens.focal_min_mm, lens.min_focus_mm, lens.max_magnification, id=lens.id)
+
+
+@pytest.mark.parametrize(("lens", "focal", "closest", "published"), list(_published_pairs()))
+def test_every_published_closest_focus_gives_its_magnification(lens, focal, closest, published):
+    # lens_db/lenses.yaml: each lens's (or zoom row's) published closest focus and magnification (its source: field)
+    model = focus_model(lens, focal)
+    m, _f = internal_focus_at_distance(model, closest)
+    assert m == pytest.approx(published, rel=0.02)
+    with pytest.raises(DomainError):
+        internal_focus_at_distance(model, closest * 0.97)
+    if lens.min_magnification is None:  # focusing out from the closest focus lowers the magnification
+        assert internal_focus_at_distance(model, closest * 1.05)[0] < m
+
+
+def test_prescription_rungs_at_a_magnification():
+    # through every rung with a prescription: m = 1 is u = f(1 + 1/m) from the front principal plane
+    from pathlib import Path
+
+    import yaml
+
+    from camtool.cli.lensdata import LensData
+    from camtool.dof.ladder import depth_of_field
+    from camtool.optics.prescription import prescription_from_mapping
+
+    data = yaml.safe_load((Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml").read_text())
+    lens = LensData(prescription=prescription_from_mapping(data, source="dgauss100.yaml"))
+    f = lens.focal_length_mm
+    u = f * 2.0
+    thick = depth_of_field("paraxial", f, 2.8, 0.03, u, "lens", lens).limits
+    p, _delta = lens.thick_parameters()
+    assert thick.total_mm == pytest.approx(closeup_dof(f, 2.8, 0.03, 1.0, p, "lens").total_mm, rel=1e-9)
+    real = depth_of_field("raytrace", f, 2.8, 0.03, u, "lens", lens).limits
+    assert real.total_mm == pytest.approx(thick.total_mm, rel=0.05)  # aberrations: a few per cent at 1:1

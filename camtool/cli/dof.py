@@ -90,7 +90,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
       camtool dof -f 50 -N 8 -s 3m
       camtool dof -f 85 -N 1.8,2.8,4 -s 2 --sensor aps-c --format json
       camtool dof -N 2 -s 1m --prescription dgauss100.yaml --model all
-      camtool dof -f 100 -N 22 -s 0.5 --pupil-mag 0.8 --diffraction
+      camtool dof -f 100 -N 11,22 -s 0.5 --pupil-mag 0.8 --diffraction
       camtool dof -f 100 -N 8 -m 0.5,1,2
       camtool dof --lens mp-e-65 -N 2.8 -m 1,2,5 --diffraction
       camtool dof -f 100 -N 8,16 -s 400mm --diffraction
@@ -118,12 +118,12 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     count, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
     closeup = bool(wanted_m or extension or teleconverter or diffraction) or has_focus_model(ctx)
-    if model != "all" and (lens is None or lens.prescription is None) and closeup:
+    by_rays = lens is not None and lens.prescription is not None
+    if model != "all" and closeup and not (by_rays and not (wanted_m or extension or teleconverter)):
         return _closeup(ctx, model, f, n, s, c, bool(wanted_m), extension, teleconverter, distance_from, lens,
                         diffraction, wavelength, tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, chosen.label)
     if wanted_m or extension or teleconverter:
-        raise click.UsageError("-m, --extension and --teleconverter work with the thin and thick models "
-                               "(not with --prescription or --model all)", ctx)
+        raise click.UsageError("-m, --extension and --teleconverter do not work with --model all", ctx)
     if model == "all":
         return _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavelength, fmt, cocs,
                            coc_origin, chosen.label)
@@ -167,7 +167,8 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
 def _closeup(ctx, model, f, n, w, c, by_m, extension, teleconverter, distance_from, lens, diffraction, wavelength,
              tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, sensor_label) -> Output:
     """Rows through the close-up planner: any magnification, internal focus, extension, teleconverter."""
-    p, delta, _ = pupil_and_hiatus(ctx, pupil_mag, hiatus)
+    known = lens.thick_parameters() if lens is not None else None  # a prescription's own P and δ included
+    p, delta = (float(v) for v in known) if known is not None else pupil_and_hiatus(ctx, pupil_mag, hiatus)[:2]
     with library_errors(ctx):
         setting = plan_focus(ctx, f, n, w, by_m, distance_from, delta, extension, teleconverter)
     direct = not by_m and not setting.modelled

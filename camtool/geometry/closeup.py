@@ -130,8 +130,12 @@ def internal_focus(focal_length_mm: float, min_focus_mm: float, max_magnificatio
     """The internal-focus model of a lens with a published closest focus D_c (sensor plane) and magnification m_c.
 
     κ = (f₀/f_c − 1)/m_c with f_c = (D_c − δ)·m_c/(1 + m_c)². κ = 0 is a
-    unit-focusing lens (it reaches m_c exactly at 4f..); κ < 0 (the lens
-    lengthens) is allowed as the data say.
+    unit-focusing lens. Where κ would be negative with m_c ≤ 1 (the lens
+    reaches more at its closest focus than a unit-focusing f₀ would there, yet
+    with a longer focal length: wide-angle designs), the distance would turn
+    back before the closest focus; the model is then unit focusing (κ = 0)
+    with the principal planes further apart by D_c − δ − f₀(1 + m_c)²/m_c,
+    which keeps the distance falling all the way to the closest focus.
 
     Examples
     --------
@@ -145,6 +149,12 @@ def internal_focus(focal_length_mm: float, min_focus_mm: float, max_magnificatio
     if not f_close > 0.0:
         raise DomainError("min_focus_mm", min_focus_mm, "more than the hiatus")
     kappa = (focal_length_mm / f_close - 1.0) / max_magnification
+    if kappa < 0.0 and max_magnification <= 1.0:
+        # The power would have to fall as the lens focuses, and the distance would turn back before the
+        # closest focus. Instead: unit focusing with the principal planes that much further apart.
+        extra = min_focus_mm - hiatus_mm - focal_length_mm * (1.0 + max_magnification) ** 2 / max_magnification
+        return InternalFocus(focal_length_mm, 0.0, min_magnification, max_magnification, hiatus_mm + extra,
+                             min_focus_mm)
     return InternalFocus(focal_length_mm, kappa, min_magnification, max_magnification, hiatus_mm, min_focus_mm)
 
 
