@@ -203,7 +203,7 @@ def internal_focus_at_distance(lens: InternalFocus, sensor_distance_mm: Any) -> 
     where = _range_text(lens)
     high, low = lens.max_magnification * 1.001, lens.min_magnification * 0.999
     require("distance_mm", sensor_distance_mm, sensor_distance_mm >= lens.min_focus_mm * 0.999,
-            "at least {limit} from the sensor (the closest focus of this lens, " + where + ")",
+            "at least {limit} from the sensor (this lens's closest focus; " + where + ")",
             limit=lens.min_focus_mm)
     span = sensor_distance_mm - delta
     a = f0 - kappa * span
@@ -227,4 +227,4 @@ def _range_text(lens: InternalFocus) -> str:
     low, high = lens.min_magnification, lens.max_magnification
     if low > 0:
         return f"{low:g}× to {high:g}×"
-    return f"closest focus {lens.min_focus_mm / 1000:.3g} m at {high:g}×"
+    return f"{high:.3g}× there"
