@@ -78,6 +78,18 @@ def test_macro_presets_focus_to_their_published_closest_focus():
     assert closer.exit_code == 2 and closer.stderr.count("\n") == 1 and "0.3 m" in closer.stderr
 
 
+def test_wide_angle_preset_reaches_its_published_magnification():
+    # Canon TS-E 24mm f/3.5L II: closest focus 0.21 m, max. magnification 0.34x (lens_db source); its model
+    # is unit focusing with an effective hiatus (docs/closeup.md §2), and all commands place 0.34x at 0.21 m
+    lens = "canon-ts-e-24mm-f3.5l-ii"
+    (row,) = run_json("dof", "--lens", lens, "-N", "8", "-s", "0.21m")
+    assert row["magnification"] == pytest.approx(0.34, rel=1e-12)
+    assert row["near_mm"] < 210.0 < row["far_mm"]
+    for command in ("focus", "fov"):
+        (row,) = run_json(command, "--lens", lens, "-m", "0.34")
+        assert row["distance_mm"] == pytest.approx(210.0, rel=1e-12)
+
+
 def test_shipped_macro_scene_runs_at_life_size():
     (row,) = run_json("dof", "--scene", "macro")
     assert row["magnification"] == pytest.approx(1.0, rel=1e-12)

@@ -155,6 +155,8 @@ def _row(model: Any, f0: float, n: float, wanted: float, by_m: bool, plane: str,
     if m == 0.0:
         return focal, k * n, 0.0, math.inf, math.inf, other
     u = focal + focal / m
+    if model is not None:
+        delta = model.hiatus_mm  # the preset's, or the effective hiatus of its focus model
     return focal, k * n, m, u, u + focal + focal * m + delta, other
 
 
@@ -223,8 +225,10 @@ def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_
             hyper_shift = 0.0
             if distance_from == "sensor" and not direct:
                 fi, mi = setting.focal_length_mm[i], setting.magnification[i]
-                shift = fi + fi * mi + delta  # v + δ
-                hyper_shift = fi + setting.f_number[i] * cs[i] + delta  # image distance at the hyperfocal focus
+                # v + δ, with the δ that placed the subject (a focus model's own)
+                row_delta = setting.sensor_distance_mm[i] - setting.lens_distance_mm[i] - fi - fi * mi
+                shift = fi + fi * mi + row_delta
+                hyper_shift = fi + setting.f_number[i] * cs[i] + row_delta  # image distance at the hyperfocal focus
             rows[i].update({
                 "near_mm": float(take(limits.near_mm)) + shift, "far_mm": float(take(limits.far_mm)) + shift,
                 "total_mm": float(take(limits.total_mm)), "front_mm": float(take(limits.front_mm)),

@@ -117,7 +117,8 @@ def _by_magnification(ctx, focal, wanted_m, sensor, crop, distance_from, pupil_m
         "focal_length_mm": f, "horizontal_deg": angles.horizontal_deg, "vertical_deg": angles.vertical_deg,
         "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": seen.equivalent_focal_length_mm,
         "crop_factor": chosen.crop_factor, "sensor_width_mm": chosen.width_mm, "sensor_height_mm": chosen.height_mm,
-        "distance_mm": u + fe + fe * m + delta if distance_from == "sensor" else u, "magnification": m,
+        "distance_mm": (setting.sensor_distance_mm[0] if count == 1 else np.asarray(setting.sensor_distance_mm))
+        if distance_from == "sensor" else u, "magnification": m,
         "field_width_mm": seen.field_width_mm, "field_height_mm": seen.field_height_mm,
         "distance_from": distance_from,
     })
