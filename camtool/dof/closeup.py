@@ -109,8 +109,11 @@ def closeup_dof(
         rear = xp.where(beyond, xp.inf, spread / (m * (m - k)))
         h = f * f / nc + f
         if distance_from == "sensor":
-            offset = u + f + f * m + hiatus_mm  # u + v + δ
-            hyper = h + f + nc + hiatus_mm
+            offset = u + f + f * m  # u + v (+ δ)
+            hyper = h + f + nc
+            if not (isinstance(hiatus_mm, (int, float)) and hiatus_mm == 0.0):
+                offset = offset + hiatus_mm
+                hyper = hyper + hiatus_mm
         elif distance_from == "lens":
             offset = u
             hyper = h
