@@ -141,7 +141,8 @@ def _row(model: Any, f0: float, n: float, wanted: float, by_m: bool, plane: str,
             m_lens = 0.0
         else:
             low, high = magnification_branches(f0, wanted, delta)
-            m_lens, other = float(low), float(high)
+            m_lens = float(low)
+            other = float(high) if high > low * (1.0 + 1e-9) else math.nan  # at 1:1 the two branches meet
     else:
         f_lens = f0
         require("distance_mm", wanted, wanted > f0,
