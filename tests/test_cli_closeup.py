@@ -210,3 +210,11 @@ def test_help_examples_run(command):
     for args in examples:
         result = run(*args)
         assert result.exit_code == 0, (args, result.output)
+
+
+def test_teleconverter_in_hyperfocal_and_compose():
+    # the lens with a K× converter is the lens K·f at K·N (docs/closeup.md §7): the same rows as typing those
+    assert run_json("hyperfocal", "-f", "300", "-N", "4", "--teleconverter", "1.4") == \
+        run_json("hyperfocal", "-f", "420", "-N", "5.6")
+    assert run_json("compose", "-m", "1", "-f", "100", "-N", "8", "--teleconverter", "2") == \
+        run_json("compose", "-m", "1", "-f", "200", "-N", "16")

@@ -40,11 +40,14 @@ def _one_value(ctx: click.Context, param: click.Parameter, value: Any) -> float 
     return float(values[0])
 
 
+teleconverter_option = click.option(
+    "--teleconverter", type=NumberType(1.0, 4.0), metavar="K", callback=_one_value,
+    help="Teleconverter factor, e.g. 1.4 or 2: focal length and f-number × K.")
+
 closeup_options = stack(
     click.option("--extension", type=LENGTH_MM, metavar="LENGTH", callback=_one_value,
                  help="Extension tubes or bellows added behind the lens, e.g. 25mm: adds E/f to the magnification."),
-    click.option("--teleconverter", type=NumberType(1.0, 4.0), metavar="K", callback=_one_value,
-                 help="Teleconverter factor, e.g. 1.4 or 2: focal length and f-number × K."),
+    teleconverter_option,
 )
 """``--extension`` and ``--teleconverter``."""
 

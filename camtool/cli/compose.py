@@ -8,6 +8,7 @@ from typing import Any
 
 import click
 
+from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
@@ -93,8 +94,9 @@ def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator
 @sensor_options
 @coc_options
 @distance_plane_option
+@teleconverter_option
 def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, magnification, f_number, exact_stops,
-            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
+            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, teleconverter, fmt, units,
             preset_files) -> Output:
     """Perspective composition: where to stand with each focal length to frame the subject the same.
 
@@ -113,8 +115,9 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     from camtool.dof.ladder import depth_of_field
     from camtool.geometry.compose import composition, magnification_for_fill, plane_view
 
-    focal = flatten(focal_length) or DEFAULT_FOCAL_LENGTHS_MM
-    apertures = f_numbers(f_number, exact_stops)
+    k = teleconverter or 1.0  # the lens taken as k·f at k·N (docs/closeup.md §7)
+    focal = [k * v for v in flatten(focal_length)] or DEFAULT_FOCAL_LENGTHS_MM
+    apertures = [k * v for v in f_numbers(f_number, exact_stops)]
     size, share = _single(ctx, subject_size, "--subject-size"), _single(ctx, fill, "--fill")
     given_ms = flatten(magnification)
     given_m = given_ms[0] if given_ms else None
