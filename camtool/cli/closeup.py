@@ -13,6 +13,7 @@ sharp (§3), and adds the close-up columns.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any, NamedTuple
 
 import click
@@ -264,7 +265,7 @@ def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_
     return rows
 
 
-def branch_note(rows: list[dict[str, Any]]) -> str:
+def branch_note(rows: Sequence[dict[str, Any]]) -> str:
     """Footer text naming the other magnification of a sensor-plane distance (close-up rows only)."""
     others = [(r["distance_mm"], r["other_magnification"]) for r in rows
               if r.get("other_magnification") is not None and r["magnification"] >= CLOSE_UP

@@ -50,7 +50,7 @@ COLUMNS = [
     Column("front_mm", "front"),
     Column("rear_mm", "rear"),
     Column("hyperfocal_mm", "H"),
-    Column("sharp_zone", "sharp zone", TEXT),
+    Column("sharp_zone", "sharp zone", TEXT, legend="┃ focus, H hyperfocal, ▶ ∞"),
 ]
 ALL_COLUMNS = [
     Column("model", "model", TEXT),
@@ -159,7 +159,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
         worst = max(row["error_estimate"] for row in rows)
         used = " / ".join(dict.fromkeys(row["model"] for row in rows))
         label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
-        extra = " · ".join(part for part in (branch_note(rows) if close else "", "┃ focus, H hyperfocal, ▶ ∞") if part)
+        extra = branch_note(rows) if close else ""
         note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from, extra)
     return Output(rows, columns, keys, note)
 
@@ -201,8 +201,7 @@ def _closeup(ctx, model, f, n, w, c, by_m, extension, teleconverter, distance_fr
         extra = " · ".join(part for part in (branch_note(rows) if not by_m else "",
                                              "-s is the lens's own focus setting; focus is where the subject then is"
                                              if (extension or teleconverter) and not by_m else "",
-                                             _dominance(rows) if diffraction else "",
-                                             "┃ focus, H hyperfocal, ▶ ∞") if part)
+                                             _dominance(rows) if diffraction else "") if part)
         note = label + " · " + footer(None, cocs, coc_origin, sensor_label, distance_from, extra)
     return Output(rows, columns, keys, note)
 
