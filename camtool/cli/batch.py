@@ -348,7 +348,7 @@ class _Batch:
                 continue
             name, unit = target
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType):
+            if isinstance(param.type, _ListType) and not _t_stops(param, cells):
                 values[name] = self._numbers(param, unit, column, cells, numbers, errors)
             else:
                 values[name] = self._settings(param, unit, column, cells, numbers, errors)
@@ -440,14 +440,14 @@ class _Batch:
         values, passed = self._parse(header, numbers, records, errors)
         for name, column in values.items():
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType) and self.defaults[name] is None:
+            if isinstance(param.type, _ListType) and self.defaults[name] is None and not isinstance(column, list):
                 missing = np.isnan(column)
                 if missing.all():
                     continue  # not this chunk's column at all: the command says what it needs
                 for index in np.flatnonzero(missing).tolist():
                     if errors[index] is None:
                         errors[index] = f"--batch row {numbers[index]}: no value for {param.opts[-1]}"
-        settings = [name for name in values if not isinstance(self.columns.params[name].type, _ListType)]
+        settings = [name for name in values if isinstance(values[name], list)]
         groups: dict[tuple[Any, ...], list[int]] = {}
         for index in range(len(numbers)):
             if errors[index] is None:
@@ -494,7 +494,10 @@ class _Batch:
         merged = dict(self.params)
         for name, column in values.items():
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType):
+            if isinstance(column, list):  # settings, and an -N column holding T-stops (one value a group)
+                if column[members[0]] is not None:
+                    merged[name] = [[column[members[0]]]] if isinstance(param.type, _ListType) else column[members[0]]
+            elif isinstance(param.type, _ListType):
                 chosen = column[members]
                 missing = np.isnan(chosen)
                 if missing.all():
@@ -502,8 +505,6 @@ class _Batch:
                 if missing.any():
                     chosen = np.where(missing, self.defaults[name], chosen)
                 merged[name] = [chosen.tolist()]
-            elif column[members[0]] is not None:
-                merged[name] = column[members[0]]
         self.ctx.meta[ZIP] = True
         try:
             return self.compute(self.ctx, **merged)
@@ -597,6 +598,15 @@ class _Batch:
 
 
 _BAD = object()
+
+
+def _t_stops(param: click.Parameter, cells: Sequence[Any]) -> bool:
+    """Whether an -N column holds T-stops (T2): then each cell is parsed alone, keeping what it is."""
+    if not getattr(param.type, "t_stops", False):
+        return False
+    from camtool.core.units import parse_t_stop
+
+    return any(isinstance(cell, str) and parse_t_stop(cell) is not None for cell in cells)
 
 
 def _numeric(value: Any) -> bool:

@@ -14,7 +14,7 @@ import click
 
 from camtool.cli.options import param_named
 from camtool.cli.params import flatten
-from camtool.core.units import UnitError
+from camtool.core.units import TStop, UnitError
 from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
@@ -186,6 +186,9 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
     else:
         focal = [lens.focal_min_mm]
     for n in flatten(params.get("f_number")):
+        if isinstance(n, TStop):
+            _check_t_stop(ctx, lens, n)
+            continue
         for f in focal:
             widest = lens.widest_f_number(f) or n
             slowest = lens.f_number_max or n
@@ -199,3 +202,12 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
                 raise click.BadParameter(
                     f"{d / 1000:.4g} m is outside the valid range of --lens {lens.id}: at least its closest focus, "
                     f"{lens.min_focus_mm / 1000:.4g} m from the sensor", ctx=ctx, param=param_named(ctx, "distance"))
+
+
+def _check_t_stop(ctx: click.Context, lens: Any, t: float) -> None:
+    """Refuse a T-stop below the lens's widest T-stop (or its widest f-number: T is never below N)."""
+    widest = lens.t_number_min or lens.f_number_min
+    if widest is not None and t < widest * 0.99:
+        span = f"T{widest:g}" if lens.t_number_min else f"f/{widest:g} (a T-stop is never below the f-number)"
+        raise click.BadParameter(f"T{t:g} is outside the valid range of --lens {lens.id}: from {span}",
+                                 ctx=ctx, param=param_named(ctx, "f_number"))

@@ -53,8 +53,9 @@ focal_option = click.option("-f", "--focal-length", "focal_length", type=LENGTH_
                             help="Focal length, e.g. 50 or 50mm (bare numbers are mm); a list 24,35,50 gives a row each.")
 
 aperture_options = stack(
-    click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
-                 help="f-number: 8, f/8 or f8; a list 2.8,4,5.6 gives a row each."),
+    click.option("-N", "--f-number", "f_number", type=FNumberType(t_stops=True), multiple=True,
+                 help="f-number: 8, f/8 or f8, or a T-stop T2 (depth of field uses the f-number: from the --lens "
+                      "transmittance, else the T-stop stands in); a list 2.8,4,5.6 gives a row each."),
     click.option("--exact-stops", is_flag=True,
                  help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627)."),
 )

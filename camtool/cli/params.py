@@ -14,7 +14,7 @@ from typing import Any
 
 import click
 
-from camtool.core.units import UnitError, parse_f_number, parse_length, parse_time
+from camtool.core.units import TStop, UnitError, parse_f_number, parse_length, parse_t_stop, parse_time
 
 
 class _ListType(click.ParamType):
@@ -68,8 +68,12 @@ class FNumberType(_ListType):
     name = "f-number"
     valid = "0.7 to 1024 (written 8, f/8 or f8)"
 
+    def __init__(self, t_stops: bool = False) -> None:
+        self.t_stops = t_stops  # also T-stops (T2), returned as TStop
+
     def parse(self, text: str) -> float:
-        return parse_f_number(text)
+        t_stop = parse_t_stop(text) if self.t_stops else None
+        return parse_f_number(text) if t_stop is None else TStop(t_stop)
 
     def check(self, value: float) -> bool:
         return 0.7 <= value <= 1024
