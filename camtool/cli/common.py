@@ -54,9 +54,12 @@ def t_stop_output(ctx: click.Context, out: Any) -> Any:
         return out
     choices, lens = found
     by_n = {round(c.f_number, 9): c for c in choices}
+    shown = list(dict.fromkeys(round(float(row.get("f_number") or 0.0), 9) for row in out.rows))
+    if not set(shown) <= set(by_n) and len(shown) == len(choices):
+        by_n = dict(zip(shown, choices))  # f-numbers scaled by the command (a teleconverter's k·N), in order
     for row in out.rows:
         n = row.get("f_number")
-        choice = by_n.get(round(n, 9)) if isinstance(n, float) else None
+        choice = by_n.get(round(float(n), 9)) if isinstance(n, (int, float)) else None
         if choice is None and len(by_n) == 1:
             choice = choices[0]
         row["t_stop"] = choice.t_stop if choice is not None else None

@@ -122,7 +122,8 @@ def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
 @camtool_command("exposure", batch=False)
 @click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
               help="f-number (8, f/8, f8) or T-stop (T2; exposure uses it as is); a list 2.8,4 gives a row each. "
-                   "Without a light level: the metered f-number.")
+                   "Without a light level: the metered f-number. Left out with --lens of a cinema lens: its "
+                   "widest T-stop.")
 @click.option("--exact-stops", is_flag=True,
               help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627).")
 @click.option("-t", "--shutter", "shutter_s", type=TimeType(), multiple=True,
@@ -193,6 +194,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
       camtool exposure --ev100 12 -N 8 --nd ND1000 --film hp5
       camtool exposure --ev100 12 --iso 100 --equivalents
       camtool exposure --illuminance 37fc -N 4 --iso 400
+      camtool exposure --lens cooke-s4i-50mm-t2 --ev100 12
     """
     from camtool.exposure.calculator import KEYS, SettingsError, work_out
     from camtool.exposure.timefmt import format_time
