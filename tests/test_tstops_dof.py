@@ -123,3 +123,27 @@ def test_compose_with_a_teleconverter_keeps_the_t_stop_of_each_row() -> None:
     # the converter makes the lens k·f at k·N (k = 1.4): f/2.8 behind the T2 row
     assert {(round(r["f_number"], 9), r["t_stop"], r["f_number_from"]) for r in rows} == {
         (2.8, 2.0, "t-stop"), (5.6, None, "typed")}
+
+
+# CinemaTechnic, "Lens Profiles – Carl Zeiss Standard Primes T2.1" (Jorge Diaz-Amador, updated 8 April 2020,
+# http://cinematechnic.com/optics/arri_zeiss_standard_prime_f2_t21/): "35mm format f2.0 lenses", marked T2.1;
+# the same page names the Zeiss High Speed (Super Speed) series f1.2 and T1.3.
+STANDARD_PRIME = """lenses:
+  - id: zeiss-standard-prime-50
+    name: Zeiss Standard Prime 50mm (f/2.0, T2.1)
+    focal_length_mm: 50
+    f_number_min: 2.0
+    t_number_min: 2.1
+"""
+
+
+def test_published_cine_lens_f_and_t_give_its_transmittance(tmp_path) -> None:
+    assert transmittance_from_stops(2.0, 2.1) == pytest.approx(0.907, abs=5e-4)  # Standard Prime
+    assert transmittance_from_stops(1.2, 1.3) == pytest.approx(0.852, abs=5e-4)  # High Speed
+    path = tmp_path / "lens.yaml"
+    path.write_text(STANDARD_PRIME, encoding="utf-8")
+    (row,) = run_json("dof", "--lens", "zeiss-standard-prime-50", "--presets", str(path), "-N", "T2.8", "-s", "3m")
+    assert row["f_number"] == pytest.approx(2.8 * 2.0 / 2.1, rel=1e-12)  # N = T·√τ = T·(N₀/T₀): f/2.667
+    assert row["f_number_from"] == "transmittance"
+    (wide,) = run_json("dof", "--lens", "zeiss-standard-prime-50", "--presets", str(path), "-N", "T2.1", "-s", "3m")
+    assert wide["f_number"] == pytest.approx(2.0, rel=1e-12)  # wide open: the published f-number
