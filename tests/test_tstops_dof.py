@@ -91,9 +91,13 @@ def test_batch_cells_with_t_stops(tmp_path, lens_file) -> None:
     rows = run_json("dof", "--lens", "wiki-t-lens", "--presets", lens_file, "--batch", str(path))
     assert rows[0]["f_number"] == pytest.approx(2.0, rel=1e-12) and rows[0]["f_number_from"] == "transmittance"
     assert rows[0]["far_mm"] == pytest.approx(rows[1]["far_mm"], rel=1e-9)
-    path.write_text("f_number,distance\nT2,3m\nT4,5m\n", encoding="utf-8")
+    path.write_text("f_number,distance\nT2,3m\nT4,5m\nf/2.8,3m\n", encoding="utf-8")
     rows = run_json("dof", "-f", "50", "--batch", str(path))
-    assert [(r["f_number"], r["f_number_from"]) for r in rows] == [(2.0, "t-stop"), (4.0, "t-stop")]
+    assert [(r["f_number"], r["t_stop"], r["f_number_from"]) for r in rows] == [
+        (2.0, 2.0, "t-stop"), (4.0, 4.0, "t-stop"), (2.8, None, "typed")]
+    first = rows[0]
+    (plain,) = run_json("dof", "-f", "50", "-N", "2", "-s", "3m")
+    assert first["far_mm"] == plain["far_mm"]  # the stand-in: T2 computed as f/2
 
 
 def test_t_stop_below_the_lens_is_refused() -> None:

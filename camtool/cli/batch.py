@@ -348,7 +348,7 @@ class _Batch:
                 continue
             name, unit = target
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType) and not _t_stops(param, cells):
+            if isinstance(param.type, _ListType) and not _t_stops(self.ctx, param, cells):
                 values[name] = self._numbers(param, unit, column, cells, numbers, errors)
             else:
                 values[name] = self._settings(param, unit, column, cells, numbers, errors)
@@ -600,13 +600,17 @@ class _Batch:
 _BAD = object()
 
 
-def _t_stops(param: click.Parameter, cells: Sequence[Any]) -> bool:
+def _t_stops(ctx: click.Context, param: click.Parameter, cells: Sequence[Any]) -> bool:
     """Whether an -N column holds T-stops (T2): then each cell is parsed alone, keeping what it is."""
     if not getattr(param.type, "t_stops", False):
         return False
+    from camtool.cli.common import T_STOP_COLUMN
     from camtool.core.units import parse_t_stop
 
-    return any(isinstance(cell, str) and parse_t_stop(cell) is not None for cell in cells)
+    found = any(isinstance(cell, str) and parse_t_stop(cell) is not None for cell in cells)
+    if found:
+        ctx.meta[T_STOP_COLUMN] = True
+    return found
 
 
 def _numeric(value: Any) -> bool:

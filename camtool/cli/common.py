@@ -21,6 +21,7 @@ def required(ctx: click.Context, values: Sequence[Any], option: str) -> list[Any
 
 
 CHOICES = "camtool.f_number_choices"  # ctx.meta: the FNumberChoice of each typed aperture, for keys and footer
+T_STOP_COLUMN = "camtool.t_stop_column"  # ctx.meta: a --batch -N column holds T-stops (every row gets the keys)
 
 
 def f_numbers(values: Sequence[list[float]], exact: bool) -> list[float]:
@@ -34,12 +35,12 @@ def f_numbers(values: Sequence[list[float]], exact: bool) -> list[float]:
     flat = flatten(values)
     if exact:
         flat = [TStop(exact_f_number(n)) if isinstance(n, TStop) else exact_f_number(n) for n in flat]
-    if not any(isinstance(n, TStop) for n in flat):
+    ctx = click.get_current_context()
+    if not any(isinstance(n, TStop) for n in flat) and not ctx.meta.get(T_STOP_COLUMN):
         return flat
     from camtool.cli.equipment import LENS
     from camtool.exposure.ev import resolve_f_number
 
-    ctx = click.get_current_context()
     lens = ctx.meta.get(LENS)
     transmittance = lens.transmittance if lens is not None else None
     choices = [resolve_f_number(n, isinstance(n, TStop), transmittance) for n in flat]
