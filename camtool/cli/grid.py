@@ -79,7 +79,7 @@ class Grid:
 
     def __init__(self, whole: bool = False, chunk: int | None = None) -> None:
         self.whole = whole
-        self.chunk = chunk if chunk is not None else CHUNK
+        self.chunk = max(2, chunk if chunk is not None else CHUNK)
         self.start = 0
         self.count: int | None = None
 
