@@ -26,6 +26,7 @@ COMMANDS = {
     "exposure": "camtool.cli.exposure",
     "presets": "camtool.cli.presets",
     "completion": "camtool.cli.completion",
+    "chart": "camtool.cli.chart",
 }
 
 
