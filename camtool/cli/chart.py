@@ -147,6 +147,9 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
             fmt = _image_format(ctx, output, given)
             if output == "-" and data_file == "-":
                 raise click.UsageError("-o - and --data - would both write to standard output.", ctx)
+            for target in (output, data_file):
+                if target is not None and target != "-" and not Path(target).resolve().parent.is_dir():
+                    raise click.ClickException(f"cannot write {target}: No such directory")
             plot = plotting(ctx)
             params = apply_equipment(ctx, params)
             data = compute(ctx, **params)
@@ -214,7 +217,9 @@ def chart() -> None:
     --image-format writes to standard output) with the inputs, presets, units
     and models of the matching command. Colours are the Okabe–Ito
     colour-blind-safe palette, each curve with its own line style as well, for
-    grey-scale print. Needs matplotlib: pip install 'camtool[chart]'.
+    grey-scale print. A chart is a picture, so there is no --format (nor
+    CAMTOOL_FORMAT): --data FILE writes the plotted numbers as JSON. Needs
+    matplotlib: pip install 'camtool[chart]'.
 
     \b
     Examples:
@@ -464,7 +469,11 @@ def regenerate(directory: Path) -> list[Path]:
         target = directory / f"{kind}.svg"
         args[args.index("-o") + 1] = str(target)
         args += ["--data", str(directory / f"{kind}.json")]
-        cli.main(args, prog_name="camtool", standalone_mode=False)
+        try:
+            cli.main(args, prog_name="camtool")
+        except SystemExit as done:  # the group exits with the command's status
+            if done.code not in (0, None):
+                raise
         written += [target, directory / f"{kind}.json"]
     return written
 
