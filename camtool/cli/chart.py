@@ -62,7 +62,7 @@ MODELS = [name for name in model_choices() if name != "all"]
 EXAMPLES = {
     "dof": "camtool chart dof -f 50 -N 2.8,8,22 -o docs/charts/dof.svg",
     "blur": "camtool chart blur --subject-size 1.8m --fill 0.8 -f 35,50,85,135 -N 2.8 -o docs/charts/blur.svg",
-    "aperture": "camtool chart aperture -f 100 --near 1m --far 1.5m -o docs/charts/aperture.svg",
+    "aperture": "camtool chart aperture -f 24 --near 2m --far inf -o docs/charts/aperture.svg",
     "trade": "camtool chart trade -N 8 -s 3m --lens dgauss100-lens -o docs/charts/trade.svg",
     "card": "camtool chart card -f 35 --paper a6 -o docs/charts/card.svg",
 }
@@ -225,7 +225,7 @@ def chart() -> None:
     Examples:
       camtool chart dof -f 50 -N 2.8,8,22 -o dof.png
       camtool chart blur --subject-size 1.8m --fill 0.8 -f 35,85,135 -N 2.8 -o blur.svg
-      camtool chart aperture -f 90 --near 0.5m --far 0.7m -o aperture.pdf
+      camtool chart aperture -f 100 --near 1m --far 1.5m -o aperture.pdf
       camtool chart trade -N 8 -s 3m --lens dgauss100-lens -o trade.svg
       camtool chart card -f 35 --units imperial --paper letter-quarter -o card.pdf
       camtool chart dof -f 35 -N 8 -o - --image-format svg > dof.svg

@@ -163,6 +163,8 @@ def _dof(figure: Figure, data: ChartData, units: str) -> None:
 
 
 def _distance_text(mm: float, units: str) -> str:
+    if math.isinf(mm):
+        return "∞"
     if units == "imperial":
         return feet_inches(mm)
     return f"{significant(mm / 1000.0, 3)} m"
