@@ -154,6 +154,15 @@ def dof_data(focal_lengths: Sequence[float], f_numbers: Sequence[float], coc_mm:
     the first distance) is a vertical mark. A far limit of infinity stays
     infinite (null in JSON).
 
+    Parameters
+    ----------
+    focal_length_mm, f_numbers : lists of f > 0 mm and N > 0; several of one of them make the bands
+    coc_mm : float, c > 0 mm
+    distances_mm : list of focus distances > 0 mm from ``distance_from``
+    model, distance_from, lens, diffraction, wavelength_nm, tolerance
+        As for :func:`camtool.dof.ladder.depth_of_field`.
+    scene : str, the scene line of the chart's title
+
     Examples
     --------
     Thin lens from the lens, H = f²/(N·c) + f, near = s(H − f)/(H + s − 2f),
@@ -192,6 +201,17 @@ def blur_data(focal_lengths: Sequence[float], f_numbers: Sequence[float], magnif
     f-number, from :func:`camtool.geometry.compose.plane_view`; the blur of a
     background at infinity, f·m/N, is a horizontal mark. ``extra`` carries
     the frame width (for the % axis) and the blur in % per curve.
+
+    Parameters
+    ----------
+    focal_lengths, f_numbers : lists of f > 0 mm and N (0.7 to 1024); several of one of them make the curves
+    magnification : float, subject magnification m > 0
+    width_mm : float, frame width > 0 mm
+    offsets_mm : list of background distances behind the subject, > 0 mm (``inf`` allowed)
+
+    References
+    ----------
+    Wikipedia, "Depth of field", section "Foreground and background blur".
 
     Examples
     --------
@@ -234,6 +254,21 @@ def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm:
     falls as K/N and the Airy disc grows as A·N, so they cross at
     N* = √(K/A), which is also where their quadrature sum is smallest: that
     crossing is marked.
+
+    Parameters
+    ----------
+    focal_length_mm : float, f > 0 mm
+    coc_mm : float, c > 0 mm (drawn as a reference line)
+    near_mm, far_mm : float, the scene's nearest and farthest points, near < far (``inf`` allowed), mm
+    f_numbers : list of N > 0
+    focus_mm : float or None, the focus distance (None: the thin-lens focus for near…far)
+    distance_from : ``"sensor"`` or ``"lens"``
+    pupil_magnification : float, P > 0
+    wavelength_nm : float, λ in nm
+
+    References
+    ----------
+    Born and Wolf, *Principles of Optics*, §8.5.2 (Airy disc); Wikipedia, "Circle of confusion".
 
     Examples
     --------
@@ -293,6 +328,13 @@ def trade_data(focal_length_mm: float | None, f_number: float, coc_mm: float, di
     complete rung, the reference) and, in ``extra["estimates"]``, the error
     ``auto`` estimates for it.
 
+    Parameters
+    ----------
+    focal_length_mm, f_number, coc_mm, distance_mm : float
+        One scene, as for :func:`camtool.dof.ladder.compare_models`.
+    distance_from, lens, diffraction, wavelength_nm : as there
+    repeat : int, timed runs per rung (the best counts)
+
     Examples
     --------
     >>> data = trade_data(50.0, 8.0, 0.03, 3000.0, repeat=1)
@@ -322,6 +364,14 @@ def card_data(focal_length_mm: float, f_numbers: Sequence[float], distances_mm: 
     One :func:`camtool.dof.ladder.depth_of_field` call over the grid;
     ``extra`` holds ``distances_mm``, ``f_numbers``, ``near_mm`` and
     ``far_mm`` (row-major lists) and the hyperfocal distance per f-number.
+
+    Parameters
+    ----------
+    focal_length_mm : float, f > 0 mm
+    f_numbers : list of N > 0 (the columns)
+    distances_mm : list of focus distances > 0 mm (the rows; ``inf`` allowed)
+    coc_mm : float, c > 0 mm
+    model, distance_from, lens : as for :func:`camtool.dof.ladder.depth_of_field`
 
     Examples
     --------
