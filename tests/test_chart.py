@@ -368,3 +368,11 @@ def test_help_examples_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> N
         words = shlex.split(line.split(">")[0])
         result = chart(*words[2:], *SMALL)
         assert result.exit_code == 0, (line, result.output)
+
+
+def test_a_figure_too_small_for_its_labels_is_one_warning_line(tmp_path: Path) -> None:
+    result = chart("dof", *SCENES["dof"], "--size", "1x1", "--dpi", "20", "-o", str(tmp_path / "tiny.png"))
+    assert result.exit_code == 0
+    assert result.stderr == ("Warning: the chart is too small for its labels at 1 × 1 in; some may overlap "
+                             "(give a larger --size)\n")
+    assert _png_size((tmp_path / "tiny.png").read_bytes()) == (20, 20)

@@ -155,8 +155,12 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
             data = compute(ctx, **params)
             width, height = size or (default_size(params) if default_size else DEFAULT_SIZE_IN)
             figure = plot.draw(data, width, height, params["units"])
-            image = plot.to_bytes(figure, fmt, flatten(dpi)[0] if isinstance(dpi, list) else float(dpi))
+            notes: list[str] = []
+            image = plot.to_bytes(figure, fmt, flatten(dpi)[0] if isinstance(dpi, list) else float(dpi), notes)
             _write(ctx, output, image)
+            if notes:
+                click.echo(f"Warning: the chart is too small for its labels at {width:.3g} × {height:.3g} in; "
+                           "some may overlap (give a larger --size)", err=True)
             if data_file is not None:
                 text = json.dumps(data.to_json(), allow_nan=False, ensure_ascii=False, indent=1) + "\n"
                 _write(ctx, data_file, text.encode("utf-8"))

@@ -105,18 +105,27 @@ def draw(data: ChartData, width_in: float, height_in: float, units: str = "metri
     return figure
 
 
-def save(figure: Figure, target: IO[bytes] | str, fmt: str, dpi: float = 150.0) -> None:
-    """Write ``figure`` as PNG, SVG or PDF to a path or binary stream, without a date (reproducible)."""
+def save(figure: Figure, target: IO[bytes] | str, fmt: str, dpi: float = 150.0) -> list[str]:
+    """Write ``figure`` as PNG, SVG or PDF to a path or binary stream, without a date (reproducible).
+
+    Returns matplotlib's warnings (a figure too small for its labels), for the caller to pass on in its own words.
+    """
+    import warnings
+
     metadata: dict[str, Any] = {"png": {"Software": None}, "svg": {"Date": None},
                                 "pdf": {"CreationDate": None, "ModDate": None}}[fmt]
-    with matplotlib.rc_context(RC):
+    with matplotlib.rc_context(RC), warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", UserWarning)
         figure.savefig(target, format=fmt, dpi=dpi, metadata=metadata)
+    return [str(w.message) for w in caught]
 
 
-def to_bytes(figure: Figure, fmt: str, dpi: float = 150.0) -> bytes:
-    """The file ``save`` would write, as bytes."""
+def to_bytes(figure: Figure, fmt: str, dpi: float = 150.0, notes: list[str] | None = None) -> bytes:
+    """The file ``save`` would write, as bytes; matplotlib's warnings are appended to ``notes``."""
     buffer = io.BytesIO()
-    save(figure, buffer, fmt, dpi)
+    caught = save(figure, buffer, fmt, dpi)
+    if notes is not None:
+        notes.extend(caught)
     return buffer.getvalue()
 
 
