@@ -276,10 +276,9 @@ def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high
         raise click.BadParameter("inf is outside the valid range: a finite distance", ctx=ctx,
                                  param=param_named(ctx, "high"))
     _range(ctx, start, stop, "high")
-    scene = f"{_lens_label(focal)} · " + footer(f"{model}", cocs, origin, chosen.label, distance_from)
     with library_errors(ctx), ladder_errors(ctx):
         data = dof_data(focal, apertures, c, log_space(start, stop, POINTS), model, distance_from, lens, diffraction,
-                        wavelength, tolerance, scene)
+                        wavelength, tolerance)
     used = " / ".join(data.extra["models"])
     data.scene = f"{_lens_label(focal)} · " + footer(used, cocs, origin, chosen.label, distance_from)
     return data
