@@ -209,6 +209,7 @@ def test_trade_data_are_compare_models(monkeypatch: pytest.MonkeyPatch, tmp_path
     assert [c.label for c in data.curves] == ["approx", "thin", "thick"]
     assert [c.y[0] for c in data.curves] == pytest.approx([float(r.difference) for r in rows], rel=1e-12)
     assert data.curves[-1].y == [0.0] and data.extra["reference"] == "thick"
+    assert data.extra["estimates"] == pytest.approx([float(r.result.error_estimate) for r in rows], rel=1e-12)
     assert all(0 < c.x[0] < 1 for c in data.curves)
 
 

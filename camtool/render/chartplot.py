@@ -256,6 +256,11 @@ def _trade(figure: Figure, data: ChartData, units: str) -> None:
         axes.plot([curve.x[0] * 1e6], [shown], marker=MARKERS[g % len(MARKERS)], ms=7, color=colour(g),
                   ls="none", label=label)
         axes.annotate(label, (curve.x[0] * 1e6, shown), xytext=(6, 4), textcoords="offset points", fontsize=7.5)
+        estimate = data.extra["estimates"][g] * 100.0
+        if estimate > 0:
+            axes.plot([curve.x[0] * 1e6], [estimate], marker=MARKERS[g % len(MARKERS)], ms=7, ls="none",
+                      markerfacecolor="none", markeredgecolor=colour(g),
+                      label="hollow: auto's estimate; filled: measured" if g == 0 else None)
     axes.set_xscale("log")
     axes.set_yscale("log")
     axes.set_ylim(floor / 2.0, max(errors, default=1e-2) * 100.0 * 3.0)
@@ -270,6 +275,8 @@ def _trade(figure: Figure, data: ChartData, units: str) -> None:
     axes.yaxis.set_major_formatter(FuncFormatter(lambda v, _p: "" if v < floor * 1.5 else _tick(v)))
     axes.margins(x=0.25)
     axes.grid(True, which="major", color="#dddddd", lw=0.6)
+    axes.legend(handles=[h for h in axes.get_lines() if h.get_label() == "hollow: auto's estimate; filled: measured"],
+                loc="upper right", frameon=False, fontsize=7)
 
 
 def _card_cell(near: float, far: float, units: str) -> str:
