@@ -47,7 +47,8 @@ LABELS = {
     "dof": ["Depth of field against focus distance", "focus distance (m)", "near and far limits (m)"],
     "blur": ["Background blur against distance behind the subject", "background distance behind the subject (m)",
              "blur disc on the sensor (mm)", "blur disc (% of the frame width)"],
-    "aperture": ["Defocus and diffraction blur against f-number", "f-number", "blur disc on the sensor (mm)"],
+    "aperture": ["Defocus and diffraction blur against f-number", "f-number", "blur disc on the sensor (mm)",
+                 "optimum aperture f/"],
     "trade": ["Model ladder: error against time per evaluation", "time per evaluation (µs",
               "difference from thin (%)"],
     "card": ["Depth of field · 35 mm · near–far (m)", "focus", "f/4", "f/8"],
@@ -178,28 +179,39 @@ def test_blur_data_are_plane_view_and_tend_to_fm_over_n(monkeypatch: pytest.Monk
     assert data.extra["blur_pct"][1][-1] == pytest.approx(100.0 * data.curves[1].y[-1] / 36.0)
 
 
-def test_aperture_data_defocus_airy_and_their_crossing(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
-    from camtool.dof.inverse import focus_for_limits
+def test_aperture_data_defocus_airy_and_the_optimum(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    from camtool.dof.closeup import optimum_for_limits
 
-    data = handed(monkeypatch, tmp_path, "aperture", "-f", "100", "--near", "1m", "--far", "1.5m", "--coc", "0.03",
+    data = handed(monkeypatch, tmp_path, "aperture", "-f", "24", "--near", "2m", "--far", "inf", "--coc", "0.03",
                   "--distance-from", "lens", "--from", "2", "--to", "64")
     near, far, airy, total = data.curves
-    plan = focus_for_limits(100.0, 0.03, 1000.0, 1500.0, "lens")
-    assert data.extra["focus_mm"] == pytest.approx(plan.distance_mm)
-    # At the f-number the inverse solution gives, the defocus blur at both limits is the CoC.
-    k = near.y[0] * near.x[0]
-    assert k / plan.f_number == pytest.approx(0.03, rel=1e-9)
-    assert far.y == pytest.approx(near.y, rel=1e-9)
+    best = optimum_for_limits(24.0, 2000.0, math.inf, "lens")
+    assert data.extra["focus_mm"] == pytest.approx(best.distance_mm, rel=1e-12)
+    assert (data.marks[0].x, data.marks[0].y) == pytest.approx((best.optimum.f_number, best.optimum.blur_mm), rel=1e-12)
     # Airy disc 2.44·λ·N·(1 + m), m = f/(u − f) (Born & Wolf §8.5.2; Gaussian lens formula).
-    m = 100.0 / (plan.distance_mm - 100.0)
+    m = 24.0 / (best.distance_mm - 24.0)
     assert airy.y[10] == pytest.approx(2.44 * 550e-6 * airy.x[10] * (1 + m), rel=1e-12)
-    assert total.y[10] == pytest.approx(math.hypot(near.y[10], airy.y[10]), rel=1e-12)
-    # The crossing is where the quadrature sum is smallest: no charted f-number does better.
-    crossing = data.marks[0]
-    assert crossing.x is not None and crossing.y is not None
-    assert k / crossing.x == pytest.approx(2.44 * 550e-6 * crossing.x * (1 + m), rel=1e-9)
-    assert min(total.y) >= math.sqrt(2) * crossing.y * (1 - 1e-12)
+    assert total.y[10] == pytest.approx(math.hypot(max(near.y[10], far.y[10]), airy.y[10]), rel=1e-12)
+    # Two independent routes to the optimum agree: where the thin-lens defocus curve meets the Airy disc
+    # (the smallest root-sum-square, no charted f-number does better), and Hansma's Δ/(2·N_w) rule.
+    crossing = data.extra["crossing_f_number"]
+    assert crossing == pytest.approx(best.optimum.f_number, rel=0.02)
+    assert min(total.y) >= math.sqrt(2) * data.extra["crossing_blur_mm"] * (1 - 1e-12)
+    assert near.y == pytest.approx(far.y, rel=0.02)  # half-way between the images: nearly equal blur
     assert data.marks[1].y == 0.03
+
+
+def test_aperture_focused_where_the_limits_just_fit_blurs_them_by_the_coc(monkeypatch: pytest.MonkeyPatch,
+                                                                         tmp_path: Path) -> None:
+    from camtool.dof.inverse import focus_for_limits
+
+    plan = focus_for_limits(100.0, 0.03, 1000.0, 1500.0, "lens")
+    data = handed(monkeypatch, tmp_path, "aperture", "-f", "100", "--near", "1m", "--far", "1.5m", "--coc", "0.03",
+                  "--distance-from", "lens", "-s", f"{plan.distance_mm}mm")
+    near, far = data.curves[:2]
+    # At the f-number the inverse solution gives, the defocus blur at both limits is the CoC.
+    assert near.y[0] * near.x[0] / plan.f_number == pytest.approx(0.03, rel=1e-9)
+    assert far.y == pytest.approx(near.y, rel=1e-9)
 
 
 def test_trade_data_are_compare_models(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:

@@ -331,7 +331,7 @@ def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, 
 @click.option("--near", type=DISTANCE_M, help="Nearest point of the scene that must be sharp (bare numbers are metres).")
 @click.option("--far", type=DISTANCE_M, help="Farthest point of the scene that must be sharp (inf allowed).")
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
-              help="Focus distance (default: where the depth of field just spans --near to --far).")
+              help="Focus distance (default: half-way between the images of --near and --far, as for the optimum).")
 @click.option("--from", "low", type=NumberType(0.7, 1024), default="1.4", show_default=True,
               help="Widest f-number charted.")
 @click.option("--to", "high", type=NumberType(0.7, 1024), default="64", show_default=True,
@@ -344,12 +344,13 @@ def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, 
 @pupil_mag_option
 def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, high, sensor, crop, coc, coc_rule,
                    pixel_pitch, distance_from, wavelength, pupil_mag, units, preset_files) -> Any:
-    """Blur at the scene's near and far limits from defocus and from diffraction against f-number.
+    """Blur at the scene's near and far limits from defocus and from diffraction against f-number, optimum marked.
 
-    Defocus blur (thin lens) of points at --near and --far with the lens
-    focused between them falls as 1/N; the Airy disc 2.44·λ·N(1 + m/P) grows
-    as N. Their crossing is marked: there the two added in quadrature are
-    smallest, the sharpest the whole scene can be.
+    Defocus blur (thin lens) of points at --near and --far falls as 1/N; the
+    Airy disc 2.44·λ·N(1 + m/P) grows as N. The optimum aperture is marked:
+    focused half-way between the near and far images (Hansma's rule, the
+    default focus; -s sets another), the f-number where the two are equal and
+    their root-sum-square is smallest, the sharpest the whole scene can be.
     """
     from camtool.render.chartdata import aperture_data, log_space
 

@@ -241,19 +241,21 @@ def blur_data(focal_lengths: Sequence[float], f_numbers: Sequence[float], magnif
 def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm: float,
                   f_numbers: Sequence[float], focus_mm: float | None = None, distance_from: str = "sensor",
                   pupil_magnification: float = 1.0, wavelength_nm: float = 550.0, scene: str = "") -> ChartData:
-    """Blur (mm) at the scene's near and far limits from defocus, and the Airy disc, against f-number.
+    """Blur (mm) at the scene's near and far limits from defocus, and the Airy disc, against f-number; the optimum marked.
 
-    The lens is focused at ``focus_mm``, or where the thin-lens depth of
-    field just spans near…far (:func:`camtool.dof.inverse.focus_for_limits`,
-    which makes both blurs equal). Defocus: the blur disc
-    (f/N)·|v_s − v_o|/v_o of a point at each limit
-    (:func:`camtool.geometry.thinlens.blur_diameter_mm`, distances from the
-    lens); diffraction: the Airy disc 2.44·λ·N(1 + m/P)
+    The optimum aperture is :func:`camtool.dof.closeup.optimum_for_limits`:
+    focused half-way between the near and far images (Hansma's rule), the
+    f-number whose defocus and diffraction blurs are equal, which is where
+    their root-sum-square is smallest. The lens is focused there, or at
+    ``focus_mm`` when given. Defocus: the blur disc (f/N)·|v_s − v_o|/v_o of
+    a point at each limit (:func:`camtool.geometry.thinlens.blur_diameter_mm`,
+    distances from the lens); diffraction: the Airy disc 2.44·λ·N(1 + m/P)
     (:func:`camtool.dof.diffraction.airy_diameter_mm`); ``total`` adds the
     larger defocus blur and the Airy disc in quadrature. The defocus blur
-    falls as K/N and the Airy disc grows as A·N, so they cross at
-    N* = √(K/A), which is also where their quadrature sum is smallest: that
-    crossing is marked.
+    falls as K/N and the Airy disc grows as A·N, so the curves cross at
+    N* = √(K/A) (``extra["crossing_f_number"]``), where the total is
+    smallest: with the optimum's own focus this is the optimum again, up to
+    the difference between the thin-lens blur and Hansma's Δ/(2·N_w).
 
     Parameters
     ----------
@@ -261,35 +263,38 @@ def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm:
     coc_mm : float, c > 0 mm (drawn as a reference line)
     near_mm, far_mm : float, the scene's nearest and farthest points, near < far (``inf`` allowed), mm
     f_numbers : list of N > 0
-    focus_mm : float or None, the focus distance (None: the thin-lens focus for near…far)
+    focus_mm : float or None, the focus distance (None: the optimum's, half-way between the images)
     distance_from : ``"sensor"`` or ``"lens"``
     pupil_magnification : float, P > 0
     wavelength_nm : float, λ in nm
 
     References
     ----------
+    P. K. Hansma, "View camera focusing in practice", *Photo Techniques*, 1996 (the optimum);
     Born and Wolf, *Principles of Optics*, §8.5.2 (Airy disc); Wikipedia, "Circle of confusion".
 
     Examples
     --------
-    >>> data = aperture_data(50.0, 0.03, 2000.0, 4000.0, [8.0, 11.0], distance_from="lens")
+    Focused where the thin-lens depth of field just spans 2–4 m
+    (:func:`camtool.dof.inverse.focus_for_limits`: 2666.7 mm from the lens,
+    f/10.616), both limits blur by exactly c = 0.03 mm at f/10.616, so
+    K = 0.03 · 10.616; the Airy disc at f/8 is 2.44 · 550 nm · 8 · (1 + 50/2616.7):
+
+    >>> data = aperture_data(50.0, 0.03, 2000.0, 4000.0, [8.0, 11.0], focus_mm=8000.0 / 3.0, distance_from="lens")
     >>> near, far, airy, total = data.curves
-    >>> round(near.y[0], 5) == round(far.y[0], 5), round(airy.y[0], 5)  # 2.44 · 550 nm · 8 · (1 + 50/2616.7)
-    (True, 0.01094)
-
-    The defocus blur equals c at f/10.616, the f-number that makes 2–4 m just
-    sharp (:func:`camtool.dof.inverse.focus_for_limits`), so K = 0.03 · 10.616
-    and N* = √(K/A) with A = 0.01094/8:
-
-    >>> round(near.y[0] * 8.0, 4), round(data.marks[0].x, 2)  # K, √(0.31848/0.0013676)
-    (0.3185, 15.26)
+    >>> round(near.y[0] * 8.0, 4), round(far.y[0] * 8.0, 4), round(airy.y[0], 5)
+    (0.3185, 0.3185, 0.01094)
+    >>> round(data.extra["crossing_f_number"], 2)  # √(K/A) = √(0.31848/0.0013676)
+    15.26
     """
+    from camtool.dof.closeup import optimum_for_limits
     from camtool.dof.diffraction import airy_diameter_mm
-    from camtool.dof.inverse import focus_for_limits
     from camtool.geometry.thinlens import blur_diameter_mm, focus_geometry, working_f_number
 
+    best = optimum_for_limits(focal_length_mm, near_mm, far_mm, distance_from, 0.0, pupil_magnification,
+                              wavelength_nm)
     if focus_mm is None:
-        focus_mm = float(focus_for_limits(focal_length_mm, coc_mm, near_mm, far_mm, distance_from).distance_mm)
+        focus_mm = float(best.distance_mm)
     geometry = focus_geometry(focal_length_mm, focus_mm, distance_from)
     # the limits as object distances from the lens: from the sensor, less the image distance of the focus
     shift = geometry.image_mm if distance_from == "sensor" else 0.0
@@ -309,11 +314,14 @@ def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm:
     ]
     k = max(near_blur[0], far_blur[0]) * x[0]  # defocus = K/N
     a = float(airy[0]) / x[0]  # Airy disc = A·N
-    best = math.sqrt(k / a)
-    data.marks = [Mark(f"defocus = diffraction at f/{best:.3g}", 3, best, math.sqrt(k * a)),
+    optimum = float(best.optimum.f_number)
+    data.marks = [Mark(f"optimum aperture f/{optimum:.3g}", 3, optimum, float(best.optimum.blur_mm)),
                   Mark(f"CoC {coc_mm:.3g} mm", 4, None, coc_mm)]
-    data.extra.update({"focus_mm": focus_mm, "near_mm": near_mm, "far_mm": far_mm, "crossing_f_number": best,
-                       "crossing_blur_mm": math.sqrt(k * a), "wavelength_nm": wavelength_nm})
+    data.extra.update({"focus_mm": focus_mm, "near_mm": near_mm, "far_mm": far_mm,
+                       "optimum_f_number": optimum, "optimum_blur_mm": float(best.optimum.blur_mm),
+                       "optimum_focus_mm": float(best.distance_mm),
+                       "crossing_f_number": math.sqrt(k / a), "crossing_blur_mm": math.sqrt(k * a),
+                       "wavelength_nm": wavelength_nm})
     return data
 
 
