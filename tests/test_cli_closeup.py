@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import pytest
 from cli_helpers import run, run_json
@@ -218,3 +219,16 @@ def test_teleconverter_in_hyperfocal_and_compose():
         run_json("hyperfocal", "-f", "420", "-N", "5.6")
     assert run_json("compose", "-m", "1", "-f", "100", "-N", "8", "--teleconverter", "2") == \
         run_json("compose", "-m", "1", "-f", "200", "-N", "16")
+
+
+def test_a_magnification_beyond_the_ray_traces_closest_focus_blames_dash_m() -> None:
+    # dgauss100 (f = 100.0038 mm) is traced by unit focusing down to 1:1: its closest focus from H
+    # is 2f = 200.008 mm (tests/data/oracle-README.md), so m = 2 is out of the raytrace model's range.
+    prescription = str(Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml")
+    result = CliRunner().invoke(cli, ["dof", "--prescription", prescription, "-m", "0.5,2", "-N", "8",
+                                      "--model", "raytrace"])
+    assert result.exit_code == 2
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1
+    assert "'-m' / '--magnification': 2 is outside the valid range" in lines[0]
+    assert "200 mm from the lens here, m ≤ 1" in lines[0]

@@ -12,14 +12,15 @@ sharp (§3), and adds the close-up columns.
 
 from __future__ import annotations
 
+import contextlib
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from typing import Any, NamedTuple
 
 import click
 
 from camtool.cli.equipment import LENS
-from camtool.cli.options import LENGTH_MM, library_errors, stack
+from camtool.cli.options import LENGTH_MM, library_errors, param_named, stack
 from camtool.cli.params import NumberType
 from camtool.core.errors import DomainError, require
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, TEXT, Column
@@ -173,6 +174,30 @@ def _array(values: list[float]) -> Any:
     return np.asarray(values, dtype=float)
 
 
+@contextlib.contextmanager
+def _derived_distance_errors(ctx: click.Context, direct: bool, setting: Setting, rows: list[int]) -> Iterator[None]:
+    """A focus distance the user did not type (it came from -m or a focus model) is blamed on what they typed.
+
+    The ray trace, for one, focuses a prescription only down to its closest
+    focus (1:1 by unit focusing): a larger -m is out of that model's range.
+    """
+    try:
+        yield
+    except DomainError as error:
+        if direct or error.param != "distance_mm" or error.limit is None:
+            raise
+        f = min(setting.focal_length_mm[i] for i in rows)
+        largest = f / (float(error.limit) - f) if float(error.limit) > f else math.inf
+        typed = "magnification" if ctx.params.get("magnification") else None
+        where = f"the lens focuses no closer than {float(error.limit):.4g} mm from the lens here, m ≤ {largest:.3g}"
+        if typed is None:
+            raise click.UsageError(f"the focus this lens setting needs is outside the model's range: {where}", ctx) from None
+        beyond = [setting.magnification[i] for i in rows if setting.magnification[i] > largest * (1 + 1e-9)]
+        shown = ", ".join(f"{m:g}" for m in beyond or [setting.magnification[i] for i in rows])
+        raise click.BadParameter(f"{shown} is outside the valid range: {where} (another --model reaches further)",
+                                 ctx=ctx, param=param_named(ctx, typed)) from None
+
+
 def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_from: str, lens: Any,
              diffraction: bool, wavelength: float, tolerance: float, pupil: float, delta: float,
              direct: bool = False, nominal_focal: Any = None) -> list[dict[str, Any]]:
@@ -219,7 +244,7 @@ def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_
         f, n = pick(setting.focal_length_mm), pick(setting.f_number)
         plane = distance_from if direct else "lens"
         s = pick(setting.sensor_distance_mm if plane == "sensor" else setting.lens_distance_mm)
-        with library_errors(ctx), ladder_errors(ctx):
+        with library_errors(ctx), ladder_errors(ctx), _derived_distance_errors(ctx, direct, setting, sharp):
             result = depth_of_field(model, f, n, pick(cs), s, plane, lens, diffraction, wavelength, tolerance)
         limits = result.limits
         for j, i in enumerate(sharp):

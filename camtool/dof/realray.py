@@ -337,7 +337,7 @@ def _focus_vergence(curves: _Curves, distance_mm: float, distance_from: str) -> 
     closest = _closest(curves, distance_from)
     if distance_mm < closest * (1.0 - 1e-12):
         where = {"sensor": "the sensor", "lens": "the lens", "entrance_pupil": "the entrance pupil"}[distance_from]
-        raise DomainError("distance_mm", distance_mm, f"at least {closest:.6g} mm from {where} (the closest focus)")
+        raise DomainError("distance_mm", distance_mm, f"at least {{limit}} from {where} (the closest focus)", limit=closest)
     if distance_from == "sensor":
 
         def mismatch(z: Any, s: Any, b: Any, v: Any) -> Any:
