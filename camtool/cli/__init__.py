@@ -22,6 +22,7 @@ COMMANDS = {
     "focus": "camtool.cli.focus",
     "dof": "camtool.cli.dof",
     "hyperfocal": "camtool.cli.hyperfocal",
+    "tilt": "camtool.cli.tilt",
     "compose": "camtool.cli.compose",
     "exposure": "camtool.cli.exposure",
     "presets": "camtool.cli.presets",

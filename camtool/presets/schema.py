@@ -365,6 +365,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "max_magnification": positive,
         "pupil_magnification": positive,
         "hiatus_mm": finite,
+        "tilt_max_deg": positive,
         "prescription": reference,
         "sensor": reference,
         "mount": text,
