@@ -252,6 +252,24 @@ def test_retrofocus_pupils_move_the_wedge() -> None:
     assert b.k_near != pytest.approx(a.k_near, rel=1e-3)
 
 
+def test_arrays_give_the_scalar_results() -> None:
+    import numpy as np
+
+    lens = TiltLens(90.0, 0.8, 5.0)
+    tilts = np.array([0.0, 2.0, 8.5])
+    distances = np.array([1500.0, 4000.0, np.inf])
+    v = film_for_focus(lens, tilts, distances, "sight", "sensor")
+    w = tilt_wedge(lens, 11.0, 0.03, tilts, v)
+    for i in range(3):
+        vi = film_for_focus(lens, float(tilts[i]), float(distances[i]), "sight", "sensor")
+        wi = tilt_wedge(lens, 11.0, 0.03, float(tilts[i]), vi)
+        assert v[i] == pytest.approx(vi, rel=1e-15)
+        for got, want in zip(w, wi):
+            assert float(got[i]) == pytest.approx(want, rel=1e-13)
+    with pytest.raises(DomainError):
+        film_for_focus(lens, tilts, np.array([1500.0, 50.0, 3000.0]))
+
+
 def test_wedge_errors() -> None:
     lens = TiltLens(50.0)
     with pytest.raises(DomainError):

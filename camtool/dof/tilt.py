@@ -29,9 +29,9 @@ degrees.
 
 from __future__ import annotations
 
-import math
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
+from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import DomainError, require
 from camtool.geometry.tilt import axis_reciprocal, hinge_distance_mm, plane_angle_deg, sight_reciprocal
 
@@ -89,53 +89,70 @@ class TiltWedge(NamedTuple):
     far_deg: float
 
 
-def _check(lens: TiltLens, tilt_deg: float) -> None:
-    require("focal_length_mm", lens.focal_length_mm, lens.focal_length_mm > 0 and math.isfinite(lens.focal_length_mm),
-            "> 0 mm")
-    require("pupil_magnification", lens.pupil_magnification, 0 < lens.pupil_magnification < math.inf, "> 0")
-    require("hiatus_mm", lens.hiatus_mm, math.isfinite(lens.hiatus_mm), "a finite length in mm")
-    require("tilt_deg", tilt_deg, abs(tilt_deg) < 90.0, "between −90° and 90°")
+def _check(lens: TiltLens, tilt_deg: Any) -> Any:
+    """Raise DomainError for a lens or tilt outside the model's domain; return the ops namespace."""
+    f, p, delta = lens
+    xp = ops(f, p, delta, tilt_deg)
+    require("focal_length_mm", f, xp.isfinite(f) & (f > 0), "> 0 mm")
+    require("pupil_magnification", p, xp.isfinite(p) & (p > 0), "> 0")
+    require("hiatus_mm", delta, xp.isfinite(delta), "a finite length in mm")
+    require("tilt_deg", tilt_deg, xp.fabs(tilt_deg) < 90.0, "between −90° and 90°")
+    return xp
 
 
-def film_for_focus(lens: TiltLens, tilt_deg: float, distance_mm: float, along: str = "sight",
-                   distance_from: str = "lens") -> float:
-    """Film distance v (perpendicular, from H′) that puts the plane of sharp focus through a point, mm.
+def film_for_focus(lens: TiltLens, tilt_deg: Any, distance_mm: Any, along: str = "sight",
+                   distance_from: str = "lens") -> Any:
+    """Film distance v in mm (perpendicular to the film, from H′) that puts the plane of sharp focus through a point.
 
     The point is where the plane crosses the line of sight (``along="sight"``:
     1/u + 1/v = cos θ/f) or the lens axis (``"axis"``: 1/s + 1/s′ = 1/f,
     v = s′·cos θ), ``distance_mm`` from H (``"lens"``) or from the film
     (``"sensor"``: along the sight line u + v + δ·cos θ, along the axis
-    s + s′ + δ).
+    s + s′ + δ). Scalars or arrays (broadcast).
+
+    Parameters
+    ----------
+    lens : TiltLens
+    tilt_deg : float or array, |θ| < 90
+    distance_mm : float or array, > the focal length along that line (from the sensor ≥ 4 times it,
+        plus the hiatus); ``inf`` allowed
+    along : ``"sight"`` or ``"axis"``
+    distance_from : ``"lens"`` or ``"sensor"``
+
+    References
+    ----------
+    Merklinger, *Focusing the View Camera* (1993), ch. 4; docs/tilt.md §2–3.
 
     Examples
     --------
     >>> round(film_for_focus(TiltLens(50.0), 0.0, 3000.0), 6)
     50.847458
+    >>> film_for_focus(TiltLens(90.0), [0.0, 60.0], float("inf")).round(6).tolist()  # f/cos θ
+    [90.0, 180.0]
     """
     _check(lens, tilt_deg)
     if along not in ALONG or distance_from not in ("lens", "sensor"):
         raise ValueError(f"along must be one of {ALONG} and distance_from 'lens' or 'sensor'")
-    f, t = lens.focal_length_mm, math.radians(tilt_deg)
-    cos = math.cos(t)
-    g = f if along == "axis" else f / cos  # the lens equation along this line
-    offset = lens.hiatus_mm * (1.0 if along == "axis" else cos) if distance_from == "sensor" else 0.0
-    if distance_from == "sensor":
-        span = distance_mm - offset
-        require("distance_mm", distance_mm, span >= 4.0 * g,
-                "at least {limit} from the sensor (1:1 along this line)", limit=4.0 * g + offset)
-        if math.isinf(span):
-            image = g
+    f = lens.focal_length_mm
+    xp = ops(f, lens.hiatus_mm, tilt_deg, distance_mm)
+    cos = xp.cos(xp.radians(tilt_deg))
+    g = f if along == "axis" else f / cos  # the lens equation's focal length along this line
+    with quiet(xp):
+        if distance_from == "sensor":
+            offset = lens.hiatus_mm * (1.0 if along == "axis" else cos)
+            span = distance_mm - offset
+            require("distance_mm", distance_mm, span >= 4.0 * g,
+                    "at least {limit} from the sensor (1:1 along this line)", limit=4.0 * g + offset)
+            image = 2.0 * g / (1.0 + xp.sqrt(xp.maximum(1.0 - 4.0 * g / span, 0.0)))
         else:
-            image = 2.0 * g / (1.0 + math.sqrt(max(1.0 - 4.0 * g / span, 0.0)))
-    else:
-        require("distance_mm", distance_mm, distance_mm > g,
-                "beyond the focal length along this line, {limit}", limit=g)
-        image = g / (1.0 - g / distance_mm)
+            require("distance_mm", distance_mm, distance_mm > g,
+                    "beyond the focal length along this line, {limit}", limit=g)
+            image = g / (1.0 - g / distance_mm)
     return image * cos if along == "axis" else image
 
 
-def tilt_wedge(lens: TiltLens, f_number: float, coc_mm: float, tilt_deg: float, film_mm: float) -> TiltWedge:
-    """The plane of sharp focus and the two limiting planes of the depth-of-field wedge.
+def tilt_wedge(lens: TiltLens, f_number: Any, coc_mm: Any, tilt_deg: Any, film_mm: Any) -> TiltWedge:
+    """The plane of sharp focus and the two limiting planes of the depth-of-field wedge (mm, 1/mm, degrees).
 
     With v the film's distance from H′ and p = f(1 − P)·cos θ, the film is
     w₀ = v − p from the exit pupil, d = P·f/N, and
@@ -145,20 +162,21 @@ def tilt_wedge(lens: TiltLens, f_number: float, coc_mm: float, tilt_deg: float, 
 
     each plane through the hinge line at J = f/sin θ (angle from the film
     atan2(sin θ, f·k)). With θ = 0 they are the ordinary near and far limits.
+    Scalars or arrays (broadcast).
 
     Parameters
     ----------
     lens : TiltLens
-    f_number : float, N > 0
-    coc_mm : float, c > 0, with c < P·f/N
-    tilt_deg : float, |θ| < 90
-    film_mm : float, v > f(1 − P)·cos θ (the film behind the exit pupil)
+    f_number : float or array, N > 0
+    coc_mm : float or array, c > 0, with c < P·f/N
+    tilt_deg : float or array, |θ| < 90
+    film_mm : float or array, v > f(1 − P)·cos θ (the film behind the exit pupil)
 
     References
     ----------
     H. M. Merklinger, "View Camera Focus and Depth of Field, Part II",
     *View Camera*, September/October 1996, pp. 56–58 (the wedge about the
-    hinge line); L. Evens, "View Camera Geometry" (2008); docs/tilt.md.
+    hinge line); L. Evens, "View Camera Geometry" (2008); docs/tilt.md §3.
 
     Examples
     --------
@@ -169,25 +187,27 @@ def tilt_wedge(lens: TiltLens, f_number: float, coc_mm: float, tilt_deg: float, 
     True
     """
     _check(lens, tilt_deg)
-    require("f_number", f_number, f_number > 0 and math.isfinite(f_number), "> 0")
-    require("coc_mm", coc_mm, coc_mm > 0 and math.isfinite(coc_mm), "> 0 mm")
-    f, t = lens.focal_length_mm, math.radians(tilt_deg)
-    cos = math.cos(t)
+    f = lens.focal_length_mm
+    xp = ops(f, lens.pupil_magnification, lens.hiatus_mm, f_number, coc_mm, tilt_deg, film_mm)
+    require("f_number", f_number, xp.isfinite(f_number) & (f_number > 0), "> 0")
+    require("coc_mm", coc_mm, xp.isfinite(coc_mm) & (coc_mm > 0), "> 0 mm")
+    cos = xp.cos(xp.radians(tilt_deg))
     p = lens.exit_pupil_mm * cos
     w0 = film_mm - p
-    require("film_mm", film_mm, w0 > 0 and math.isfinite(film_mm), "behind the exit pupil")
+    require("film_mm", film_mm, xp.isfinite(film_mm) & (w0 > 0), "behind the exit pupil")
     d = lens.pupil_magnification * f / f_number
     require("coc_mm", coc_mm, coc_mm < d, "smaller than the exit pupil, {limit}", limit=d,
             detail="a blur that large would make everything sharp")
     v_near = p + w0 * d / (d - coc_mm)
     v_far = p + w0 * d / (d + coc_mm)
     k_focus, k_near, k_far = (cos / f - 1.0 / v for v in (film_mm, v_near, v_far))
-    return TiltWedge(tilt_deg, hinge_distance_mm(f, tilt_deg), film_mm, k_focus, k_near, k_far,
-                     plane_angle_deg(f, tilt_deg, k_focus), plane_angle_deg(f, tilt_deg, k_near),
+    return TiltWedge(broadcast(tilt_deg, k_near), broadcast(hinge_distance_mm(f, tilt_deg), k_near),
+                     broadcast(film_mm, k_near), broadcast(k_focus, k_near), k_near, k_far,
+                     broadcast(plane_angle_deg(f, tilt_deg, k_focus), k_near), plane_angle_deg(f, tilt_deg, k_near),
                      plane_angle_deg(f, tilt_deg, k_far))
 
 
-def hyperfocal_film(lens: TiltLens, f_number: float, coc_mm: float, tilt_deg: float, along: str = "sight") -> float:
+def hyperfocal_film(lens: TiltLens, f_number: Any, coc_mm: Any, tilt_deg: Any, along: str = "sight") -> Any:
     """Film distance v (from H′, mm) that puts the far limit plane parallel to the line of sight (or the lens axis).
 
     Merklinger's hyperfocal setting of the wedge (``along="sight"``): the far
@@ -195,6 +215,17 @@ def hyperfocal_film(lens: TiltLens, f_number: float, coc_mm: float, tilt_deg: fl
     v_far = f/cos θ; then w₀ = (v_far − p)·(d + c)/d. Along the axis the far
     plane is parallel to the lens axis instead: v_far = f·cos θ. With a thin
     lens the focus is H/cos θ along the line of sight, H = f²/(N·c) + f.
+
+    Parameters
+    ----------
+    lens : TiltLens
+    f_number, coc_mm, tilt_deg : float or array (as :func:`tilt_wedge`)
+    along : ``"sight"`` or ``"axis"``
+
+    References
+    ----------
+    Merklinger, "View Camera Focus and Depth of Field, Part II" (1996): at the
+    hyperfocal distance the wedge extends J either side of the plane of focus.
 
     Examples
     --------
@@ -204,16 +235,17 @@ def hyperfocal_film(lens: TiltLens, f_number: float, coc_mm: float, tilt_deg: fl
     (0.0, 20683.251, 10341.626)
     """
     _check(lens, tilt_deg)
-    f, t = lens.focal_length_mm, math.radians(tilt_deg)
-    cos = math.cos(t)
+    f = lens.focal_length_mm
+    xp = ops(f, f_number, coc_mm, tilt_deg)
+    cos = xp.cos(xp.radians(tilt_deg))
     p = lens.exit_pupil_mm * cos
     d = lens.pupil_magnification * f / f_number
     v_far = f / cos if along == "sight" else f * cos
     return p + (v_far - p) * (d + coc_mm) / d
 
 
-def required_f_number(lens: TiltLens, coc_mm: float, tilt_deg: float, film_mm: float, at_mm: float,
-                      half_depth_mm: float) -> float:
+def required_f_number(lens: TiltLens, coc_mm: Any, tilt_deg: Any, film_mm: Any, at_mm: Any,
+                      half_depth_mm: Any) -> Any:
     """f-number whose wedge spans ±h about the plane of focus at x = D along the line of sight (parallel to the film).
 
     At D the limit planes lie J·D·|k − k_focus| from the plane of focus,
@@ -222,6 +254,13 @@ def required_f_number(lens: TiltLens, coc_mm: float, tilt_deg: float, film_mm: f
     near side 1/v_n = 1/v − h/(J·D), N = P·f·(1 − w₀/w_n)/c; far side
     1/v_f = 1/v + h/(J·D), N = P·f·(w₀/w_f − 1)/c. The larger is returned.
     For the thin lens both sides give N = h·f·v/(J·D·c).
+
+    Parameters
+    ----------
+    lens : TiltLens
+    coc_mm, tilt_deg, film_mm : float or array (as :func:`tilt_wedge`; θ ≠ 0)
+    at_mm : float or array, D > 0 from H along the line of sight
+    half_depth_mm : float or array, h > 0
 
     Raises
     ------
@@ -240,8 +279,9 @@ def required_f_number(lens: TiltLens, coc_mm: float, tilt_deg: float, film_mm: f
     """
     _check(lens, tilt_deg)
     f = lens.focal_length_mm
-    j = abs(hinge_distance_mm(f, tilt_deg))
-    cos = math.cos(math.radians(tilt_deg))
+    xp = ops(f, coc_mm, tilt_deg, film_mm, at_mm, half_depth_mm)
+    j = xp.fabs(hinge_distance_mm(f, tilt_deg))
+    cos = xp.cos(xp.radians(tilt_deg))
     p = lens.exit_pupil_mm * cos
     w0 = film_mm - p
     shift = half_depth_mm / (j * at_mm)
@@ -250,17 +290,24 @@ def required_f_number(lens: TiltLens, coc_mm: float, tilt_deg: float, film_mm: f
     w_near = 1.0 / near_recip - p
     w_far = 1.0 / (1.0 / film_mm + shift) - p
     pf = lens.pupil_magnification * f
-    return max(pf * (1.0 - w0 / w_near), pf * (w0 / w_far - 1.0)) / coc_mm
+    return xp.maximum(pf * (1.0 - w0 / w_near), pf * (w0 / w_far - 1.0)) / coc_mm
 
 
-def optimum_f_number(needed_f_number: float, coc_mm: float, wavelength_nm: float = 550.0,
-                     magnification: float = 0.0, pupil_magnification: float = 1.0) -> tuple[float, float]:
-    """The f-number balancing the wedge's defocus blur against diffraction, and the blur there (mm).
+def optimum_f_number(needed_f_number: Any, coc_mm: Any, wavelength_nm: Any = 550.0,
+                     magnification: Any = 0.0, pupil_magnification: Any = 1.0) -> tuple[Any, Any]:
+    """The f-number balancing the wedge's defocus blur against diffraction, and the total blur there (mm).
 
     At the wedge's edge the defocus blur is c·N₀/N (it scales with the
     aperture: the image points are fixed), the Airy disc 2.44·λ·N·(1 + m/P);
     their quadrature sum is least where the two are equal:
     N = √(c·N₀/(2.44·λ·(1 + m/P))), total blur √2 times either.
+
+    Parameters
+    ----------
+    needed_f_number : float or array, N₀ > 0 (the f-number whose wedge is just right, blur c at its edge)
+    coc_mm : float or array, c > 0
+    wavelength_nm : float or array, λ
+    magnification, pupil_magnification : float or array, m ≥ 0 and P > 0 (working f-number N·(1 + m/P))
 
     References
     ----------
@@ -273,10 +320,11 @@ def optimum_f_number(needed_f_number: float, coc_mm: float, wavelength_nm: float
     >>> round(n, 2), round(blur * 1000, 1)
     (28.63, 54.3)
     """
+    xp = ops(needed_f_number, coc_mm, wavelength_nm, magnification, pupil_magnification)
     require("f_number", needed_f_number, needed_f_number > 0, "> 0")
     airy_per_n = 2.44 * wavelength_nm * 1e-6 * (1.0 + magnification / pupil_magnification)
-    n = math.sqrt(coc_mm * needed_f_number / airy_per_n)
-    return n, math.sqrt(2.0) * airy_per_n * n
+    n = xp.sqrt(coc_mm * needed_f_number / airy_per_n)
+    return n, xp.sqrt(2.0) * airy_per_n * n
 
 
 def sight_to_axis(lens: TiltLens, tilt_deg: float, k: float) -> float:
