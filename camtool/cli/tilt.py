@@ -324,7 +324,11 @@ def _scene(ctx: click.Context, model: str, thick: bool, data: Any, f: float, n: 
     with library_errors(ctx):
         try:
             if points:
-                theta, v0 = _from_points(lens, points, distance_from)
+                try:
+                    theta, v0 = _from_points(lens, points, distance_from)
+                except DomainError as error:
+                    typed = " and ".join(f"{x / 1000:g} m@{h / 1000:g} m" for x, h in points)
+                    raise DomainError("point", typed, error.valid) from None
                 option = "points"
             elif is_angle:
                 theta, v0, option = setting, None, "swing" if ctx.params.get("swing") else "tilt"
@@ -339,6 +343,9 @@ def _scene(ctx: click.Context, model: str, thick: bool, data: Any, f: float, n: 
         if v0 is None and how is not None:
             try:
                 if how == "image":
+                    if focus < f:
+                        raise DomainError("film_mm", focus, "at least the focal length, {limit} (focus at "
+                                          "infinity along the axis)", limit=f)
                     v0 = focus * cos_of(theta)
                 elif how == "distance":
                     v0 = model_lib.film_for_focus(lens, theta, focus, along, distance_from)
