@@ -31,7 +31,7 @@ from camtool.geometry.tilt import (
 )
 from camtool.optics.paraxial import first_order
 from camtool.optics.prescription import prescription_from_mapping
-from camtool.optics.tilted import traced_plane_of_focus
+from camtool.optics.tilted import traced_axial_blur_mm, traced_plane_of_focus
 
 FOOT = 304.8
 DATA = Path(__file__).parent / "data" / "prescriptions"
@@ -304,3 +304,24 @@ def test_thick_tilt_geometry_against_real_rays(name: str, tilt: float) -> None:
         assert traced.focus_deg == pytest.approx(model.focus_deg, abs=0.05)
     assert errors[1] < 1e-4
     assert errors[1] < errors[0] / 8  # ~16 for a quadratic error
+
+
+@pytest.mark.parametrize("name", ["dgauss100", "telephoto127"])
+@pytest.mark.parametrize("n", [22.0, 32.0])
+def test_wedge_limits_blur_c_by_real_rays(name: str, n: float) -> None:
+    """On the tilted lens's axis, real rays through the stop's edge blur the near and far limits of the
+    thick model's wedge by c across the tilt (their mean: the spherical aberration's focus shift cancels to
+    first order); with the pupils put at the lens (P = 1) they do not: the pupils are what place the wedge."""
+    rx = _shared(name)
+    fo = first_order(rx)
+    c, tilt = 0.03, 4.0
+    errors = {}
+    for p in (fo.pupil_magnification, 1.0):
+        lens = TiltLens(fo.efl_mm, p, fo.hiatus_mm)
+        v = film_for_focus(lens, tilt, 600.0, "axis", "sensor")
+        w = tilt_wedge(lens, n, c, tilt, v)
+        blurs = [traced_axial_blur_mm(rx, tilt, v, 1.0 / axis_reciprocal(fo.efl_mm, tilt, k), n)
+                 for k in (w.k_near, w.k_far)]
+        errors[p] = abs((blurs[0] + blurs[1]) / 2 / c - 1)
+    assert errors[fo.pupil_magnification] < 0.003
+    assert errors[1.0] > 0.02

@@ -33,7 +33,7 @@ import numpy as np
 from camtool.optics.prescription import Prescription
 from camtool.optics.tracer import RayTraceError, RealRayTracer, real_tracer
 
-__all__ = ["TracedPlane", "traced_plane_of_focus"]
+__all__ = ["TracedPlane", "traced_axial_blur_mm", "traced_plane_of_focus"]
 
 _FAN = 1e-3  # half-separation of the two neighbour rays in the entrance pupil, as a fraction of f
 _ITERATIONS = 60
@@ -198,3 +198,37 @@ def _from_film(a: float, b: float, tilt_deg: float) -> float:
         dx, dy = -dx, -dy
     angle = math.degrees(math.atan2(dx, -dy))
     return angle - 180.0 if tilt_deg < 0 and angle > 0 else angle
+
+
+def traced_axial_blur_mm(prescription: Prescription, tilt_deg: float, film_mm: float, axis_distance_mm: float,
+                         f_number: float) -> float:
+    """Blur width (mm) across the tilt, on the tilted film, of a point on the lens axis, by real rays.
+
+    The point lies ``axis_distance_mm`` in front of H on the tilted lens axis
+    (``inf`` allowed); the film is ``film_mm`` behind H′, perpendicular,
+    so it crosses the axis film/cos θ behind H′. By the lens's symmetry the
+    rays through the stop's edge in the plane across the tilt (sagittal)
+    follow the meridional edge ray's heights, and that plane meets the film
+    in a line parallel to the hinge at the axis crossing: the blur across the
+    tilt is twice the edge ray's height there. This is the quantity the
+    wedge's criterion (docs/tilt.md §3) sets to the CoC.
+
+    Examples
+    --------
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
+    >>> traced_axial_blur_mm(lens, 5.0, 100.0, float("inf"), 8.0) > 0.0
+    True
+    """
+    tracer = real_tracer(prescription)
+    first = tracer.first
+    cos = math.cos(math.radians(tilt_deg))
+    w = 0.0 if math.isinf(axis_distance_mm) else 1.0 / (axis_distance_mm - first.z_h_mm)
+    h = tracer.edge_heights([w], f_number)
+    theta = np.arctan(h * w)
+    y, z, m, l = tracer.trace(h, np.sin(theta), np.cos(theta))
+    z_film = first.z_h_prime_mm + film_mm / cos
+    height = float((y + (z_film - z) * m / l)[0])
+    if not math.isfinite(height):
+        raise RayTraceError("the edge ray of the tilted lens misses a surface")
+    return 2.0 * abs(height)
