@@ -8,9 +8,12 @@ import shlex
 from pathlib import Path
 
 import pytest
+import yaml
 
 from camtool.cli.tilt import tilt as tilt_command
+from camtool.dof.ladder import LensData, depth_of_field
 from camtool.dof.tilt import TiltLens, film_for_focus, tilt_wedge
+from camtool.optics.prescription import prescription_from_mapping
 from tests.cli_helpers import run, run_json
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -128,6 +131,19 @@ def test_model_all_with_a_prescription() -> None:
     assert thick["near_mm"] != thin["near_mm"]
     assert traced["near_mm"] == thick["near_mm"]  # the wedge comes from the thick model
     assert traced["hinge_mm"] != thick["hinge_mm"]  # the real plane across the picture
+
+
+def test_raytrace_wedge_along_the_axis_is_the_raytrace_rung() -> None:
+    rows = run_json("tilt", "-N", "8", "-s", "3m", "--tilt", "4", "--prescription", DGAUSS, "--model", "all",
+                    "--along", "axis", "--distance-from", "lens")
+    thick, traced = rows[1], rows[2]
+    data = LensData(prescription=prescription_from_mapping(yaml.safe_load(Path(DGAUSS).read_text())))
+    f = data.focal_length_mm
+    axis_focus = 1 / (1 / f - math.cos(math.radians(4.0)) / (thick["image_distance_mm"] * math.cos(math.radians(4.0))))
+    limits = depth_of_field("raytrace", f, 8.0, thick["coc_mm"], axis_focus, "lens", lens=data).limits
+    assert traced["near_mm"] == pytest.approx(limits.near_mm, rel=1e-12)
+    assert traced["far_mm"] == pytest.approx(limits.far_mm, rel=1e-12)
+    assert traced["near_mm"] == pytest.approx(thick["near_mm"], rel=0.01)  # a well-corrected lens at f/8
 
 
 def test_retrofocus_model_all_shows_the_difference() -> None:

@@ -255,7 +255,8 @@ def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, h
         if at is not None:
             parts.append("above/below: the wedge either side of the plane of focus, parallel to the film")
         if any(str(r["model"]) == "raytrace" for r in rows):
-            parts.append("raytrace: plane of focus by real rays across the picture's height, wedge from thick")
+            parts.append("raytrace: film at the real focus, plane of focus by real rays across the picture's height, "
+                         + ("wedge along the axis by real rays" if along == "axis" else "wedge from thick"))
         note = " · ".join(parts) + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from)
     return Output(rows, columns, KEYS, note)
 
@@ -320,7 +321,6 @@ def _scene(ctx: click.Context, model: str, thick: bool, data: Any, f: float, n: 
 
     lens = _tilt_lens(data, f, thick)
     along, distance_from = conventions["along"], conventions["distance_from"]
-    cos_of = _cos
     with library_errors(ctx):
         try:
             if points:
@@ -346,12 +346,11 @@ def _scene(ctx: click.Context, model: str, thick: bool, data: Any, f: float, n: 
                     if focus < f:
                         raise DomainError("film_mm", focus, "at least the focal length, {limit} (focus at "
                                           "infinity along the axis)", limit=f)
-                    v0 = focus * cos_of(theta)
+                    v0 = focus * _cos(theta)
                 elif how == "distance":
                     v0 = model_lib.film_for_focus(lens, theta, focus, along, distance_from)
                 elif how == "hyperfocal":
-                    n_for = n if math.isfinite(n) else None
-                    if n_for is None:
+                    if not math.isfinite(n):
                         raise click.UsageError("--hyperfocal needs -N", ctx)
                     v0 = model_lib.hyperfocal_film(lens, n, c, theta, along)
             except DomainError as error:
@@ -522,20 +521,32 @@ def _distance_at(f: float, theta: float, k: float, v0: float, lens: Any, along: 
 
 def _traced(ctx: click.Context, row: dict[str, Any], data: Any, lens: Any, theta: float, v0: float, sensor: Any,
             conventions: dict[str, str]) -> None:
-    """Replace the plane of focus by the real rays' (across the picture's height), keeping the thick wedge."""
+    """Real rays: the film at the real best focus of the point where the plane of focus crosses the lens axis;
+    the plane of focus through the picture's top and bottom edges; the wedge along the axis by the raytrace rung."""
+    from camtool.dof.ladder import depth_of_field
+    from camtool.dof.realray import real_focus
     from camtool.optics.tilted import traced_plane_of_focus
     from camtool.optics.tracer import RayTraceError
 
     f = lens.focal_length_mm
     cos = _cos(theta)
-    k_model = cos / f - 1.0 / v0
-    half_height = sensor.height_mm / 2.0
-    field = math.degrees(math.atan(half_height / v0))
-    try:
-        traced = traced_plane_of_focus(data.prescription, theta, v0, k_model, field_deg=field)
-    except RayTraceError as error:
-        raise click.ClickException(str(error)) from None
+    n, c = row["f_number"], row["coc_mm"]
+    z_hp = data.first_order.z_h_prime_mm
+    axis_focus = 1.0 / (1.0 / f - cos / v0) if v0 > f * cos else math.inf
     sensor_plane = conventions["distance_from"] == "sensor"
+    try:
+        if n is not None:
+            v0 = (real_focus(data.prescription, n, axis_focus, "lens").film_z_mm - z_hp) * cos
+        k_model = cos / f - 1.0 / v0
+        field = math.degrees(math.atan(sensor.height_mm / 2.0 / v0))
+        traced = traced_plane_of_focus(data.prescription, theta, v0, k_model, field_deg=field)
+        if n is not None and conventions["along"] == "axis":
+            limits = depth_of_field("raytrace", f, n, c, axis_focus, "lens", lens=data).limits
+            offset = (v0 / cos + lens.hiatus_mm) if sensor_plane else 0.0
+            row["near_mm"], row["far_mm"] = limits.near_mm + offset, limits.far_mm + offset
+    except (RayTraceError, DomainError) as error:
+        raise click.ClickException(str(error)) from None
+    row["image_distance_mm"] = v0 / cos
     row["focus_mm"] = _traced_distance(traced, f, theta, v0, lens, conventions["along"], sensor_plane)
     phi = traced.focus_deg
     row["focus_plane_deg"] = {"film": phi, "lens": phi - theta, "horizon": 90.0 - phi}[conventions["angles_from"]]

@@ -232,3 +232,4 @@ def traced_axial_blur_mm(prescription: Prescription, tilt_deg: float, film_mm: f
     if not math.isfinite(height):
         raise RayTraceError("the edge ray of the tilted lens misses a surface")
     return 2.0 * abs(height)
+
