@@ -544,8 +544,10 @@ def _traced(ctx: click.Context, row: dict[str, Any], data: Any, lens: Any, theta
             limits = depth_of_field("raytrace", f, n, c, axis_focus, "lens", lens=data).limits
             offset = (v0 / cos + lens.hiatus_mm) if sensor_plane else 0.0
             row["near_mm"], row["far_mm"] = limits.near_mm + offset, limits.far_mm + offset
-    except (RayTraceError, DomainError) as error:
+    except RayTraceError as error:
         raise click.ClickException(str(error)) from None
+    except DomainError as error:
+        _raise(ctx, error)
     row["image_distance_mm"] = v0 / cos
     row["focus_mm"] = _traced_distance(traced, f, theta, v0, lens, conventions["along"], sensor_plane)
     phi = traced.focus_deg
