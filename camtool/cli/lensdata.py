@@ -190,7 +190,7 @@ def ladder_errors(ctx: click.Context) -> Any:
 
             raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param_named(ctx, name)) from None
         except ValueError as error:
-            raytrace = sys.modules.get("camtool.optics.raytrace")  # numpy only where a ray trace ran
+            raytrace = sys.modules.get("camtool.optics.tracer")  # numpy only where a ray trace ran
             if raytrace is not None and isinstance(error, raytrace.RayTraceError):
                 raise click.ClickException(str(error)) from None
             raise
