@@ -26,6 +26,7 @@ from camtool.presets.schema import (
     KINDS,
     REFERENCES,
     Camera,
+    Film,
     Lens,
     Prescription,
     Preset,
@@ -150,6 +151,10 @@ class Database:
     def scene(self, name: str) -> Scene:
         """A named shot, its camera, sensor and lens resolved."""
         return self.get("scene", name)  # type: ignore[return-value]
+
+    def film(self, name: str) -> Film:
+        """A film's reciprocity data by name (the ``films`` kind of preset files)."""
+        return self.get("film", name)  # type: ignore[return-value]
 
     def names(self, kind: str) -> list[str]:
         """The ids of every preset of ``kind`` in effect, sorted (for listings and shell completion)."""
@@ -320,7 +325,14 @@ def _build_scene(db: Database, entry: _Entry) -> Scene:
                  **_common(entry))
 
 
+def _build_film(db: Database, entry: _Entry) -> Film:
+    r = entry.record
+    return Film(r["id"], r["name"], r.get("p"), r.get("threshold_s"), r.get("points", ()), r.get("valid_to_s"),
+                **_common(entry))
+
+
 _BUILDERS = {
+    "film": _build_film,
     "sensor": _build_sensor,
     "camera": _build_camera,
     "lens": _build_lens,

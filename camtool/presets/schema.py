@@ -17,11 +17,11 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-KINDS = ("sensor", "camera", "lens", "prescription", "scene")
+KINDS = ("sensor", "camera", "lens", "prescription", "scene", "film")
 """The kinds of preset, in the order they are listed."""
 
 SECTIONS = {"sensors": "sensor", "cameras": "camera", "lenses": "lens", "prescriptions": "prescription",
-            "scenes": "scene"}
+            "scenes": "scene", "films": "film"}
 """Top-level keys of a preset file and the kind of the entries under each."""
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
@@ -297,6 +297,48 @@ def surfaces(value: Any) -> list[Any]:
     return value
 
 
+def reciprocity_exponent(value: Any) -> float:
+    """A Schwarzschild exponent p for t_c = t_m^p: a plain number from 1 to 3.
+
+    >>> reciprocity_exponent(1.31)
+    1.31
+    """
+    number = _real(value)
+    if not 1.0 <= number <= 3.0:
+        raise Bad(f"must be from 1 to 3, got {value!r}")
+    return number
+
+
+def film_points(value: Any) -> tuple[tuple[float, Any], ...]:
+    """A film's published reciprocity table: [metered s, adjusted s] or [metered s, "+1/3 stops"] pairs.
+
+    Metered times increase; an adjusted time is at least the metered one; a
+    correction is written ``+N stops`` (N a number or a fraction).
+
+    >>> film_points([[1, 2], [10, "+2 stops"]])
+    ((1.0, 2.0), (10.0, '+2 stops'))
+    """
+    if not isinstance(value, (list, tuple)) or not value:
+        raise Bad(f"expected a list of [metered s, adjusted s or '+N stops'] pairs, got {show(value)}")
+    out: list[tuple[float, Any]] = []
+    for pair in value:
+        if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+            raise Bad(f"each point is [metered s, adjusted s or '+N stops'], got {show(pair)}")
+        metered = positive(pair[0])
+        given = pair[1]
+        if isinstance(given, str):
+            if not re.fullmatch(r"\s*\+?\d+(?:\.\d+)?(?:\s*/\s*\d+)?\s*stops?\s*", given):
+                raise Bad(f"a correction is written '+1/3 stops' or '+1 stops', got {show(given)}")
+        elif positive(given) < metered:
+            raise Bad(f"the adjusted time {given!r} s is shorter than the metered {metered:g} s")
+        else:
+            given = float(given)
+        if out and metered <= out[-1][0]:
+            raise Bad(f"metered times must increase ({metered:g} s after {out[-1][0]:g} s)")
+        out.append((metered, given))
+    return tuple(out)
+
+
 # --- the keys of each kind ------------------------------------------------------------------
 
 _COMMON: dict[str, Callable[[Any], Any]] = {
@@ -384,6 +426,13 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "coc": _length_with_default("mm", allow_inf=False),
         "coc_mm": positive_mm,
     },
+    "film": {
+        **_COMMON,
+        "p": reciprocity_exponent,
+        "threshold_s": positive,
+        "points": film_points,
+        "valid_to_s": positive,
+    },
 }
 
 REQUIRED = {
@@ -392,6 +441,7 @@ REQUIRED = {
     "lens": ("id",),
     "prescription": ("id", "surfaces"),
     "scene": ("id",),
+    "film": ("id",),
 }
 
 REFERENCES = {
@@ -543,11 +593,20 @@ def optics_mapping(record: Mapping[str, Any]) -> dict[str, Any]:
     return {key: value for key, value in record.items() if not str(key).startswith("_")}
 
 
+def _check_film(record: dict[str, Any]) -> list[tuple[str, str]]:
+    if ("p" in record) == ("points" in record):
+        return [("p", "give p (an exponent) or points (a published table), one of them")]
+    if "points" in record and "threshold_s" in record:
+        return [("threshold_s", "applies to p; a table starts where its first point does")]
+    return []
+
+
 _CROSS_CHECKS: dict[str, Callable[[dict[str, Any]], list[tuple[str, str]]]] = {
     "camera": _check_camera,
     "lens": _check_lens,
     "prescription": _check_prescription,
     "scene": _check_scene,
+    "film": _check_film,
 }
 
 
@@ -761,3 +820,44 @@ class Scene:
 
 
 Preset = Sensor | Camera | Lens | Prescription | Scene
+
+
+@dataclass(frozen=True)
+class Film:
+    """A film's reciprocity data from a preset file: an exponent ``p`` or a table ``points``.
+
+    :meth:`reciprocity` gives the :class:`camtool.exposure.reciprocity.Film`
+    the exposure calculator uses.
+
+    >>> Film("my-film", "My film", p=1.4).reciprocity().p
+    1.4
+    """
+
+    id: str
+    name: str
+    p: float | None = None
+    threshold_s: float | None = None
+    points: tuple[tuple[float, Any], ...] = ()
+    valid_to_s: float | None = None
+    aliases: tuple[str, ...] = ()
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "film"
+
+    def reciprocity(self) -> Any:
+        """This film as the exposure calculator's film (exponent or interpolated table)."""
+        from camtool.exposure.reciprocity import film_from_entry
+
+        entry: dict[str, Any] = {"id": self.id, "name": self.name, "aliases": list(self.aliases),
+                                 "source": self.source or f"preset file {self.origin}"}
+        if self.p is not None:
+            entry["p"] = self.p
+            entry["threshold_s"] = 1.0 if self.threshold_s is None else self.threshold_s
+        if self.points:
+            entry["points"] = [list(point) for point in self.points]
+        if self.valid_to_s is not None:
+            entry["valid_to_s"] = self.valid_to_s
+        return film_from_entry(entry)
