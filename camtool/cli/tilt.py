@@ -357,8 +357,8 @@ def _scene(ctx: click.Context, model: str, thick: bool, data: Any, f: float, n: 
                 _raise(ctx, error)
         row: dict[str, Any] = {"model": model, "focal_length_mm": f, "f_number": n if math.isfinite(n) else None,
                                "coc_mm": c, "tilt_deg": theta, **conventions}
-        j = abs(_hinge_from(lens, theta, conventions["hinge_from"]))
-        row["hinge_mm"] = j
+        # a hinge given is reported as given (not through asin and back)
+        row["hinge_mm"] = setting if option == "hinge" else abs(_hinge_from(lens, theta, conventions["hinge_from"]))
         for key in ("image_distance_mm", "focus_mm", "near_mm", "far_mm", "focus_plane_deg", "near_plane_deg",
                     "far_plane_deg", "wedge_deg", "at_mm", "above_mm", "below_mm", "across_mm", "hyperfocal_mm",
                     "hyperfocal_near_mm", "half_depth_mm", "f_number_needed", "f_number_optimum",
