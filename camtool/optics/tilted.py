@@ -224,9 +224,11 @@ def traced_axial_blur_mm(prescription: Prescription, tilt_deg: float, film_mm: f
     first = tracer.first
     cos = math.cos(math.radians(tilt_deg))
     w = 0.0 if math.isinf(axis_distance_mm) else 1.0 / (axis_distance_mm - first.z_h_mm)
-    h = tracer.edge_heights([w], f_number)
-    theta = np.arctan(h * w)
-    y, z, m, l = tracer.trace(h, np.sin(theta), np.cos(theta))
+    v = tracer.pupil_vergence([w])  # entrance-pupil vergence
+    aim = tracer.aims(v, f_number)  # where the edge ray crosses the entrance-pupil plane
+    slope = aim * v
+    l_start = 1.0 / np.sqrt(1.0 + slope * slope)
+    y, z, m, l = tracer.trace(aim * (1.0 - v * first.z_e_mm), slope * l_start, l_start)
     z_film = first.z_h_prime_mm + film_mm / cos
     height = float((y + (z_film - z) * m / l)[0])
     if not math.isfinite(height):
