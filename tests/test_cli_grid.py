@@ -153,16 +153,16 @@ def test_only_a_table_has_a_limit() -> None:
 
 
 def test_an_error_in_a_later_chunk_ends_the_run_after_the_rows_before_it(monkeypatch: pytest.MonkeyPatch) -> None:
-    # at f/64 the Airy disc (2.44 λN = 0.086 mm at 550 nm) fills the 0.03 mm circle: only the last chunk fails
-    args = ["dof", "-f", "50", "-N", "2.8,4,64", "-s", "3,5", "--coc", "0.03", "--diffraction", "--format", "json"]
+    # 0.1 m from the sensor is closer than a 50 mm lens focuses (4f = 200 mm): with chunks of two rows the
+    # first chunk, (f/2.8, 5 m) and (f/2.8, 3 m), is written before the second one fails
+    args = ["dof", "-f", "50", "-N", "2.8,4", "-s", "5,3,0.1", "--coc", "0.03", "--format", "json"]
     whole = run(*args)
-    assert whole.exit_code == 2 and whole.stdout == "" and "Airy disc" in whole.stderr
+    assert whole.exit_code == 2 and whole.stdout == "" and "closest focus" in whole.stderr
     monkeypatch.setattr(grid, "CHUNK", 2)
     result = run(*args)
     assert result.exit_code == 2 and result.stderr == whole.stderr
     rows = json.loads(result.stdout)  # still a complete JSON array
-    assert [(r["f_number"], r["distance_mm"]) for r in rows] == [(2.8, 3000.0), (2.8, 5000.0), (4.0, 3000.0),
-                                                                 (4.0, 5000.0)]
+    assert [(r["f_number"], r["distance_mm"]) for r in rows] == [(2.8, 5000.0), (2.8, 3000.0)]
 
 
 def test_a_grid_beyond_64_bit_row_numbers_is_a_usage_error() -> None:

@@ -24,6 +24,7 @@ COMMANDS = {
     "focus": "camtool.cli.focus",
     "dof": "camtool.cli.dof",
     "hyperfocal": "camtool.cli.hyperfocal",
+    "tilt": "camtool.cli.tilt",
     "compose": "camtool.cli.compose",
     "exposure": "camtool.cli.exposure",
     "stars": "camtool.cli.stars",
@@ -32,6 +33,7 @@ COMMANDS = {
     "presets": "camtool.cli.presets",
     "completion": "camtool.cli.completion",
     "exif": "camtool.cli.exif",
+    "chart": "camtool.cli.chart",
 }
 
 
