@@ -16,6 +16,7 @@ from typing import Any
 import click
 
 from camtool import __version__
+from camtool.core.errors import FileError
 
 COMMANDS = {
     "fov": "camtool.cli.fov",
@@ -68,6 +69,9 @@ class CamtoolGroup(click.Group):
         except click.ClickException as error:
             click.echo(f"Error: {error.format_message()}", err=True)
             sys.exit(error.exit_code)
+        except FileError as error:  # a file found wrong only when a preset is used
+            click.echo(f"Error: {error}", err=True)
+            sys.exit(1)
         except BrokenPipeError:
             _quiet_broken_pipe()
             sys.exit(0)
