@@ -90,11 +90,14 @@ def _quiet_broken_pipe() -> None:
 def cli() -> None:
     """Depth of field, field of view, focusing and exposure for photographers and shell scripts.
 
-    Lengths take units (50mm, 3.5cm, 3m, 10ft, 6in, inf); a bare number is
-    millimetres for focal lengths, CoC and sensor sizes, and metres for
-    subject distances. Distances are measured from the sensor plane unless
-    --distance-from lens is given. Every command prints a table, or JSON/CSV
-    with --format (or CAMTOOL_FORMAT).
+    Every command prints a table, or JSON/CSV with --format (or
+    CAMTOOL_FORMAT). Run camtool COMMAND --help for a command's options and
+    examples; man camtool describes units, exit codes and the environment.
+
+    \b
+    Examples:
+      camtool dof -f 50 -N 8 -s 3m
+      camtool hyperfocal -f 24 -N 8,11,16
     """
 
 

@@ -79,7 +79,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
       camtool dof -f 50 -N 8 -s 3m
       camtool dof -f 85 -N 1.8,2.8,4 -s 2 --sensor aps-c --format json
       camtool dof -N 2 -s 1m --prescription dgauss100.yaml --model all
-      camtool dof -f 100 -N 22 -s 0.5 --pupil-mag 0.8 --diffraction
+      camtool dof -f 100 -N 11 -s 0.5 --pupil-mag 0.8 --diffraction
     """
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     if lens is not None and lens.prescription is not None:
