@@ -141,7 +141,7 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
     columns = _Columns(ctx.command)
     writer = _Writer(params["fmt"], params["units"], fields)
     chunk: list[tuple[int, dict[str, Any]]] = []
-    for number, record in _records(source):
+    for number, record in _decoded(ctx, source):
         try:
             chunk.append((number, _parse(ctx, columns, record, number)))
         except BatchRowError as error:
@@ -154,6 +154,17 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
     if chunk:
         writer.write(_compute_chunk(ctx, compute, params, chunk, columns, on_error))
     writer.close()
+
+
+def _decoded(ctx: click.Context, source: IO[str]) -> Iterator[tuple[int, dict[str, str]]]:
+    """The records of ``source``; a file that is not UTF-8 is one line naming --batch and the file, exit 1."""
+    from camtool.cli.options import FileParameterError, param_named
+
+    try:
+        yield from _records(source)
+    except UnicodeDecodeError as error:
+        raise FileParameterError(f"{getattr(source, 'name', '-')}: not UTF-8 text (byte {error.start}); save it as "
+                                 "UTF-8", ctx=ctx, param=param_named(ctx, "batch")) from None
 
 
 def _parse(ctx: click.Context, columns: _Columns, record: dict[str, str], number: int) -> dict[str, Any]:

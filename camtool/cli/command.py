@@ -74,7 +74,7 @@ def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:
     """``--batch FILE`` and ``--on-error``."""
     function = click.option("--on-error", type=click.Choice(["stop", "skip"]), default="stop", show_default=True,
                             help="With --batch: stop at the first bad row (exit 2), or report it and go on.")(function)
-    return click.option("--batch", type=click.File("r", encoding="utf-8"), metavar="FILE",
+    return click.option("--batch", type=click.File("r", encoding="utf-8", lazy=True), metavar="FILE",
                         help="Read one scene per row from FILE (CSV with a header, or JSON lines; - for stdin); "
                              "columns are named like the long options, cells may carry units.")(function)
 

@@ -50,6 +50,14 @@ def open_presets(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:
         db = load_db(extra_files=tuple(preset_files))
     except PresetFileError as error:
         raise _preset_file_error(ctx, error, preset_files) from None
+    if preset_files:  # ids and aliases that clash within the user's files: an error even when no preset is used
+        from camtool.presets.schema import KINDS
+
+        try:
+            for kind in KINDS:
+                db.names(kind)
+        except PresetFileError as error:
+            raise _preset_file_error(ctx, error, preset_files) from None
     ctx.ensure_object(dict)["db"] = db
     return db
 

@@ -115,6 +115,12 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
         blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _given(ctx, p)),
                       None)
         message = domain_message(error, name)
+        listed = error.value.split(",") if isinstance(error.value, str) else []
+        named = [p for p in (param_named(ctx, PARAM_FOR.get(n.strip(), n.strip())) for n in listed)
+                 if isinstance(p, click.Option)]
+        if named:  # options left out together ("exactly one of f_number, shutter_s, iso left to solve")
+            options = " and ".join("/".join(p.opts) for p in named)
+            raise click.UsageError(f"missing {options}: {error.valid}", ctx) from None
         if blamed is not None:
             message = (f"{_typed(ctx, blamed)} gives {_DERIVED.get(error.param, error.param)} of "
                        + message.replace(" is outside the valid range", ", outside the valid range", 1))

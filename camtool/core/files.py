@@ -213,7 +213,7 @@ def check_yaml(source: str, path: str, max_nodes: int = MAX_NODES, max_depth: in
                 add(count, line)
             elif isinstance(event, yaml.ScalarEvent):
                 frame = stack[-1]
-                if event.style is None and len(event.value) > MAX_NUMBER_CHARS and _NUMERIC.match(event.value):
+                if not event.style and len(event.value) > MAX_NUMBER_CHARS and _NUMERIC.match(event.value):
                     raise FileProblem(path, f"YAML error: a number of {len(event.value)} characters "
                                             f"(at most {MAX_NUMBER_CHARS})", line)
                 if frame[2] and frame[3] % 2 == 0 and event.value != "<<":
