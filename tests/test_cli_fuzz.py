@@ -126,13 +126,13 @@ def files(root: Path) -> dict[str, str]:
 
 def commands() -> list[tuple[list[str], click.Command]]:
     """(argv prefix, command) for every leaf command."""
-    ctx = click.Context(cli)
+    ctx = click.Context(cli, help_option_names=["-h", "--help"])  # as the command line makes it (click caches it)
     out = []
     for name in cli.list_commands(ctx):
         command = cli.get_command(ctx, name)
         assert command is not None
         if isinstance(command, click.Group):
-            sub_ctx = click.Context(command, parent=ctx)
+            sub_ctx = click.Context(command, parent=ctx, help_option_names=["-h", "--help"])
             for sub in command.list_commands(sub_ctx):
                 leaf = command.get_command(sub_ctx, sub)
                 assert leaf is not None

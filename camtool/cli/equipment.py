@@ -225,7 +225,31 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
         lens = lookup(ctx, "lens", lens_name, "lens", files)
         ctx.meta[LENS] = lens
         _check_lens(ctx, lens, params)
+    _check_hiatus(ctx, params)
     return params
+
+
+def _check_hiatus(ctx: click.Context, params: dict[str, Any]) -> None:
+    """A typed --hiatus must keep every distance positive, whichever model uses it.
+
+    From the sensor the entrance pupil lies δ + v + f(1 − 1/P) in front of
+    it; the smallest image distance v is f (focus at infinity), so δ must
+    exceed −f(2 − 1/P). Retrofocus and telephoto designs reach several focal
+    lengths, so |δ| is allowed up to :data:`camtool.core.ranges.HIATUS_FOCAL_LENGTHS` × f.
+    """
+    hiatus = params.get("hiatus")
+    if hiatus is None or "focal_length" not in params:
+        return
+    from camtool.core.ranges import HIATUS_FOCAL_LENGTHS
+
+    p = params.get("pupil_mag") or 1.0
+    for f in flatten(params.get("focal_length")):
+        low, high = -f * (2.0 - 1.0 / p), HIATUS_FOCAL_LENGTHS * f
+        if not low < hiatus <= high:
+            raise click.BadParameter(
+                f"{hiatus:g} mm is outside the valid range: more than {low:.4g} mm (the entrance pupil in front of "
+                f"the sensor) and at most {high:.4g} mm ({HIATUS_FOCAL_LENGTHS:g} × focal length) for f = {f:g} mm",
+                ctx=ctx, param=param_named(ctx, "hiatus"))
 
 
 def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:

@@ -127,8 +127,8 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
         raise click.BadParameter(message, ctx=ctx, param=blamed) from None
 
 
-BLAME_ORDER = ("f_number", "magnification", "focal_length", "coc", "coc_rule", "distance", "near", "far",
-               "distance_from", "model")
+BLAME_ORDER = ("magnification", "fill", "subject_size", "f_number", "focal_length", "coc", "coc_rule", "distance",
+               "near", "far", "distance_from", "model")
 """Options blamed, in this order, for a value the library derived from several of them."""
 
 _DERIVED = {"distance_mm": "a distance", "near_mm": "a near limit", "far_mm": "a far limit",
