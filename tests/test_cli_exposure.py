@@ -44,9 +44,9 @@ def test_solve_for_the_missing_setting(args: list[str], solved: str, expected: f
 
 
 def test_nd_bellows_and_reciprocity_match_the_library() -> None:
-    (row,) = run_json("exposure", "--ev100", "12", "-N", "8", "--nd", "ND1000", "--nd", "0.3",
+    (row,) = run_json("exposure", "--ev100", "12", "-N", "8", "--nd", "ND1000", "--nd", "0.3D",
                       "--magnification", "1", "--film", "hp5")
-    loss = parse_nd("ND1000").stops + parse_nd("0.3").stops
+    loss = parse_nd("ND1000").stops + parse_nd("0.3D").stops
     plan = plan_exposure(12.0, 8.0, None, 100.0, loss, 1.0, 1.0, 1.31)
     assert row["nd_stops"] == pytest.approx(loss, rel=1e-15)
     assert row["bellows_stops"] == 2.0
@@ -75,7 +75,7 @@ def test_csv_header() -> None:
 
 
 TABLE = """\
-   N   time    ISO      EV   EV100   nearest stops     
+N      time    ISO      EV   EV100   nearest stops     
 ───────────────────────────────────────────────────────
 f/16   1/100   100   14.64   14.64   f/16 1/100 ISO 100
 f/16   1/200   200   15.64   14.64   f/16 1/200 ISO 200
@@ -96,21 +96,36 @@ def test_table_snapshot() -> None:
          "Error: Invalid value for '--ev100': 26 is outside the valid range: -10 to 25"),
         (["--iso", "0.5", "-N", "8", "-t", "1"],
          "Error: Invalid value for '--iso': 0.5 is outside the valid range: 1 to 1e+07"),
-        (["--ev100", "25", "-N", "0.7"],
-         "Error: Invalid value for '-t' / '--shutter': 1.46031e-08 is outside the valid range: "
-         "1/64000 s to 1000000 s (the shutter time this light level needs)"),
+        (["--ev100", "25", "-N", "0.7"],  # names the option typed, not the derived time
+         "Error: Invalid value for '--ev100': 25 is outside the valid range: a light level these settings can "
+         "expose (time within 1/64000 s to 1000000 s) (it needs a time of 1.46031e-08)"),
         (["--light", "dusk", "-N", "8"],
          "Error: Invalid value for '--light': dusk is outside the valid range: one of snow, sunny, slight-overcast, "
          "overcast, heavy-overcast, shade, sunset, after-sunset, full-moon, bright-street, night-street, office, "
          "home-interior, floodlit-buildings, distant-city-lights, moonlight"),
         (["--ev100", "3", "-N", "8", "--nd", "ND-8"],
-         "Error: Invalid value for '--nd': ND-8 is outside the valid range: stops (3, 1.5stops), "
-         "a factor (ND1000, 8x) or a density (3.0, ND0.9, OD3)"),
+         "Error: Invalid value for '--nd': ND-8 is outside the valid range: a factor (ND1000, 1000x), "
+         "stops (10stops, 10ev) or an optical density (3.0D, OD3)"),
+        (["-N", "8", "-t", "1/60", "--nd", "1000"],  # issue 15: a bare number is refused, naming --nd
+         "Error: Invalid value for '--nd': 1000 is outside the valid range: a factor (ND1000, 1000x), "
+         "stops (10stops, 10ev) or an optical density (3.0D, OD3) (a bare number could be any of the three)"),
+        (["-N", "8", "-t", "2h30"],  # 2h30 was 7230 s
+         "Error: Invalid value for '-t' / '--shutter': '2h30' is ambiguous: give every number its unit "
+         "(2h30m or 2h30s) or a clock (2:30:00 is h:mm:ss)"),
+        (["--ev", "12", "-N", "8", "-t", "1/125"],
+         "Error: --ev is the meter's EV at the ISO in use (default 100), so with -N and -t nothing is left to "
+         "solve: leave out one of them, or give --ev100 to solve the ISO."),
+        (["-N", "8", "-t", "30", "--nd", "20stops"],
+         "Error: Invalid value for '-t' / '--shutter': 30 is outside the valid range: a metered value that keeps "
+         "the time to set after the corrections within 1/64000 s to 1000000 s (it would be 3.14573e+07)"),
+        (["-N", "8", "-t", "1", "--film", "tmax100", "--nd", "10stops"],
+         "Error: Invalid value for '--film': kodak-t-max-100 is outside the valid range: Kodak Professional "
+         "T-MAX 100 has published data for metered times up to 100 s"),
         (["--ev100", "3", "-N", "8", "--film", "fp5"],
          "Error: Invalid value for '--film': fp5 is outside the valid range: a known film "
          "(did you mean ilford-fp4-plus, ilford-hp5-plus?)"),
         (["-N", "8"],
-         "Error: Give a light level (--ev100, --ev, --light, --luminance, --illuminance) or both -N and -t."),
+         "Error: Give a light level (--ev100, --ev, --light, --luminance, --illuminance) or the metered -N and -t."),
         (["--ev100", "3", "--light", "sunny", "-N", "8"], "Error: Give only one light level: --ev100, --light."),
         (["--ev100", "3", "-N", "8", "-t", "1", "--iso", "100"],
          "Error: With a light level, give at most two of -N, -t, --iso: the third is solved."),

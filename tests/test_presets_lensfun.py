@@ -133,3 +133,106 @@ def test_system_lensfun_database(isolated):
     assert len(db.names("lens")) > 500
     assert db.sensor("Canon EOS 5D Mark II").width_mm == pytest.approx(36.0, abs=0.2)
     assert validate_file(result.path) == []
+
+
+# --- hardening: aspect ratios, odd entries, the output file ---------------------------------
+
+HARDENING = FIXTURES / "hardening"
+
+
+def test_body_aspect_comes_from_the_body_not_lenses_shared_with_other_mounts(isolated):
+    # A lens made for both a 3:2 mount and a 4:3 mount carries 4:3 (as lensfun's Sigma DC DN
+    # lenses for Sony E and Micro Four Thirds do); the full-frame body must stay 36 x 24 mm.
+    import_lensfun(dirs=[HARDENING])
+    db = load_db()
+    body = db.sensor("Testmaker E1")
+    assert (round(body.width_mm, 2), round(body.height_mm, 2)) == (36.0, 24.0)
+    assert "3:2" in body.source
+    assert db.sensor("Testmaker F4").aspect_ratio == pytest.approx(4 / 3, abs=1e-3)
+    # A body's own fixed lens still gives its ratio (a square compact, crop 1.53).
+    square = db.sensor("Compactco Square 3")
+    assert square.aspect_ratio == pytest.approx(1.0) and "fixed lens" in square.source
+
+
+def test_an_odd_entry_is_skipped_and_reported_not_fatal(isolated):
+    result = import_lensfun(dirs=[HARDENING])
+    reasons = [reason for reason in result.skipped if "Body Cap 0mm" in reason]
+    assert len(reasons) == 1 and "focal_length_mm" in reasons[0]
+    assert load_db().lens("Testmaker 85mm f/1.8").focal_length_mm == 85
+
+
+def test_lensfun_spelling_finds_the_shipped_lens(isolated):
+    # lensfun writes "Nikon NIKKOR Z 50mm f/1.8 S"; the shipped preset is "NIKKOR Z 50mm f/1.8 S".
+    result = import_lensfun(dirs=[HARDENING])
+    assert result.skipped["lens: already in camtool's shipped presets"] == 1
+    assert load_db().lens("Nikon NIKKOR Z 50mm f/1.8 S").tier == "shipped"
+
+
+def test_new_output_file_is_0644(tmp_path):
+    import os
+
+    out = tmp_path / "new.yaml"
+    old = os.umask(0o077)
+    try:
+        import_lensfun(dirs=[FIXTURES], out=out)
+    finally:
+        os.umask(old)
+    assert out.stat().st_mode & 0o777 == 0o644
+
+
+@pytest.mark.parametrize("mode", [0o600, 0o640, 0o664])
+def test_output_keeps_the_permissions_of_the_file_it_replaces(tmp_path, mode):
+    out = tmp_path / "lf.yaml"
+    out.write_text("sensors: []\n", encoding="utf-8")
+    out.chmod(mode)
+    import_lensfun(dirs=[FIXTURES], out=out)
+    assert out.stat().st_mode & 0o777 == mode and "Testmaker" in out.read_text(encoding="utf-8")
+
+
+def test_output_through_a_symlink_replaces_the_file_it_names(tmp_path):
+    real = tmp_path / "real.yaml"
+    real.write_text("sensors: []\n", encoding="utf-8")
+    link = tmp_path / "link.yaml"
+    link.symlink_to(real)
+    import_lensfun(dirs=[FIXTURES], out=link)
+    assert link.is_symlink() and "Testmaker" in real.read_text(encoding="utf-8")
+
+
+def test_output_that_is_not_a_regular_file_is_refused(tmp_path):
+    import os
+
+    with pytest.raises(LensfunImportError, match="it is a directory"):
+        import_lensfun(dirs=[FIXTURES], out=tmp_path)
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    with pytest.raises(LensfunImportError, match="not a regular file"):
+        import_lensfun(dirs=[FIXTURES], out=fifo)
+    dangling = tmp_path / "dangling.yaml"
+    dangling.symlink_to(tmp_path / "missing" / "x.yaml")
+    with pytest.raises(LensfunImportError, match="missing file"):
+        import_lensfun(dirs=[FIXTURES], out=dangling)
+
+
+def test_cli_refuses_a_bad_out_with_one_line(tmp_path):
+    import os
+
+    from cli_helpers import run
+
+    result = run("presets", "import-lensfun", "--dir", str(FIXTURES), "--out", str(tmp_path))
+    assert result.exit_code == 2 and "is a directory" in result.output
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    result = run("presets", "import-lensfun", "--dir", str(FIXTURES), "--out", str(fifo))
+    assert result.exit_code == 1
+    assert result.output.strip().splitlines() == [f"Error: cannot write {fifo}: it is not a regular file"]
+    readonly = tmp_path / "ro"
+    readonly.mkdir()
+    readonly.chmod(0o500)
+    try:
+        if os.access(readonly, os.W_OK):
+            pytest.skip("running as a user who can write anywhere")
+        result = run("presets", "import-lensfun", "--dir", str(FIXTURES), "--out", str(readonly / "x.yaml"))
+        assert result.exit_code == 1 and len(result.output.strip().splitlines()) == 1
+        assert "cannot write" in result.output
+    finally:
+        readonly.chmod(0o700)

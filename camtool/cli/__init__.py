@@ -25,6 +25,9 @@ COMMANDS = {
     "hyperfocal": "camtool.cli.hyperfocal",
     "compose": "camtool.cli.compose",
     "exposure": "camtool.cli.exposure",
+    "stars": "camtool.cli.stars",
+    "flash": "camtool.cli.flash",
+    "equiv": "camtool.cli.equiv",
     "presets": "camtool.cli.presets",
     "completion": "camtool.cli.completion",
 }

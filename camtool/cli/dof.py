@@ -7,7 +7,7 @@ from typing import Any
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, footer, required, rows_from
+from camtool.cli.common import f_numbers, flatten, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.lensdata import ladder_errors, lens_data, model_options
 from camtool.cli.options import (
@@ -19,12 +19,7 @@ from camtool.cli.options import (
     library_errors,
     sensor_options,
 )
-from camtool.dof.ladder import (
-    CHOICES,
-    compare_models,
-    depth_of_field,
-    prescription_focal_length,
-)
+from camtool.dof.ladder import compare_models, depth_of_field, focal_lengths, model_choices, model_help
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
@@ -54,9 +49,7 @@ ALL_COLUMNS = [
     Column("estimate_shown", "est. error", TEXT),
     Column("time_shown", "time/eval", TEXT),
 ]
-MODEL_HELP = ("approx: H·s/(H±s); thin: exact thin lens; thick: + pupil magnification and hiatus; paraxial: "
-              "first-order trace of --prescription; raytrace: real rays; auto: the cheapest that the scene needs "
-              "within --tolerance; all: every model the inputs allow, side by side, with the time each took.")
+MODEL_HELP = model_help()
 
 
 @camtool_command("dof", keys=ALL_KEYS)
@@ -67,7 +60,7 @@ MODEL_HELP = ("approx: H·s/(H±s); thin: exact thin lens; thick: + pupil magnif
 @sensor_options
 @coc_options
 @distance_plane_option
-@click.option("--model", type=click.Choice(CHOICES), default="auto", show_default=True, help=MODEL_HELP)
+@click.option("--model", type=click.Choice(model_choices()), default="auto", show_default=True, help=MODEL_HELP)
 @model_options
 def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, sensor, crop, coc, coc_rule,
         pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file,
@@ -82,12 +75,8 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
       camtool dof -f 100 -N 11 -s 0.5 --pupil-mag 0.8 --diffraction
     """
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
-    if lens is not None and lens.prescription is not None:
-        with library_errors(ctx):
-            focal = [prescription_focal_length(lens, f) for f in (required(ctx, focal_length, "-f")
-                                                                  if focal_length else [None])]
-    else:
-        focal = required(ctx, focal_length, "-f")
+    with library_errors(ctx):
+        focal = required(ctx, focal_lengths(lens, flatten(focal_length)), "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     distances = required(ctx, distance, "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)

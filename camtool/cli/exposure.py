@@ -1,68 +1,141 @@
-"""``camtool exposure``: exposure value, the missing setting, equivalents, ND, close-up, reciprocity, metering."""
+"""``camtool exposure``: parse, call :func:`camtool.exposure.calculator.work_out`, render."""
 
 from __future__ import annotations
 
-import contextlib
-from collections.abc import Iterator
+import math
 from typing import Any
 
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, rows_from
-from camtool.cli.options import aperture_options, library_errors, param_named
-from camtool.cli.params import NumberType, TimeType, flatten
-from camtool.core.errors import DomainError
-from camtool.render.columns import FNUMBER, NUMBER, TEXT, Column
+from camtool.cli.common import rows_from
+from camtool.cli.options import library_errors, param_named
+from camtool.cli.params import NumberType, TimeType, _ListType, flatten
+from camtool.core.units import UnitError, exact_f_number, parse_f_number, parse_t_stop
+from camtool.render.columns import NUMBER, TEXT, Column
 
-KEYS = ["f_number", "shutter_s", "iso", "ev", "ev100", "solved", "f_number_nominal", "shutter_nominal_s",
-        "iso_nominal", "nd_stops", "bellows_stops", "corrected_shutter_s", "reciprocity_stops"]
-COLUMNS = [
-    Column("f_number", "N", FNUMBER),
+LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
+"""Lux in one foot-candle (one lumen per square foot; the foot is 0.3048 m exactly): 10.7639."""
+
+EQUIVALENT_KEYS = ["f_number", "f_number_nominal", "shutter_s", "shutter_nominal_s", "shutter_exact_s", "ev",
+                   "iso", "ev100"]
+EQUIVALENT_COLUMNS = [
+    Column("aperture", "N", TEXT),
+    Column("time", "time", TEXT),
+    Column("exact", "exact time", TEXT),
+    Column("ev", "EV", NUMBER),
+]
+SETTINGS_COLUMNS = [
+    Column("aperture", "N", TEXT),
     Column("time", "time", TEXT),
     Column("iso_text", "ISO", TEXT),
     Column("ev", "EV", NUMBER),
     Column("ev100", "EV100", NUMBER),
     Column("nominal", "nearest stops", TEXT),
 ]
+METERED_COLUMNS = [
+    Column("metered", "metered", TEXT),
+    Column("nd_stops", "ND", NUMBER),
+    Column("bellows_stops", "bellows", NUMBER),
+    Column("iso_change_stops", "ISO change", NUMBER),
+    Column("aperture_change_stops", "aperture change", NUMBER),
+    Column("reciprocity_stops", "reciprocity", NUMBER),
+    Column("aperture", "N", TEXT),
+    Column("iso_text", "ISO", TEXT),
+    Column("corrected", "time to set", TEXT),
+]
 LOSS_COLUMNS = [Column("nd_stops", "ND stops", NUMBER), Column("bellows_stops", "bellows stops", NUMBER)]
 RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
-EQUIVALENT_KEYS = ["f_number", "f_number_nominal", "shutter_s", "shutter_nominal_s", "shutter_exact_s", "ev",
-                   "iso", "ev100"]
-EQUIVALENT_COLUMNS = [
-    Column("f_number_nominal", "N", FNUMBER),
-    Column("time", "time", TEXT),
-    Column("exact", "exact time", TEXT),
-    Column("ev", "EV", NUMBER),
-]
 SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
 
 
-@contextlib.contextmanager
-def _named_value(ctx: click.Context, name: str) -> Iterator[None]:
-    """A name that is not known (a film, a light level, an ND spelling) as a usage error on its option."""
-    try:
-        yield
-    except DomainError as error:
-        text = f"{error.value} is outside the valid range: {error.valid}"
-        raise click.BadParameter(text + (f" ({error.detail})" if error.detail else ""), ctx=ctx,
-                                 param=param_named(ctx, name)) from None
+class TStop(float):
+    """A T-stop read from -N T2: a float (exposure uses it as the f-number) that remembers it was a T-stop."""
 
 
-def _one(ctx: click.Context, values: dict[str, Any]) -> None:
-    given = [option for option, value in values.items() if value]
-    if len(given) > 1:
-        raise click.UsageError(f"Give only one light level: {', '.join(given)}.", ctx)
+class ApertureType(_ListType):
+    """f-numbers (8, f/8, f8) or T-stops (T2, T/2.8, returned as :class:`TStop`)."""
+
+    name = "f-number"
+    valid = "0.7 to 1024 (written 8, f/8, f8, or a T-stop T2)"
+
+    def parse(self, text: str) -> float:
+        t_stop = parse_t_stop(text)
+        if t_stop is not None:
+            return TStop(t_stop)
+        try:
+            return parse_f_number(text)
+        except UnitError:
+            raise UnitError(f"{text!r} is not an f-number or T-stop (examples: 8, f/8, f8, T2)") from None
+
+    def check(self, value: float) -> bool:
+        return 0.7 <= value <= 1024
+
+
+class IlluminanceType(_ListType):
+    """Illuminance in lux (a bare number, 400lx) or foot-candles (37fc)."""
+
+    name = "illuminance"
+
+    def __init__(self, low: float, high: float) -> None:
+        self.low, self.high = low, high
+        self.valid = f"{low:g} to {high:g} lx (written 400, 400lx or 37fc)"
+
+    def parse(self, text: str) -> float:
+        raw = str(text).strip().lower()
+        scale = 1.0
+        for unit, factor in (("lux", 1.0), ("lx", 1.0), ("fc", LUX_PER_FOOT_CANDLE)):
+            if raw.endswith(unit):
+                raw, scale = raw[: -len(unit)].strip(), factor
+                break
+        try:
+            return float(raw) * scale
+        except ValueError:
+            raise UnitError(f"{text!r} is not an illuminance (examples: 400, 400lx, 37fc)") from None
+
+    def check(self, value: float) -> bool:
+        return self.low <= value <= self.high and math.isfinite(value)
+
+
+def single(ctx: click.Context, values: Any, default: float | None = None) -> Any:
+    """The one value of a list option that must not vary between rows (in a batch too), or ``default``.
+
+    A batch hands every list option over as a column; a column that holds
+    different values in different rows is a usage error.
+    """
+    flat = flatten(values) if values else []
+    if not flat:
+        return default
+    if any(v != flat[0] for v in flat[1:]):
+        raise click.UsageError(f"Give one value, not {', '.join(f'{v:g}' for v in flat)}, for a setting that applies "
+                               "to every row.", ctx)
+    return flat[0]
+
+
+def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
+    """A :class:`SettingsError` as a usage error, each parameter shown as the option the user types."""
+    names = {}
+    for name in error.names:
+        param = param_named(ctx, name)
+        names[name] = param.opts[0] if param is not None and param.opts else name
+    return click.UsageError(error.template.format(**names), ctx)
 
 
 # No --batch: a row of this command is a choice among light sources and solved settings, not a grid point.
 @camtool_command("exposure", batch=False)
-@aperture_options
+@click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
+              help="f-number (8, f/8, f8) or T-stop (T2; exposure uses it as is); a list 2.8,4 gives a row each. "
+                   "Without a light level: the metered f-number.")
+@click.option("--exact-stops", is_flag=True,
+              help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627).")
 @click.option("-t", "--shutter", "shutter_s", type=TimeType(), multiple=True,
-              help="Shutter time: 1/250, 0.5, 2s, 30, 1m30s; a list gives a row each.")
-@click.option("--iso", type=NumberType(1, 1e7), multiple=True, help="ISO speed (1 to 10000000); default 100.")
+              help="Time: 1/250, 0.5, 2s, 90s, 1m30s, 1:30, 2h5m (every number with its unit; 2h30 is refused). "
+                   "Without a light level: the metered time.")
+@click.option("--iso", type=NumberType(1, 1e7), multiple=True,
+              help="ISO speed (1 to 10000000); default 100. Without a light level: the metered ISO.")
 @click.option("--ev100", type=NumberType(-10, 25), multiple=True,
-              help="Scene light level as EV at ISO 100 (-10 to 25); solve for the setting left out.")
+              help="Scene light level as EV at ISO 100 (-10 to 25): solves the setting left out, or lists "
+                   "the equivalents when both -N and -t are left out.")
 @click.option("--ev", type=NumberType(-10, 25), multiple=True,
               help="Light level as the EV a meter reads at the ISO in use (--iso, default 100).")
 @click.option("--light", metavar="NAME",
@@ -70,106 +143,163 @@ def _one(ctx: click.Context, values: dict[str, Any]) -> None:
                    "sunset, home-interior, ... (sunny-16 rule and ANSI exposure tables).")
 @click.option("--luminance", type=NumberType(1e-9, 1e12),
               help="Reflected-light reading: scene luminance in cd/m² (N²/t = L·S/K).")
-@click.option("--illuminance", type=NumberType(1e-9, 1e12),
-              help="Incident-light reading: illuminance in lux (N²/t = E·S/C).")
+@click.option("--illuminance", type=IlluminanceType(1e-9, 1e12),
+              help="Incident-light reading: illuminance in lux (400, 400lx) or foot-candles (37fc); N²/t = E·S/C.")
 @click.option("--meter-k", type=NumberType(1, 100), default="12.5", show_default=True,
-              help="Reflected-light meter calibration constant K.")
-@click.option("--meter-c", type=NumberType(1, 10000), default="250", show_default=True,
-              help="Incident-light meter calibration constant C.")
+              help="Reflected-light meter calibration constant K in cd·s/m² (ISO 2720: 10.6 to 13.4; Minolta 14).")
+@click.option("--meter-c", type=IlluminanceType(1, 10000), default="250", show_default=True,
+              help="Incident-light meter calibration constant C in lx·s (250 flat receptor, 320-340 dome); "
+                   "or in fc·s with fc (23.2fc).")
 @click.option("--nd", multiple=True, metavar="FILTER",
-              help="ND filter, repeatable (stacked): 3 or 3stops (stops), ND1000 or 1000x (factor), "
-                   "3.0 or ND0.9 (optical density: a number with a decimal point).")
+              help="ND filter, repeatable (stacked): a factor ND1000 or 1000x, stops 10stops or 10ev, an optical "
+                   "density 3.0D or OD3 (a bare number is refused: it could be any of the three).")
 @click.option("--magnification", type=NumberType(0, 100), help="Close-up magnification m (1 = 1:1): bellows factor.")
 @click.option("--pupil-mag", "pupil_magnification", type=NumberType(0.01, 100), default="1", show_default=True,
               help="Pupil magnification P of the lens (exit/entrance pupil) for the bellows factor (1 + m/P)².")
-@click.option("--film", metavar="NAME", help="Film for reciprocity failure (hp5, fp4, delta-100, ...).")
+@click.option("--film", metavar="NAME",
+              help="Film for reciprocity failure, from its maker's data (hp5, tmax100, tri-x, velvia50, acros, "
+                   "800t, ...; camtool presets lists them) or a films preset.")
 @click.option("--reciprocity-p", "reciprocity_p", type=NumberType(1, 3),
               help="Schwarzschild exponent p for a film not in the list: t_c = t_m^p beyond 1 s.")
+@click.option("--to-iso", "new_iso", type=NumberType(1, 1e7),
+              help="Move the metered exposure (-N, -t, --iso) to this ISO.")
+@click.option("--to-f-number", "new_f_number", type=ApertureType(),
+              help="Move the metered exposure to this f-number.")
+@click.option("--solve", type=click.Choice(["time", "f-number", "iso"]), default="time", show_default=True,
+              help="With metered settings: the setting to answer (the others stay as metered or moved).")
 @click.option("--step", type=click.Choice(["full", "half", "third"]), default="third", show_default=True,
-              help="Stops the nearest standard values (and --equivalents) use.")
+              help="Stops the nearest standard values (and --equivalents) use; bulb times (> 30 s) are not snapped.")
 @click.option("--equivalents", is_flag=True,
               help="List equivalent f-number and time pairs for the exposure (over --step stops).")
 def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, ev, light, luminance, illuminance,
-             meter_k, meter_c, nd, magnification, pupil_magnification, film, reciprocity_p, step, equivalents,
-             fmt, units, preset_files) -> Output:
-    """Exposure value and the missing setting; equivalents, ND filters, close-up, reciprocity, metering.
+             meter_k, meter_c, nd, magnification, pupil_magnification, film, reciprocity_p, new_iso, new_f_number,
+             solve, step, equivalents, fmt, units, preset_files) -> Output:
+    """Exposure: correct a metered exposure, solve a scene, list equivalents, meter readings.
 
-    EV = log2(N²/t) is the exposure value of the settings; EV100 = EV − log2(ISO/100)
-    is the scene's light level at ISO 100. Give a light level (--ev100, --ev,
-    --light, --luminance or --illuminance) and two of -N, -t, --iso to solve the
-    third (ISO 100 when only -N or -t is given); or give -N and -t to get EV and EV100.
+    Metered settings in, settings out: give what the meter said without the
+    filter (-N, -t, --iso) and the change (--nd, --magnification, --film,
+    --to-iso, --to-f-number): the answer is the time to set (--solve for the
+    f-number or ISO), each correction in stops. Or give a light level (--ev100,
+    --ev, --light, --luminance, --illuminance) and two of -N, -t, --iso to solve
+    the third (ISO 100 when only -N or -t is given); with both -N and -t left
+    out, the equivalent f-number and time pairs. -N and -t alone give their EV
+    and the scene's EV100. EV = log2(N²/t) is the settings'; EV100 = EV −
+    log2(ISO/100) the scene's. Times over 30 s are bulb times, shown exactly.
 
     \b
     Examples:
+      camtool exposure -N 8 -t 1/60 --nd ND1000
+      camtool exposure -N 8 -t 30 --iso 800 --to-iso 100
+      camtool exposure -N 11 -t 4 --film hp5 --nd 6stops
       camtool exposure -N 16 -t 1/125
       camtool exposure --light sunny -N 16 --iso 400
       camtool exposure --ev100 12 -N 8 --nd ND1000 --film hp5
-      camtool exposure --light overcast --iso 100 -N 8 --equivalents --step full
+      camtool exposure --ev100 12 --iso 100 --equivalents
+      camtool exposure --illuminance 37fc -N 4 --iso 400
     """
-    from camtool.exposure import metering
-    from camtool.exposure.equivalents import equivalent_exposures
-    from camtool.exposure.ev import ev100_from_ev
-    from camtool.exposure.light import light_level
-    from camtool.exposure.nd import parse_nd, stack_nd
-    from camtool.exposure.plan import plan_exposure
-    from camtool.exposure.reciprocity import find_film
+    from camtool.exposure.calculator import KEYS, SettingsError, work_out
     from camtool.exposure.timefmt import format_time
 
-    apertures, times, speeds = f_numbers(f_number, exact_stops), flatten(shutter_s), flatten(iso)
-    _one(ctx, {"--ev100": ev100, "--ev": ev, "--light": light, "--luminance": luminance, "--illuminance": illuminance})
-    if film and reciprocity_p:
-        raise click.UsageError("Give --film or --reciprocity-p, not both.", ctx)
-    with _named_value(ctx, "light"):
-        levels = [light_level(light).ev100] if light else flatten(ev100)
-    with _named_value(ctx, "nd"):
-        loss = stack_nd([parse_nd(text) for text in nd]).stops
-    with _named_value(ctx, "film"):
-        p = find_film(film).p if film else (reciprocity_p[0] if reciprocity_p else None)
-    with library_errors(ctx):
-        if luminance:
-            levels = [metering.ev_from_luminance(luminance[0], 100.0, meter_k[0])]
-        elif illuminance:
-            levels = [metering.ev_from_illuminance(illuminance[0], 100.0, meter_c[0])]
-    names = ["f_number", "shutter_s", "iso", "ev100", "ev"]
-    given = {name: values for name, values in zip(names, (apertures, times, speeds, levels, flatten(ev))) if values}
-    if not given.keys() & {"ev100", "ev"} and not ("f_number" in given and "shutter_s" in given):
-        raise click.UsageError("Give a light level (--ev100, --ev, --light, --luminance, --illuminance) "
-                               "or both -N and -t.", ctx)
-    if given.keys() & {"ev100", "ev"} and {"f_number", "shutter_s", "iso"} <= given.keys():
-        raise click.UsageError("With a light level, give at most two of -N, -t, --iso: the third is solved.", ctx)
-    count, columns = combine_params(ctx, *given.values())
+    apertures = flatten(f_number)
+    t_stop = any(isinstance(n, TStop) for n in apertures)
+    if t_stop and not all(isinstance(n, TStop) for n in apertures):
+        raise click.BadParameter("give all f-numbers or all T-stops, not a mix", ctx=ctx,
+                                 param=param_named(ctx, "f_number"))
+    apertures = [float(n) for n in apertures]
+    if exact_stops:
+        apertures = [exact_f_number(n) for n in apertures]
+    film_data = _film(ctx, film, preset_files) if film else None
+    lists = {"f_number": apertures, "shutter_s": flatten(shutter_s), "iso": flatten(iso), "ev100": flatten(ev100),
+             "ev": flatten(ev), "luminance": flatten(luminance), "illuminance": flatten(illuminance)}
+    given = {name: values for name, values in lists.items() if values}
+    count, columns = combine_params(ctx, *given.values()) if given else (1, ())
     value = dict(zip(given, columns))
     with library_errors(ctx):
-        if "ev" in value:
-            value["ev100"] = ev100_from_ev(value.pop("ev"), value.get("iso", 100.0))
-            value.setdefault("iso", 100.0)
-        plan = plan_exposure(value.get("ev100"), value.get("f_number"), value.get("shutter_s"),
-                                 value.get("iso"), loss, magnification[0] if magnification else 0.0,
-                                 pupil_magnification[0], p, step=step)
-    rows = rows_from(count, plan._asdict())
-    if equivalents:
-        if count != 1:
-            raise click.UsageError("--equivalents needs a single exposure (one value per option).", ctx)
-        with library_errors(ctx):
-            table = equivalent_exposures(plan.ev, step=step)
-        rows = rows_from(len(table.f_number), {**table._asdict(), "iso": plan.iso, "ev100": plan.ev100})
+        try:
+            answer = work_out(
+                **value, light=light, meter_k=meter_k[0], meter_c=meter_c[0], nd=nd,
+                magnification=magnification[0] if magnification else 0.0,
+                pupil_magnification=pupil_magnification[0], film=film_data,
+                reciprocity_p=reciprocity_p[0] if reciprocity_p else None,
+                new_iso=new_iso[0] if new_iso else None,
+                new_f_number=float(new_f_number[0]) if new_f_number else None,
+                solve=solve.replace("-", "_"), t_stop=t_stop, step=step, equivalents=equivalents, count=count)
+        except SettingsError as error:
+            raise _settings_error(ctx, error) from None
+    rows = rows_from(answer.rows, answer.values)
+    mark = "T" if t_stop else "f/"
+    if answer.mode == "equivalents":
         for row in rows:
+            row["aperture"] = f"{mark}{row['f_number_nominal']:g}"
             row["time"], row["exact"] = format_time(row["shutter_nominal_s"]), format_time(row["shutter_exact_s"])
-        note = f"EV {plan.ev:.2f} at ISO {plan.iso:g} · {step} stops · exact time before snapping"
+        note = f"{answer.notes[0]} · {step} stops · exact time before snapping"
         return Output(rows, EQUIVALENT_COLUMNS, EQUIVALENT_KEYS, note if fmt == "table" else "")
-    columns_shown = list(COLUMNS)
-    if nd or magnification:
-        columns_shown += LOSS_COLUMNS
-    if p is not None:
-        columns_shown += RECIPROCITY_COLUMNS
     for row in rows:
+        row["aperture"] = f"{mark}{row['f_number']:.3g}"
         row["time"] = format_time(row["shutter_s"])
         row["iso_text"] = f"{row['iso']:.4g}"
-        row["nominal"] = f"f/{row['f_number_nominal']:g} {format_time(row['shutter_nominal_s'])} " \
-                         f"ISO {row['iso_nominal']:g}"
+        row["nominal"] = (f"{mark}{row['f_number_nominal']:g} {format_time(row['shutter_nominal_s'])} "
+                          f"ISO {row['iso_nominal']:g}")
         row["corrected"] = format_time(row["corrected_shutter_s"])
-    note = (f"EV = log2(N²/t) of the settings · EV100 = the scene at ISO 100 · "
-            f"solved: {SOLVED_NAMES[plan.solved]} · nearest {step} stops")
-    if film:
-        note += f" · {find_film(film).name}, p = {p:g}"
-    return Output(rows, columns_shown, KEYS, note if fmt == "table" else "")
+        if answer.mode == "metered":
+            row["metered"] = (f"{mark}{row['metered_f_number']:.3g} {format_time(row['metered_shutter_s'])} "
+                              f"ISO {row['metered_iso']:.4g}")
+    footer = _footer(answer, step, film_data, t_stop)
+    return Output(rows, _columns(answer, rows), KEYS, footer if fmt == "table" else "")
+
+
+def _columns(answer: Any, rows: list[dict[str, Any]]) -> list[Column]:
+    """The table's columns: the corrections that are not zero, then the answer."""
+    if answer.mode == "metered":
+        optional = {"nd_stops", "bellows_stops", "iso_change_stops", "aperture_change_stops", "reciprocity_stops"}
+        return [c for c in METERED_COLUMNS
+                if c.key not in optional or any(abs(float(r[c.key])) > 1e-12 for r in rows)]
+    shown = list(SETTINGS_COLUMNS)
+    if answer.mode == "scene" and any(float(r["nd_stops"]) or float(r["bellows_stops"]) for r in rows):
+        shown += LOSS_COLUMNS
+    if answer.film is not None or any(abs(float(r["reciprocity_stops"])) > 1e-12 for r in rows):
+        shown += RECIPROCITY_COLUMNS
+    return shown
+
+
+def _footer(answer: Any, step: str, film: Any, t_stop: bool) -> str:
+    if answer.mode == "metered":
+        note = (f"metered settings without the filters · answer: {SOLVED_NAMES[answer.solved]} · "
+                "corrections in stops · bulb times (> 30 s) exact")
+    else:
+        note = (f"EV = log2(N²/t) of the settings · EV100 = the scene at ISO 100 · "
+                f"solved: {SOLVED_NAMES[answer.solved]} · nearest {step} stops")
+    if t_stop:
+        note += " · T-stops: exposure uses them as given"
+    if film is not None:
+        model = f"p = {film.p:g}" if film.p is not None else f"published table to {film.points[-1][0]:g} s"
+        note += f" · {film.name}, {model}"
+    return note
+
+
+def _film(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
+    """The film named by --film: a shipped film, else a ``films`` preset; unknown names are refused."""
+    from camtool.core.errors import DomainError
+    from camtool.exposure.reciprocity import find_film
+
+    try:
+        return find_film(name)
+    except DomainError as error:
+        preset = _film_preset(ctx, name, preset_files)
+        if preset is not None:
+            return preset
+        text = f"{error.value} is outside the valid range: {error.valid}"
+        raise click.BadParameter(text + (f" ({error.detail})" if error.detail else ""), ctx=ctx,
+                                 param=param_named(ctx, "film")) from None
+
+
+def _film_preset(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
+    """A film from the user's preset files (kind ``films``), or None when there is none of that name."""
+    from camtool.cli.equipment import open_presets
+    from camtool.presets import PresetNotFound
+
+    db = open_presets(ctx, preset_files)
+    try:
+        return db.film(name).reciprocity()
+    except PresetNotFound:
+        return None

@@ -19,12 +19,7 @@ from camtool.cli.options import (
 )
 from camtool.cli.params import NumberType, flatten
 from camtool.dof.inverse import focus_for_limits, focus_for_limits_at
-from camtool.geometry.thinlens import (
-    closest_focus_mm,
-    focus_for_magnification,
-    focus_geometry,
-    working_f_number,
-)
+from camtool.geometry.thinlens import focus_setting
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
 
 FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
@@ -92,19 +87,16 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     wanted = flatten(distance) or flatten(magnification)
     count, (f, w, *given_n) = combine_params(ctx, focal, wanted, *([apertures] if apertures else []))
     with library_errors(ctx):
-        geometry = (focus_geometry(f, w, distance_from, delta) if distance
-                    else focus_for_magnification(f, w, delta))
-        nearest = closest_focus_mm(f, delta, distance_from=distance_from)
-    plane_distance = geometry.sensor_distance_mm if distance_from == "sensor" else geometry.object_mm
+        setting = focus_setting(f, w if distance else None, None if distance else w, distance_from, delta,
+                                given_n[0] if given_n else None, p)
     values = {
-        "focal_length_mm": f, "distance_mm": plane_distance, "image_distance_mm": geometry.image_mm,
-        "extension_mm": geometry.extension_mm, "magnification": geometry.magnification,
-        "closest_focus_mm": nearest, "distance_from": distance_from,
+        "focal_length_mm": f, "distance_mm": setting.distance_mm, "image_distance_mm": setting.image_distance_mm,
+        "extension_mm": setting.extension_mm, "magnification": setting.magnification,
+        "closest_focus_mm": setting.closest_focus_mm, "distance_from": distance_from,
     }
     keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
     if given_n:
-        n = given_n[0]
-        values.update({"f_number": n, "working_f_number": working_f_number(n, geometry.magnification, p)})
+        values.update({"f_number": given_n[0], "working_f_number": setting.working_f_number})
     else:
         keys = [k for k in keys if k not in ("f_number", "working_f_number")]
         columns = [c for c in columns if c.key != "working_f_number"]

@@ -16,8 +16,7 @@ from camtool.cli.options import (
     sensor_options,
 )
 from camtool.cli.params import flatten
-from camtool.geometry.fov import field_of_view, field_size_mm
-from camtool.geometry.thinlens import focus_geometry
+from camtool.geometry.fov import view
 from camtool.render.columns import ANGLE, NUMBER, SMALL, Column
 
 KEYS = ["focal_length_mm", "horizontal_deg", "vertical_deg", "diagonal_deg", "equivalent_focal_length_mm",
@@ -66,19 +65,18 @@ def fov(ctx: click.Context, focal_length, distance, sensor, crop, distance_from,
     p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
     count, (f, s) = combine_params(ctx, focal, distances or [float("inf")])
     with library_errors(ctx):
-        geometry = focus_geometry(f, s, distance_from, delta)
-        angles = field_of_view(chosen.width_mm, chosen.height_mm, f, geometry.magnification, p)
-        fields = (field_size_mm(chosen.width_mm, geometry.magnification),
-                  field_size_mm(chosen.height_mm, geometry.magnification)) if distances else (None, None)
+        seen = view(chosen.width_mm, chosen.height_mm, f, s if distances else None, distance_from, p, delta,
+                    chosen.crop_factor)
+    angles = seen.angles
     values = {
         "focal_length_mm": f, "horizontal_deg": angles.horizontal_deg, "vertical_deg": angles.vertical_deg,
-        "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": f * chosen.crop_factor,
+        "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": seen.equivalent_focal_length_mm,
         "crop_factor": chosen.crop_factor, "sensor_width_mm": chosen.width_mm, "sensor_height_mm": chosen.height_mm,
     }
     keys, columns = list(KEYS), list(COLUMNS)
     if distances:
-        values.update({"distance_mm": s, "magnification": geometry.magnification, "field_width_mm": fields[0],
-                       "field_height_mm": fields[1], "distance_from": distance_from})
+        values.update({"distance_mm": s, "magnification": seen.magnification, "field_width_mm": seen.field_width_mm,
+                       "field_height_mm": seen.field_height_mm, "distance_from": distance_from})
         keys += DISTANCE_KEYS
         columns += DISTANCE_COLUMNS
     rows = rows_from(count, values)

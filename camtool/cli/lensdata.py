@@ -83,7 +83,7 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
     """The lens data for the ladder, or None when nothing is known beyond the focal length.
 
     ``preset_lens`` is a lens preset (``pupil_magnification``, ``hiatus_mm``
-    and ``prescription``: a mapping, or None); by default the one ``--lens``
+    and ``prescription``: a validated optics prescription, or None); by default the one ``--lens``
     left in ``ctx.meta``. Values on the command line win over the preset's.
     """
     if preset_lens is None:
@@ -93,17 +93,9 @@ def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None,
     prescription = None
     if prescription_file is not None:
         prescription = load_prescription(ctx, prescription_file)
-    elif getattr(preset_lens, "prescription", None) is not None:
-        from camtool.optics.prescription import (
-            PrescriptionError,
-            prescription_from_mapping,
-        )
-
-        try:
-            prescription = prescription_from_mapping(preset_lens.prescription,
-                                                     source=getattr(preset_lens, "prescription_id", None) or "lens")
-        except PrescriptionError as error:
-            raise click.ClickException(str(error)) from None
+    else:
+        # validated once, when the preset was built: camtool.optics.prescription.Prescription
+        prescription = getattr(preset_lens, "prescription", None)
     if p is None and delta is None and prescription is None:
         return None
     return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)
@@ -186,7 +178,7 @@ def ladder_errors(ctx: click.Context) -> Any:
         try:
             yield
         except ModelUnavailable as error:
-            raise click.BadParameter(f"{error.model} is not available here: it needs {error.missing}",
+            raise click.BadParameter(f"{error.model} is not available here: it needs {_missing(ctx, error)}",
                                      ctx=ctx, param=param_named(ctx, "model")) from None
         except DomainError as error:
             name = _LENS_PARAMS.get(error.param)
@@ -196,12 +188,21 @@ def ladder_errors(ctx: click.Context) -> Any:
 
             raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param_named(ctx, name)) from None
         except ValueError as error:
-            raytrace = sys.modules.get("camtool.optics.raytrace")  # numpy only where a ray trace ran
+            raytrace = sys.modules.get("camtool.optics.tracer")  # numpy only where a ray trace ran
             if raytrace is not None and isinstance(error, raytrace.RayTraceError):
                 raise click.ClickException(str(error)) from None
             raise
 
     return translate()
+
+
+def _missing(ctx: click.Context, error: Any) -> str:
+    """What an unavailable model needs, with only the options this command has."""
+    from camtool.dof.ladder import either
+
+    options = {opt for param in ctx.command.params for opt in (*param.opts, *param.secondary_opts)}
+    sources = [text for text in error.supplied_by if any(word in options for word in text.split())]
+    return f"{error.needs} ({either(sources)})" if sources else error.missing
 
 
 _LENS_PARAMS = {"pupil_magnification": "pupil_mag", "hiatus_mm": "hiatus", "wavelength_nm": "wavelength"}

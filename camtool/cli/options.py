@@ -18,6 +18,7 @@ import click
 from camtool.cli.params import FNumberType, LengthType
 from camtool.core import ranges
 from camtool.core.errors import DomainError
+from camtool.core.planes import FOCUS_PLANES
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -63,7 +64,7 @@ aperture_options = stack(
 )
 
 distance_plane_option = click.option(
-    "--distance-from", "distance_from", type=click.Choice(["sensor", "lens"]), default="sensor", show_default=True,
+    "--distance-from", "distance_from", type=click.Choice(FOCUS_PLANES), default="sensor", show_default=True,
     help="Reference plane of all distances: the sensor (focal-plane mark, as lens scales and specs) or the lens.")
 
 def preset_completion(kind: str) -> Callable[[click.Context, click.Parameter, str], list[Any]]:

@@ -54,7 +54,7 @@ def summary(preset: Any) -> str:
         focal = (f"{preset.focal_min_mm:g}–{preset.focal_max_mm:g} mm" if preset.is_zoom
                  else f"{preset.focal_min_mm:g} mm")
         stops = f" f/{preset.f_number_min:g}" if preset.f_number_min else ""
-        return focal + stops + (" (prescription)" if preset.prescription else "")
+        return focal + stops + (" (prescription)" if preset.prescription is not None else "")
     if kind == "prescription":
         return f"{len(preset.surfaces)} surfaces, f = {preset.focal_length_mm or 0:g} mm"
     return preset.name
@@ -98,23 +98,22 @@ def describe(db: Any, preset: Any) -> dict[str, Any]:
             value = getattr(value, "id", value)  # a referenced preset (a camera's sensor, a scene's lens)
         elif isinstance(value, tuple):
             value = list(value)
-        if item.name not in ("data", "prescription"):
+        if item.name not in ("data", "prescription", "optics"):
             fields[item.name] = value
     for derived in ("diagonal_mm", "crop_factor", "aspect_ratio", "pixel_pitch_mm", "megapixels"):
         if hasattr(preset, derived):
             fields[derived] = getattr(preset, derived)
-    mapping = getattr(preset, "data", None) if fields["kind"] == "prescription" else getattr(preset, "prescription", None)
-    if mapping:
-        fields.update(first_order_fields(mapping, getattr(preset, "id", "prescription")))
+    lens = getattr(preset, "optics", None) if fields["kind"] == "prescription" else getattr(preset, "prescription", None)
+    if lens is not None:
+        fields.update(first_order_fields(lens))
     return fields
 
 
-def first_order_fields(mapping: dict[str, Any], source: str) -> dict[str, Any]:
+def first_order_fields(lens: Any) -> dict[str, Any]:
     """The paraxial first-order data of a prescription, as preset fields (positions from the first vertex)."""
     from camtool.optics.paraxial import first_order
-    from camtool.optics.prescription import prescription_from_mapping
 
-    data = first_order(prescription_from_mapping(mapping, source=source))
+    data = first_order(lens)
     return {
         "efl_mm": data.efl_mm, "back_focal_distance_mm": data.bfd_mm,
         "front_principal_plane_mm": data.z_h_mm, "rear_principal_plane_mm": data.z_h_prime_mm,

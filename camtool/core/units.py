@@ -8,6 +8,7 @@ expected, so the CLI can name the option and the value in one line.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 
@@ -95,20 +96,57 @@ def parse_f_number(text: str | float) -> float:
     return float(match.group(1))
 
 
-_TIME_PART = re.compile(rf"({_NUMBER})\s*(h|min|m|s|'|\"|)", re.IGNORECASE)
-_SECONDS_PER = {"h": 3600.0, "min": 60.0, "m": 60.0, "'": 60.0, "s": 1.0, '"': 1.0, "": 1.0}
+_T_STOP = rf"^\s*[tT]\s*/?\s*({_NUMBER})\s*$"
+
+
+def parse_t_stop(text: str | float) -> float | None:
+    """Read a T-stop written ``T2``, ``T/2.8`` or ``t2.8``; ``None`` when ``text`` is not a T-stop.
+
+    A T-stop is the f-number of an ideal lens passing the same light
+    (N/√transmittance): exposure uses it as is.
+
+    >>> parse_t_stop("T2.8"), parse_t_stop("f/2.8")
+    (2.8, None)
+    """
+    if isinstance(text, (int, float)):
+        return None
+    match = re.match(_T_STOP, text)  # compiled on first use (re caches it): no start-up cost
+    return float(match.group(1)) if match else None
+
+
+_TIME_UNITS = {"h": 3600.0, "min": 60.0, "m": 60.0, "'": 60.0, "s": 1.0, '"': 1.0}
+_TIME_RANK = {"h": 0, "min": 1, "m": 1, "'": 1, "s": 2, '"': 2}
+# Patterns of the time parser, compiled on first use (re caches them): commands without times pay nothing.
+_TIME_PART = rf"\s*({_NUMBER})\s*(h|min|m|s|'|\"|)\s*"  # matched on lower case
 _FRACTION = re.compile(rf"^\s*({_NUMBER})\s*/\s*({_NUMBER})\s*s?\s*$")
+_CLOCK = r"^\s*(\d+):(\d\d(?:\.\d*)?)(?::(\d\d(?:\.\d*)?))?\s*$"
+_TIME_EXAMPLES = "examples: 1/250, 0.5, 2s, 90s, 1m30s, 1:30, 2h5m, 1:02:03"
 
 
 def parse_time(text: str | float) -> float:
-    """Parse a shutter time ``1/250``, ``0.004``, ``2s``, ``30``, ``1m30s``, ``1'30"`` or ``2h`` into seconds.
+    """Parse a time ``1/250``, ``0.004``, ``2s``, ``30``, ``90s``, ``1m30s``, ``1:30``, ``2h5m`` into seconds.
+
+    The rules, so that no time is read in a unit the writer did not mean:
+
+    - a bare number is seconds (``30``, ``0.5``); a fraction ``1/250`` is seconds;
+    - otherwise every number carries its unit, ``h``, ``m`` (or ``min``) and
+      ``s``, largest first, each once: ``1h30m``, ``2m 5s``, ``36m 25s``;
+      ``2h30`` is refused (30 minutes or 30 seconds?) with the spellings that
+      say it;
+    - a clock ``m:ss`` or ``h:mm:ss`` (``1:30`` is 90 s, ``1:02:03`` is
+      3723 s), the minutes and seconds after a colon in two digits below 60;
+    - ``1'30"`` (minutes and seconds in primes) is still read.
 
     >>> parse_time("1/250")
     0.004
-    >>> parse_time("1m30s")
-    90.0
-    >>> parse_time("1'30\\"")
-    90.0
+    >>> parse_time("1m30s"), parse_time("90s"), parse_time("1:30")
+    (90.0, 90.0, 90.0)
+    >>> parse_time("36m 25s")
+    2185.0
+    >>> parse_time("2h30")
+    Traceback (most recent call last):
+    ...
+    camtool.core.units.UnitError: '2h30' is ambiguous: give every number its unit (2h30m or 2h30s) or a clock (2:30:00 is h:mm:ss)
     """
     if isinstance(text, (int, float)):
         return float(text)
@@ -118,16 +156,54 @@ def parse_time(text: str | float) -> float:
         if denominator == 0:
             raise UnitError(f"{text!r} divides by zero")
         return float(match.group(1)) / denominator
-    raw = text.strip()
-    total, position = 0.0, 0
-    for part in _TIME_PART.finditer(raw):
-        if raw[position : part.start()].strip():
-            break
-        total += float(part.group(1)) * _SECONDS_PER[part.group(2).lower()]
+    match = re.match(_CLOCK, text)
+    if match:
+        return _clock_seconds(text, match)
+    raw = text.strip().lower()
+    parts: list[tuple[float, str]] = []
+    position = 0
+    while position < len(raw):
+        part = re.compile(_TIME_PART).match(raw, position)
+        if part is None or part.end() == position:
+            raise UnitError(f"{text!r} is not a time ({_TIME_EXAMPLES})")
+        parts.append((float(part.group(1)), part.group(2).lower()))
         position = part.end()
-    if position == 0 or raw[position:].strip():
-        raise UnitError(f"{text!r} is not a time (examples: 1/250, 0.5, 2s, 1m30s, 2h)")
-    return total
+    if not parts:
+        raise UnitError(f"{text!r} is not a time ({_TIME_EXAMPLES})")
+    if len(parts) == 1 and parts[0][1] == "":
+        return parts[0][0]
+    if any(unit == "" for _, unit in parts):
+        raise UnitError(_ambiguous_time(text, parts))
+    ranks = [_TIME_RANK[unit] for _, unit in parts]
+    if any(a >= b for a, b in itertools.pairwise(ranks)):
+        raise UnitError(f"{text!r} is not a time: units go largest first, each once ({_TIME_EXAMPLES})")
+    return sum(value * _TIME_UNITS[unit] for value, unit in parts)
+
+
+def _ambiguous_time(text: str, parts: list[tuple[float, str]]) -> str:
+    """The message for a number without its unit after one with a unit (``2h30``), with the spellings meant."""
+    index = next(i for i, (_, unit) in enumerate(parts) if unit == "")
+    before = parts[index - 1][1] if index else "h"
+    prefix = "".join(f"{v:g}{u}" for v, u in parts[:index])
+    number = f"{parts[index][0]:g}"
+    nearer = {"h": "m", "min": "s", "m": "s", "'": "s"}.get(before, "s")
+    choices = sorted({f"{prefix}{number}{nearer}", f"{prefix}{number}s"}, key=lambda c: c[-1] != "m")
+    clock = ""
+    if len(parts) == 2 and before == "h":
+        clock = f" or a clock ({parts[0][0]:g}:{parts[1][0]:02g}:00 is h:mm:ss)"
+    elif len(parts) == 2 and before in ("m", "min", "'"):
+        clock = f" or a clock ({parts[0][0]:g}:{parts[1][0]:02g} is m:ss)"
+    return f"{text!r} is ambiguous: give every number its unit ({' or '.join(choices)}){clock}"
+
+
+def _clock_seconds(text: str, match: re.Match[str]) -> float:
+    """Seconds of a clock time ``m:ss`` or ``h:mm:ss``."""
+    fields = [float(g) for g in match.groups() if g is not None]
+    if any(field >= 60 for field in fields[1:]):
+        raise UnitError(f"{text!r} is not a clock time: minutes and seconds after a colon are 00 to 59")
+    if len(fields) == 2:
+        return fields[0] * 60.0 + fields[1]
+    return fields[0] * 3600.0 + fields[1] * 60.0 + fields[2]
 
 
 def exact_f_number(nominal: float) -> float:

@@ -47,19 +47,14 @@ import math
 from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops, quiet
+from camtool.dof.rungs import RUNGS, by_name
 
 __all__ = ["EFFECTS", "LEFT_OUT", "Effects", "aberration_share", "depth_error", "estimate_effects", "left_out"]
 
 EFFECTS = ("approximation", "distance_plane", "pupil", "hiatus", "diffraction", "aberrations")
 
-LEFT_OUT = {
-    "approx": ("approximation", "distance_plane", "pupil", "hiatus", "aberrations"),
-    "thin": ("pupil", "hiatus", "aberrations"),
-    "thick": ("aberrations",),
-    "paraxial": ("aberrations",),
-    "raytrace": (),
-}
-"""The geometric effects each rung leaves out (diffraction is left out unless the add-on runs)."""
+LEFT_OUT = {rung.name: rung.left_out for rung in RUNGS}
+"""The geometric effects each rung leaves out (diffraction is left out unless the add-on runs); from the rung records."""
 
 _ABERRATION_MAGNIFICATIONS = (0.0, 0.05, 0.15, 0.35, 0.7, 1.0)
 
@@ -87,7 +82,7 @@ def left_out(effects: Effects, model: str, diffraction_applied: bool) -> Any:
     0.004
     """
     total: Any = 0.0 if diffraction_applied else effects.diffraction
-    for name in LEFT_OUT[model]:
+    for name in by_name()[model].left_out:
         total = total + getattr(effects, name)
     return total
 
@@ -102,6 +97,7 @@ def estimate_effects(
     hiatus_mm: Any = 0.0,
     airy_mm: Any = 0.0,
     prescription: Any = None,
+    geometry: Any = None,
 ) -> Effects:
     """Estimate, before computing, how much each effect changes this scene's depth of field.
 
@@ -117,6 +113,9 @@ def estimate_effects(
         Airy diameter at the focus when diffraction is asked for, else 0.
     prescription : Prescription or None
         Enables the aberration estimate.
+    geometry : FocusGeometry or None
+        ``focus_geometry(f, distance_mm, distance_from, hiatus_mm)`` when the
+        caller has it (the conversion is then not repeated).
 
     Returns
     -------
@@ -137,7 +136,8 @@ def estimate_effects(
 
     f, nc, p, delta = focal_length_mm, f_number * coc_mm, pupil_magnification, hiatus_mm
     xp = ops(f, f_number, coc_mm, distance_mm, p, delta, airy_mm)
-    geometry = focus_geometry(f, distance_mm, distance_from, delta)
+    if geometry is None:
+        geometry = focus_geometry(f, distance_mm, distance_from, delta)
     with quiet(xp):
         u_e = xp.minimum(geometry.object_mm, f * f / nc + f)
         w = u_e - f

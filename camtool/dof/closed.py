@@ -18,10 +18,11 @@ from typing import Any
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
+from camtool.core.planes import FOCUS_PLANES, check_plane
 from camtool.dof.limits import DofLimits
-from camtool.geometry.thinlens import lens_distances
+from camtool.geometry.thinlens import LensPlaneDistances, lens_distances
 
-DISTANCE_PLANES = ("sensor", "lens")
+DISTANCE_PLANES = FOCUS_PLANES
 
 _ULP = 1.1102230246251565e-16  # 2⁻⁵³: half the spacing of floats relative to their value
 
@@ -109,7 +110,8 @@ def approx_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: An
 
 
 def thin_dof(
-    focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor"
+    focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor",
+    focus: LensPlaneDistances | None = None,
 ) -> DofLimits:
     """Exact thin-lens depth of field in mm.
 
@@ -131,6 +133,10 @@ def thin_dof(
     distance_mm : float or array
         Focus distance: from the sensor, ≥ 4f (1:1); from the lens, ≥ 2f. ``inf`` allowed.
     distance_from : ``"sensor"`` or ``"lens"``
+    focus : LensPlaneDistances or None
+        From the sensor: (u, v) of ``distance_mm`` already converted by
+        :func:`camtool.geometry.thinlens.lens_distances` (hiatus 0) and
+        checked, for a caller that has them; None converts here.
 
     References
     ----------
@@ -150,20 +156,18 @@ def thin_dof(
     xp = ops(f, f_number, coc_mm, distance_mm)
     h0 = f * f / (f_number * coc_mm)
     h = h0 + f
-    if distance_from == "sensor":
-        u, v = lens_distances(f, distance_mm)
+    if check_plane(distance_from, DISTANCE_PLANES) == "sensor":
+        u, v = lens_distances(f, distance_mm) if focus is None else focus
         offset = v
         # H + v_H = H + f + N·c while H ≥ 2f. Below 2f (N·c > f, pinholes) every
         # reachable focus lies beyond H, but D = u + v grows again as u drops
         # under 2f, so the hyperfocal distance is the closest focus, 4f.
         hyperfocal = xp.where(h >= 2.0 * f, h + f + f_number * coc_mm, 4.0 * f)
-    elif distance_from == "lens":
+    else:
         require_positive("distance_mm", distance_mm, allow_inf=True)
         require("distance_mm", distance_mm, distance_mm >= 2.0 * f,
                 "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
         u, offset, hyperfocal = distance_mm, 0.0, h
-    else:
-        raise ValueError(f"distance_from must be one of {DISTANCE_PLANES}, not {distance_from!r}")
     with quiet(xp):
         u_minus_f = u - f
         denominator = 1.0 + (h0 - f) / u  # > 1/2 because u ≥ 2f; 1 at infinity

@@ -14,6 +14,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.errors import DomainError, first_bad, require, require_positive
+from camtool.core.planes import FOCUS_PLANES, check_plane
 
 _BISECTIONS = 120
 
@@ -61,13 +62,11 @@ def focus_for_limits(
     require("far_mm", far_mm, far_mm > near_mm, "greater than the near limit {limit}", limit=near_mm)
     f = focal_length_mm
     xp = ops(f, coc_mm, near_mm, far_mm)
-    if distance_from == "lens":
+    if check_plane(distance_from, FOCUS_PLANES) == "lens":
         require("near_mm", near_mm, near_mm >= 2.0 * f,
                 "at least {limit} from the lens (the closest focus, 2 × focal length)", limit=2.0 * f)
         u = _harmonic(xp, near_mm, far_mm)
         return FocusSolution(u, _f_number(xp, f, coc_mm, near_mm, far_mm, u))
-    if distance_from != "sensor":
-        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
     require("near_mm", near_mm, near_mm >= 4.0 * f,
             "at least {limit} from the sensor (the closest focus, 4 × focal length)", limit=4.0 * f)
     lo = near_mm + 0.0 * f

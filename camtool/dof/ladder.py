@@ -14,20 +14,21 @@ from __future__ import annotations
 
 import functools
 import time
-from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops
 from camtool.core.errors import DomainError, first_bad
+from camtool.core.planes import FOCUS_PLANES, check_plane
+from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
-from camtool.dof.closed import approx_dof, thin_dof
 from camtool.dof.limits import DofLimits
-from camtool.geometry.thinlens import focus_geometry
+from camtool.dof.rungs import NO_LENS, LensData
+from camtool.geometry.thinlens import FocusGeometry, focus_geometry
 
 __all__ = [
     "CHOICES",
     "LADDER",
+    "Hyperfocal",
     "LensData",
     "ModelComparison",
     "ModelResult",
@@ -35,71 +36,69 @@ __all__ = [
     "available_models",
     "compare_models",
     "depth_of_field",
+    "focal_lengths",
+    "hyperfocal",
+    "hyperfocal_choices",
+    "model_choices",
     "prescription_focal_length",
 ]
 
-LADDER = ("approx", "thin", "thick", "paraxial", "raytrace")
-"""The rungs, cheapest (and least complete) first."""
+LADDER = rungs.names()
+"""The rungs, cheapest (and least complete) first (the records are :data:`camtool.dof.rungs.RUNGS`)."""
 
 CHOICES = (*LADDER, "auto", "all")
+"""The ``--model`` choices (see :func:`model_choices`)."""
+
+AUTO_HELP = "the cheapest that the scene needs within --tolerance"
+ALL_HELP = "every model the inputs allow, side by side, with the time each took"
+
+
+def model_choices() -> tuple[str, ...]:
+    """The ``--model`` choices of ``camtool dof``: every rung, then ``auto`` and ``all``.
+
+    Examples
+    --------
+    >>> model_choices()
+    ('approx', 'thin', 'thick', 'paraxial', 'raytrace', 'auto', 'all')
+    """
+    return (*rungs.names(), "auto", "all")
+
+
+def model_help() -> str:
+    """The ``--model`` help of ``camtool dof``: one clause per rung, then ``auto`` and ``all``."""
+    clauses = [f"{rung.name}: {rung.help}" for rung in rungs.RUNGS]
+    return "; ".join([*clauses, f"auto: {AUTO_HELP}", f"all: {ALL_HELP}."])
 
 FOCAL_LENGTH_TOLERANCE = 0.01
 """A focal length given with a prescription may differ from its paraxial one by this fraction."""
 
 
-@dataclass(frozen=True)
-class LensData:
-    """What is known about the lens beyond its focal length.
+class ModelUnavailable(ValueError):
+    """The inputs do not allow the model asked for; ``missing`` says what it needs.
 
-    ``pupil_magnification`` P (exit/entrance pupil diameter) and
-    ``hiatus_mm`` δ (separation of the principal planes) for ``thick``;
-    ``prescription`` (a :class:`camtool.optics.prescription.Prescription`)
-    for ``paraxial`` and ``raytrace``, which also supplies f, P and δ where
-    they are not given by hand.
+    ``needs`` names the data alone and ``supplied_by`` the options that give
+    them (the rung's record), for a command to name only the options it has.
     """
 
-    pupil_magnification: float | None = None
-    hiatus_mm: float | None = None
-    prescription: Any = None
-
-    @property
-    def first_order(self) -> Any:
-        """First-order data of the prescription (None without one)."""
-        if self.prescription is None:
-            return None
-        from camtool.optics.paraxial import first_order
-
-        return first_order(self.prescription)
-
-    @property
-    def focal_length_mm(self) -> float | None:
-        """The prescription's paraxial focal length (None without a prescription)."""
-        fo = self.first_order
-        return None if fo is None else fo.efl_mm
-
-    def thick_parameters(self) -> tuple[float, float] | None:
-        """(P, δ) for ``thick``: given by hand, else the prescription's, else P = 1, δ = 0 for the missing one.
-
-        None when neither is known.
-        """
-        fo = self.first_order
-        if self.pupil_magnification is None and self.hiatus_mm is None and fo is None:
-            return None
-        p = self.pupil_magnification if self.pupil_magnification is not None else (fo.pupil_magnification if fo else 1.0)
-        delta = self.hiatus_mm if self.hiatus_mm is not None else (fo.hiatus_mm if fo else 0.0)
-        return p, delta
-
-
-NO_LENS = LensData()
-
-
-class ModelUnavailable(ValueError):
-    """The inputs do not allow the model asked for; ``missing`` says what it needs."""
-
-    def __init__(self, model: str, missing: str) -> None:
+    def __init__(self, model: str, missing: str, needs: str = "", supplied_by: tuple[str, ...] = ()) -> None:
         self.model = model
         self.missing = missing
+        self.needs = needs or missing
+        self.supplied_by = supplied_by
         super().__init__(f"the {model} model needs {missing}")
+
+
+def either(items: tuple[str, ...] | list[str]) -> str:
+    """``a, b, or c``: alternatives as the messages list them.
+
+    Examples
+    --------
+    >>> either(["--pupil-mag", "--hiatus", "a --lens that has them"])
+    '--pupil-mag, --hiatus, or a --lens that has them'
+    >>> either(["--hiatus"])
+    '--hiatus'
+    """
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + ", or " + items[-1]
 
 
 class ModelResult(NamedTuple):
@@ -122,40 +121,6 @@ class ModelComparison(NamedTuple):
     time_per_evaluation_s: float
 
 
-def _approx(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    # The approximation has no notion of the closest focus; the scene still must be reachable.
-    focus_geometry(f, s, plane)
-    return approx_dof(f, n, c, s)
-
-
-def _thin(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    return thin_dof(f, n, c, s, plane)
-
-
-def _thick(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    from camtool.dof.thick import thick_dof
-
-    p, delta = lens.thick_parameters()  # type: ignore[misc]
-    return thick_dof(f, n, c, s, pupil_magnification=p, hiatus_mm=delta, distance_from=plane)
-
-
-def _paraxial(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    from camtool.dof.paraxial import paraxial_dof
-
-    return paraxial_dof(lens.prescription, n, c, s, plane)
-
-
-def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData) -> DofLimits:
-    from camtool.dof.realray import raytrace_dof
-
-    return raytrace_dof(lens.prescription, n, c, s, plane)
-
-
-MODELS: dict[str, Callable[..., DofLimits]] = {
-    "approx": _approx, "thin": _thin, "thick": _thick, "paraxial": _paraxial, "raytrace": _raytrace,
-}
-
-
 def available_models(lens: LensData | None = None) -> tuple[str, ...]:
     """The rungs the lens data allow, cheapest first.
 
@@ -169,26 +134,25 @@ def available_models(lens: LensData | None = None) -> tuple[str, ...]:
     With a prescription and no P or δ by hand, ``thick`` would repeat
     ``paraxial`` (same f, P and δ) and is left out.
     """
-    return _available(lens or NO_LENS)
+    return _available(id(rungs.RUNGS), lens or NO_LENS)
 
 
 @functools.lru_cache(maxsize=64)
-def _available(lens: LensData) -> tuple[str, ...]:
-    # cached: auto asks on every call, and the answer depends only on which data the lens carries
+def _available(ladder: int, lens: LensData) -> tuple[str, ...]:
+    # cached: auto asks on every call, and the answer depends only on the ladder (its identity: a replaced
+    # RUNGS is a new ladder) and on which data the lens carries
     by_hand = lens.pupil_magnification is not None or lens.hiatus_mm is not None
     # with a prescription and no values by hand, thick is paraxial by another name
     skip = "thick" if lens.prescription is not None and not by_hand else ""
-    return tuple(name for name in LADDER if name != skip and _missing(name, lens) is None)
+    return tuple(rung.name for rung in rungs.RUNGS if rung.name != skip and rung.can_run(lens))
 
 
-def _missing(model: str, lens: LensData) -> str | None:
-    """What ``model`` lacks in ``lens`` (None when it can run)."""
-    if model == "thick" and lens.thick_parameters() is None:
-        return ("the lens's pupil magnification or hiatus "
-                "(--pupil-mag, --hiatus, a --lens that has them, or --prescription)")
-    if model in ("paraxial", "raytrace") and lens.prescription is None:
-        return "a lens prescription (--prescription FILE, or a --lens that has one)"
-    return None
+def _unavailable(model: str, lens: LensData) -> ModelUnavailable | None:
+    """The error for ``model`` when ``lens`` lacks what it needs (None when it can run)."""
+    rung = rungs.by_name()[model]
+    if rung.can_run(lens):
+        return None
+    return ModelUnavailable(model, f"{rung.needs} ({either(rung.supplied_by)})", rung.needs, rung.supplied_by)
 
 
 def prescription_focal_length(lens: LensData, focal_length_mm: Any = None) -> Any:
@@ -212,40 +176,142 @@ def prescription_focal_length(lens: LensData, focal_length_mm: Any = None) -> An
     return efl
 
 
+def focal_lengths(lens: LensData | None, given: list[Any]) -> list[Any]:
+    """The focal lengths to compute with: with a prescription its paraxial one, else those ``given`` (mm).
+
+    With a prescription each given focal length must agree with the paraxial
+    one within 1 % (:func:`prescription_focal_length`); none given means the
+    prescription's. Without a prescription ``given`` is returned unchanged
+    (possibly empty: the caller says the focal length is missing).
+
+    Examples
+    --------
+    >>> focal_lengths(None, [50.0, 85.0])
+    [50.0, 85.0]
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = LensData(prescription=prescription_from_mapping(EXAMPLE_SINGLET))
+    >>> [round(f, 3) for f in focal_lengths(lens, [])] == [round(lens.focal_length_mm, 3)]
+    True
+    """
+    if lens is None or lens.prescription is None:
+        return given
+    return [prescription_focal_length(lens, f) for f in (given or [None])]
+
+
+class Hyperfocal(NamedTuple):
+    """The hyperfocal distance and the near limit when focused there (mm, in the plane asked for), and the model."""
+
+    hyperfocal_mm: Any
+    near_mm: Any
+    model: Any
+
+
+def hyperfocal_choices() -> tuple[str, ...]:
+    """The models of ``camtool hyperfocal``: the rungs with a hyperfocal help (closed forms), then ``auto``.
+
+    Examples
+    --------
+    >>> hyperfocal_choices()
+    ('approx', 'thin', 'thick', 'auto')
+    """
+    return (*(rung.name for rung in rungs.RUNGS if rung.hyperfocal_help), "auto")
+
+
+HYPERFOCAL_AUTO_HELP = "thick when that lens data is known, else thin."
+
+
+def hyperfocal_help() -> str:
+    """The ``--model`` help of ``camtool hyperfocal``, one clause per choice."""
+    clauses = [f"{rung.name}: {rung.hyperfocal_help}" for rung in rungs.RUNGS if rung.hyperfocal_help]
+    return "; ".join([*clauses, f"auto: {HYPERFOCAL_AUTO_HELP}"])
+
+
+def hyperfocal(
+    model: str,
+    focal_length_mm: Any,
+    f_number: Any,
+    coc_mm: Any,
+    distance_from: str = "sensor",
+    lens: LensData | None = None,
+) -> Hyperfocal:
+    """Hyperfocal distance H in mm by a closed-form rung, and the near limit when focused at H.
+
+    H in the chosen plane is where the far limit first reaches infinity: the
+    limits of a focus at infinity carry it, and focusing there gives the near
+    limit. ``auto`` is the most complete closed form the lens data allow
+    (``thick`` with a pupil magnification or hiatus other than 1 and 0, else
+    ``thin``): the distance itself is the answer, not a depth of field whose
+    error could be weighed against a tolerance.
+
+    Parameters
+    ----------
+    model : str
+        One of :func:`hyperfocal_choices`.
+    focal_length_mm, f_number, coc_mm : float or array, all > 0
+    distance_from : ``"sensor"`` or ``"lens"``
+    lens : LensData or None
+        Pupil magnification and hiatus (a prescription is not used).
+
+    References
+    ----------
+    Wikipedia, "Hyperfocal distance": H = f²/(N·c) + f; docs/design.md §4.
+
+    Examples
+    --------
+    >>> h = hyperfocal("thin", 50.0, 8.0, 0.03, distance_from="lens")
+    >>> round(h.hyperfocal_mm, 3), round(h.near_mm, 3), h.model
+    (10466.667, 5233.333, 'thin')
+    >>> hyperfocal("auto", 50.0, 8.0, 0.03, lens=LensData(pupil_magnification=1.0)).model
+    'thin'
+    """
+    if model not in hyperfocal_choices():
+        raise ValueError(f"unknown model {model!r}; choose one of {', '.join(hyperfocal_choices())}")
+    known = None if lens is None else lens.thick_parameters()
+    p, delta = known if known is not None else (1.0, 0.0)
+    data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
+    rung = ("thick" if data else "thin") if model == "auto" else model
+    at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data)
+    h = at_infinity.limits.hyperfocal_mm
+    at_h = depth_of_field(rung, focal_length_mm, f_number, coc_mm, h, distance_from, lens=data)
+    return Hyperfocal(h, at_h.limits.near_mm, at_h.model)
+
+
 def _scene_lens(lens: LensData) -> tuple[Any, Any]:
     """(P, δ) the estimates and the working f-number use: known values, else 1 and 0."""
     params = lens.thick_parameters()
     return params if params is not None else (1.0, 0.0)
 
 
-def _usable_coc(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, wavelength_nm: Any) -> tuple[Any, Any]:
+def _focus(f: Any, s: Any, plane: str, lens: LensData) -> rungs.Focus:
+    """The one conversion of the focus distance for a call: checked reachable (1:1 at the closest), thin model's messages.
+
+    From the sensor with the lens's hiatus (0 when unknown); from the lens
+    the hiatus does not move u or v.
+    """
+    from camtool.core.errors import require, require_positive
+
+    if check_plane(plane, FOCUS_PLANES) == "lens":
+        require_positive("distance_mm", s, allow_inf=True)
+        require("distance_mm", s, s >= 2.0 * f,
+                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
+        return rungs.Focus(focus_geometry(f, s, plane), 0.0)
+    delta = _scene_lens(lens)[1]
+    return rungs.Focus(focus_geometry(f, s, plane, delta), delta)
+
+
+def _usable_coc(n: Any, c: Any, focus: rungs.Focus, lens: LensData, wavelength_nm: Any) -> tuple[Any, Any]:
     """(usable CoC √(c² − b_airy²), b_airy) with the working f-number at the focus distance."""
     from camtool.dof.diffraction import airy_diameter_mm, usable_coc_mm
 
-    p, delta = _scene_lens(lens)
-    m = focus_geometry(f, s, plane, delta if plane == "sensor" else 0.0).magnification
+    p = _scene_lens(lens)[0]
+    m = focus.geometry.magnification
     usable = usable_coc_mm(c, n, m, p, wavelength_nm)
     return usable, airy_diameter_mm(n * (1.0 + m / p), wavelength_nm)
 
 
-def _check_focus(f: Any, s: Any, plane: str, lens: LensData) -> None:
-    """The focus distance must be reachable (1:1 at the closest), with the thin model's messages."""
-    from camtool.core.errors import require, require_positive
-    from camtool.geometry.thinlens import lens_distances
-
-    if plane == "lens":
-        require_positive("distance_mm", s, allow_inf=True)
-        require("distance_mm", s, s >= 2.0 * f,
-                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
-    elif plane == "sensor":
-        lens_distances(f, s, _scene_lens(lens)[1])
-    else:
-        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {plane!r}")
-
-
-def _effects(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, airy: Any) -> Effects:
-    p, delta = _scene_lens(lens)
-    return estimate_effects(f, n, c, s, plane, p, delta if plane == "sensor" else 0.0, airy, lens.prescription)
+def _effects(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, airy: Any, focus: rungs.Focus) -> Effects:
+    p = _scene_lens(lens)[0]
+    return estimate_effects(f, n, c, s, plane, p, focus.hiatus_mm, airy, lens.prescription, focus.geometry)
 
 
 def _worst(value: Any) -> float:
@@ -274,8 +340,8 @@ def choose(effects: Effects, models: tuple[str, ...], diffraction: bool, toleran
 
 
 def _run(name: str, applied: bool, f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData,
-         usable: Any) -> DofLimits:
-    return MODELS[name](f, n, usable if applied else c, s, plane, lens)
+         usable: Any, focus: rungs.Focus | None = None) -> DofLimits:
+    return rungs.by_name()[name].run(f, n, usable if applied else c, s, plane, lens, focus)
 
 
 def _label(name: str, applied: bool) -> str:
@@ -352,33 +418,34 @@ def depth_of_field(
     ValueError: unknown model 'bogus'; choose one of approx, thin, thick, paraxial, raytrace, auto
     """
     lens = lens or NO_LENS
-    if model not in (*LADDER, "auto"):
-        raise ValueError(f"unknown model {model!r}; choose one of {', '.join((*LADDER, 'auto'))}")
     if model != "auto":
-        missing = _missing(model, lens)
-        if missing is not None:
-            raise ModelUnavailable(model, missing)
+        if model not in rungs.by_name():
+            raise ValueError(f"unknown model {model!r}; choose one of {', '.join((*rungs.names(), 'auto'))}")
+        unavailable = _unavailable(model, lens)
+        if unavailable is not None:
+            raise unavailable
     f = prescription_focal_length(lens, focal_length_mm)
     from camtool.dof.closed import check_inputs
 
     check_inputs(f, f_number, coc_mm)
-    _check_focus(f, distance_mm, distance_from, lens)
-    usable, airy = _usable_coc(f, f_number, coc_mm, distance_mm, distance_from, lens, wavelength_nm) \
-        if diffraction else (coc_mm, 0.0)
-    effects = _effects(f, f_number, coc_mm, distance_mm, distance_from, lens, airy)
+    focus = _focus(f, distance_mm, distance_from, lens)  # converted once, handed to the estimates and the model
+    usable, airy = _usable_coc(f_number, coc_mm, focus, lens, wavelength_nm) if diffraction else (coc_mm, 0.0)
+    effects = _effects(f, f_number, coc_mm, distance_mm, distance_from, lens, airy, focus)
     if model != "auto":
-        limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
+        limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(model, diffraction), left_out(effects, model, diffraction))
     inputs = (f, f_number, coc_mm, distance_mm, usable)
     if all(isinstance(v, (int, float)) for v in (*inputs, airy)):
         name, applied = choose(effects, available_models(lens), diffraction, tolerance)
-        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable)
+        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
-    return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens)
+    return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
+                      focus)
 
 
 def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tolerance: float,
-               inputs: tuple[Any, ...], airy: Any, plane: str, lens: LensData) -> ModelResult:
+               inputs: tuple[Any, ...], airy: Any, plane: str, lens: LensData,
+               focus: rungs.Focus | None = None) -> ModelResult:
     """``auto`` over arrays: each scene gets its own cheapest sufficient rung, as a single call would.
 
     The scenes are grouped by the rung chosen, each group runs in one
@@ -387,6 +454,8 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     """
     import numpy as np
 
+    if focus is not None:  # the scenes' (u, v) go with them into each group
+        inputs = (*inputs, focus.geometry.object_mm, focus.geometry.image_mm)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (*inputs, airy, *effects)))
     flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in inputs]
     each = Effects(*(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in effects))
@@ -404,8 +473,10 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
             rows = np.nonzero((chosen == index) & (applied == add))[0]
             if rows.size == 0:
                 continue
-            f, n, c, s, usable = (v[rows] for v in flat)
-            limits = _run(name, add, f, n, c, s, plane, lens, usable)
+            f, n, c, s, usable, *uv = (v[rows] for v in flat)
+            part_focus = None if focus is None else rungs.Focus(
+                FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
+            limits = _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
             for out, value in zip(fields, limits):
                 out[rows] = value
             names[rows] = _label(name, add)

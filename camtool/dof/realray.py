@@ -19,6 +19,7 @@ import numpy as np
 
 from camtool.core.arrays import is_scalar
 from camtool.core.errors import DomainError, require_positive
+from camtool.core.planes import check_plane
 from camtool.dof.limits import DofLimits
 from camtool.optics.paraxial import FirstOrder
 from camtool.optics.prescription import Prescription
@@ -33,7 +34,6 @@ from camtool.optics.tracer import (
 
 __all__ = ["NoDepthOfField", "RealFocus", "raytrace_dof", "real_focus"]
 
-_PLANES = ("sensor", "lens", "entrance_pupil")
 _ROOT_RTOL = 1e-12
 
 
@@ -150,8 +150,7 @@ def _check_scene(
     prescription: Prescription, f_number: float, distance_mm: float, distance_from: str, criterion: str
 ) -> None:
     """Validate the scalar inputs of the real-ray functions."""
-    if distance_from not in _PLANES:
-        raise ValueError(f"distance_from must be one of {', '.join(_PLANES)}, not {distance_from!r}")
+    check_plane(distance_from)
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {', '.join(CRITERIA)}, not {criterion!r}")
     require_positive("f_number", f_number, unit="")

@@ -28,12 +28,13 @@ from typing import Any
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
+from camtool.core.planes import PLANES, check_plane
 from camtool.dof.limits import DofLimits
-from camtool.geometry.thinlens import lens_distances
+from camtool.geometry.thinlens import LensPlaneDistances, lens_distances
 
 __all__ = ["DISTANCE_PLANES", "entrance_pupil_offset_mm", "thick_dof", "working_f_number"]
 
-DISTANCE_PLANES = ("sensor", "lens", "entrance_pupil")
+DISTANCE_PLANES = PLANES
 """Planes a distance may be measured from: the sensor (image) plane, the front
 principal plane H (``"lens"``), or the entrance pupil."""
 
@@ -101,8 +102,7 @@ def working_f_number(f_number: Any, magnification: Any, pupil_magnification: Any
 
 def _check(f: Any, n: Any, c: Any, p: Any, hiatus: Any, distance: Any, distance_from: str) -> None:
     """Raise DomainError / ValueError for inputs outside the model's domain."""
-    if distance_from not in DISTANCE_PLANES:
-        raise ValueError(f"distance_from must be one of {', '.join(DISTANCE_PLANES)}, not {distance_from!r}")
+    check_plane(distance_from, DISTANCE_PLANES)
     require_positive("focal_length_mm", f)
     require_positive("f_number", n, unit="")
     require_positive("coc_mm", c)
@@ -112,10 +112,11 @@ def _check(f: Any, n: Any, c: Any, p: Any, hiatus: Any, distance: Any, distance_
     require_positive("distance_mm", distance, allow_inf=True)
 
 
-def _focus(f: Any, distance: Any, hiatus: Any, e: Any, distance_from: str) -> tuple[Any, Any, Any]:
+def _focus(f: Any, distance: Any, hiatus: Any, e: Any, distance_from: str,
+           focus: LensPlaneDistances | None = None) -> tuple[Any, Any, Any]:
     """Object distance u from H, image distance v from H′, and the plane's offset to E (mm)."""
     if distance_from == "sensor":
-        u, v = lens_distances(f, distance, hiatus)
+        u, v = lens_distances(f, distance, hiatus) if focus is None else focus
         to_pupil = v + hiatus + e
         require("hiatus_mm", hiatus, to_pupil > 0, "large enough that the entrance pupil lies in front of the sensor",
                 detail="hiatus + image distance + f(1 − 1/P) must be > 0")
@@ -134,6 +135,7 @@ def thick_dof(
     pupil_magnification: Any = 1.0,
     hiatus_mm: Any = 0.0,
     distance_from: str = "sensor",
+    focus: LensPlaneDistances | None = None,
 ) -> DofLimits:
     """Depth of field of a thick lens with pupil magnification, in mm (the ``thick`` model).
 
@@ -168,6 +170,10 @@ def thick_dof(
         δ = z_H′ − z_H, finite, either sign (0 for a thin lens). From the
         sensor, the entrance pupil must lie in front of the sensor.
     distance_from : ``"sensor"``, ``"lens"`` or ``"entrance_pupil"``
+    focus : LensPlaneDistances or None
+        From the sensor: (u, v) of ``distance_mm`` already converted by
+        :func:`camtool.geometry.thinlens.lens_distances` with this hiatus and
+        checked, for a caller that has them; None converts here.
 
     Returns
     -------
@@ -206,7 +212,7 @@ def thick_dof(
     f, nc, p = focal_length_mm, f_number * coc_mm, pupil_magnification
     xp = ops(f, f_number, coc_mm, p, hiatus_mm, distance_mm)
     e = entrance_pupil_offset_mm(f, p)
-    u, v, to_pupil = _focus(f, distance_mm, hiatus_mm, e, distance_from)
+    u, v, to_pupil = _focus(f, distance_mm, hiatus_mm, e, distance_from, focus)
     with quiet(xp):
         w = u * f / v  # u − f without cancellation
         x = w + f / p

@@ -192,3 +192,46 @@ def solve_exposure(ev100: Any, f_number: Any = None, shutter_s: Any = None, iso:
     else:
         iso = iso_for_ev100(ev100, f_number, shutter_s)
     return Exposure(f_number, shutter_s, iso, exposure_value(f_number, shutter_s), ev100, missing[0])
+
+
+def t_stop(f_number: Any, transmittance: Any) -> Any:
+    """T-stop of a lens: T = N / √τ, the f-number of an ideal lens passing the same light.
+
+    Exposure goes by the T-stop; depth of field and diffraction by the
+    f-number (the geometric ratio f/D).
+
+    Parameters
+    ----------
+    f_number : float or array, > 0
+    transmittance : float or array, 0 < τ ≤ 1 (the fraction of light the lens passes)
+
+    References
+    ----------
+    Wikipedia, "F-number", T-stop (an f/2.0 lens of 75 % transmittance is T2.3);
+    idigitalphoto.com, "T-number" (f/4 at 50 % is T5.6).
+
+    Examples
+    --------
+    >>> round(t_stop(2.0, 0.75), 3)
+    2.309
+    """
+    from camtool.core.errors import require
+
+    require("transmittance", transmittance, (transmittance > 0) & (transmittance <= 1), "0 to 1")
+    return f_number / ops(f_number, transmittance).sqrt(transmittance)
+
+
+def f_number_from_t_stop(t: Any, transmittance: Any) -> Any:
+    """The f-number behind a T-stop: N = T·√τ (for depth of field, which the geometry sets).
+
+    Without the lens's transmittance, taking the T-stop for the f-number
+    overstates N by 1/√τ: the depth of field is computed for a slightly
+    smaller aperture than the lens has.
+
+    >>> round(f_number_from_t_stop(2.309401, 0.75), 4)
+    2.0
+    """
+    from camtool.core.errors import require
+
+    require("transmittance", transmittance, (transmittance > 0) & (transmittance <= 1), "0 to 1")
+    return t * ops(t, transmittance).sqrt(transmittance)

@@ -69,52 +69,63 @@ def nd_from_density(density: Any) -> NdFilter:
 _ND_NUMBER = r"(\d+(?:\.\d*)?|\.\d+)"
 _ND_SPELLINGS = (
     (re.compile(rf"^{_ND_NUMBER}\s*(?:stops?|ev)$"), nd_from_stops),
-    (re.compile(r"^(\d+)$"), nd_from_stops),
     (re.compile(r"^nd\s*(\d+)$"), nd_from_factor),
     (re.compile(r"^(?:x\s*(\d+(?:\.\d+)?)|(\d+(?:\.\d+)?)\s*x)$"), nd_from_factor),
-    (re.compile(r"^(?:nd|od)\s*(\d*\.\d+|\d+\.\d*)$"), nd_from_density),
-    (re.compile(r"^od\s*(\d+)$"), nd_from_density),
-    (re.compile(r"^(\d*\.\d+|\d+\.\d*)\s*(?:nd|od)?$"), nd_from_density),
+    (re.compile(rf"^{_ND_NUMBER}\s*d$"), nd_from_density),
+    (re.compile(rf"^od\s*{_ND_NUMBER}$"), nd_from_density),
 )
+ND_SPELLINGS = "a factor (ND1000, 1000x), stops (10stops, 10ev) or an optical density (3.0D, OD3)"
+"""The three spellings :func:`parse_nd` reads, for messages."""
 
 
 def parse_nd(text: str) -> NdFilter:
-    """Read an ND filter written as stops, a filter factor or an optical density.
+    """Read an ND filter written as a filter factor, stops or an optical density.
 
-    The three spellings are told apart by their form, as filters are sold:
+    Each description has its own spelling, so that no reader can take one for
+    another and no decimal point changes the meaning:
 
     ========================  ===========  =====================================
-    written                   read as      why
+    written                   read as      notes
     ========================  ===========  =====================================
-    ``3``, ``3stops``, ``3ev``  stops      a whole number alone counts stops;
-    ``1.5stops``                           fractions of a stop need the suffix
-    ``ND1000``, ``ND8``,      factor       "ND" + whole number is the filter
+    ``ND1000``, ``ND8``,      factor       "ND" + a whole number is the filter
     ``1000x``, ``x8``                      factor (Hoya, B+W "ND 1000")
-    ``3.0``, ``0.9``,         density      a number with a decimal point is an
-    ``ND3.0``, ``0.9ND``,                  optical density (Lee, Kodak Wratten
-    ``OD3``                                "0.9 ND")
+    ``10stops``, ``3stop``,   stops        fractions allowed (``1.5stops``)
+    ``10ev``
+    ``3.0D``, ``0.9d``,       optical      D after the number or OD before it
+    ``OD3``, ``OD0.9``        density      (Lee, Kodak Wratten "0.9 ND")
     ========================  ===========  =====================================
 
-    Case and spaces are ignored. Anything else raises :class:`DomainError`.
+    A bare number (``3``, ``3.0``, ``1000``) and ``ND`` with a decimal point
+    (``ND0.9``, ``ND3.0``: a density in some catalogues, a factor in others)
+    are refused with the three spellings. Case and spaces are ignored.
 
     Examples
     --------
-    >>> [round(parse_nd(s).stops, 2) for s in ("3", "ND1000", "3.0", "0.9 ND", "x8", "1.5stops")]
-    [3.0, 9.97, 9.97, 2.99, 3.0, 1.5]
+    >>> [round(parse_nd(s).stops, 2) for s in ("ND1000", "1000x", "10stops", "3.0D", "OD3", "x8", "1.5stops")]
+    [9.97, 9.97, 10.0, 9.97, 9.97, 3.0, 1.5]
+    >>> parse_nd("1000")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    camtool.core.errors.DomainError: nd=1000 is outside the valid range: a factor (ND1000, 1000x), ...
     """
-    key = text.strip().lower()
+    key = re.sub(r"\s+", "", text.strip().lower())
     for pattern, reader in _ND_SPELLINGS:
         match = pattern.match(key)
         if match:
             number = next(g for g in match.groups() if g is not None)
             return reader(float(number))
-    raise DomainError("nd", text, "stops (3, 1.5stops), a factor (ND1000, 8x) or a density (3.0, ND0.9, OD3)")
+    detail = ""
+    if re.match(rf"^{_ND_NUMBER}$", key):
+        detail = "a bare number could be any of the three"
+    elif re.match(r"^nd\s*\d*\.\d*$", key):
+        detail = "ND with a decimal point is a density in some catalogues and a factor in others"
+    raise DomainError("nd", text, ND_SPELLINGS, detail)
 
 
 def stack_nd(filters: list[NdFilter]) -> NdFilter:
     """Filters stacked in front of one another: stops and densities add, factors multiply.
 
-    >>> round(stack_nd([parse_nd("ND8"), parse_nd("0.6")]).stops, 2)
+    >>> round(stack_nd([parse_nd("ND8"), parse_nd("0.6D")]).stops, 2)
     4.99
     """
     return nd_from_stops(sum((f.stops for f in filters), 0.0))

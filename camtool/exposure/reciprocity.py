@@ -5,19 +5,22 @@ metered time t_m beyond about a second has to be stretched to
 
     t_c = t_m^p        (t_m > 1 s; t_c = t_m otherwise)
 
-with a film's Schwarzschild exponent p > 1. The exponents ship with camtool
-in ``camtool/exposure/films.yaml`` (Ilford's published values, source in the
-file); any other film works through :func:`corrected_time_s` with its own p.
+with a film's Schwarzschild exponent p > 1. The films ship with camtool
+in ``camtool/exposure/films.yaml``, each as its maker publishes it: an
+exponent (Ilford, Kentmere, CineStill's guide) or a table of metered and
+adjusted times (Kodak, Fujifilm), with the source per film; any other film
+works through :func:`corrected_time_s` with its own p.
 """
 
 from __future__ import annotations
 
-import difflib
 import functools
+import itertools
+import math
 import re
 from typing import Any, NamedTuple
 
-from camtool.core.arrays import ops
+from camtool.core.arrays import is_scalar, ops
 from camtool.core.domain import check
 from camtool.core.errors import DomainError, require
 
@@ -25,14 +28,26 @@ P_RANGE = (1.0, 3.0)
 
 
 class Film(NamedTuple):
-    """A film's reciprocity data: ``p`` applies to metered times above ``threshold_s``."""
+    """A film's reciprocity data, as its maker publishes it.
+
+    Either a Schwarzschild exponent ``p`` applying to metered times above
+    ``threshold_s`` (Ilford, CineStill), or a table ``points`` of
+    (metered time in s, extra exposure in stops) (Kodak, Fujifilm), valid up
+    to ``valid_to_s``, its last metered time.
+    """
 
     id: str
     name: str
-    p: float
+    p: float | None
     threshold_s: float
     aliases: tuple[str, ...]
     source: str
+    points: tuple[tuple[float, float], ...] = ()
+    valid_to_s: float | None = None
+
+    def corrected_time_s(self, metered_s: Any) -> Any:
+        """The time to give for a metered time, by this film's exponent or table (see :func:`film_time_s`)."""
+        return film_time_s(self, metered_s)
 
 
 def corrected_time_s(metered_s: Any, p: Any, threshold_s: Any = 1.0) -> Any:
@@ -78,6 +93,61 @@ def reciprocity_stops(metered_s: Any, p: Any, threshold_s: Any = 1.0) -> Any:
     return ops(corrected).log2(corrected / metered_s)
 
 
+def _stops(value: Any) -> float:
+    """A table entry's correction: '+1/3 stops' or '+1 stops' (a string), in stops."""
+    text = str(value).replace("stops", "").replace("stop", "").strip().lstrip("+")
+    if "/" in text:
+        numerator, denominator = text.split("/")
+        return float(numerator) / float(denominator)
+    return float(text)
+
+
+def table_stops(points: tuple[tuple[float, float], ...], metered_s: float) -> float:
+    """Extra stops from a published table at a metered time: linear in log2(time) between points.
+
+    No correction below the first point (every data sheet treats short times
+    as needing none); beyond the last point the caller must refuse.
+
+    >>> pts = ((0.1, 0.0), (1.0, 1 / 3), (10.0, math.log2(1.5)), (100.0, 1.0))
+    >>> round(table_stops(pts, 10.0), 4), round(table_stops(pts, math.sqrt(10.0)), 4)
+    (0.585, 0.4591)
+    """
+    if metered_s <= points[0][0]:
+        return 0.0 if metered_s < points[0][0] else points[0][1]
+    for (t0, s0), (t1, s1) in itertools.pairwise(points):
+        if metered_s <= t1:
+            w = math.log2(metered_s / t0) / math.log2(t1 / t0)
+            return s0 + w * (s1 - s0)
+    return points[-1][1]
+
+
+def film_time_s(film: Film, metered_s: Any) -> Any:
+    """Time in seconds to give ``film`` for a metered time: its exponent, or its table interpolated.
+
+    Raises :class:`DomainError` on ``film`` when the metered time is beyond
+    the film's published data.
+
+    Examples
+    --------
+    >>> round(film_time_s(find_film("hp5"), 10.0), 1)  # Ilford's worked example
+    20.4
+    >>> film_time_s(find_film("tmax100"), 100.0)  # Kodak F-4016: 100 s -> 200 s
+    200.0
+    """
+    if film.p is not None:
+        return corrected_time_s(metered_s, film.p, film.threshold_s)
+    check("shutter_s", metered_s)
+    valid = film.valid_to_s or film.points[-1][0]
+    require("film", film.id, metered_s <= valid * (1 + 1e-9),
+            f"{film.name} has published data for metered times up to {valid:g} s")
+    if is_scalar(metered_s):
+        return metered_s * 2.0 ** table_stops(film.points, float(metered_s))
+    import numpy as np
+
+    flat = [t * 2.0 ** table_stops(film.points, float(t)) for t in np.asarray(metered_s).ravel()]
+    return np.asarray(flat).reshape(np.shape(metered_s))
+
+
 def _key(name: str) -> str:
     """Lookup key: lower case, '+' read as 'plus', punctuation and spaces dropped."""
     return re.sub(r"[^a-z0-9]", "", name.lower().replace("+", "plus"))
@@ -95,11 +165,31 @@ def load_films() -> dict[str, Film]:
     import yaml
 
     data = yaml.safe_load(files("camtool.exposure").joinpath("films.yaml").read_text(encoding="utf-8"))
-    return {
-        entry["id"]: Film(entry["id"], entry["name"], float(entry["p"]), float(entry.get("threshold_s", 1.0)),
-                          tuple(entry.get("aliases", ())), entry.get("source", data["source"]))
-        for entry in data["films"]
-    }
+    return {entry["id"]: film_from_entry(entry, data["source"]) for entry in data["films"]}
+
+
+def film_from_entry(entry: dict[str, Any], default_source: str = "") -> Film:
+    """A :class:`Film` from one entry of ``films.yaml`` (or a ``films`` preset): ``p`` or ``points``.
+
+    >>> film_from_entry({"id": "x", "name": "X", "points": [[1, 2], [10, "+2 stops"]]}).points
+    ((1.0, 1.0), (10.0, 2.0))
+    """
+    points: tuple[tuple[float, float], ...] = ()
+    for metered, given in entry.get("points", ()):
+        t = float(metered)
+        stops = _stops(given) if isinstance(given, str) else math.log2(float(given) / t)
+        points += ((t, stops),)
+    p = entry.get("p")
+    if p is None and not points:
+        raise DomainError("film", entry.get("id", "?"), "an exponent p or a table of points")
+    if p is not None:
+        require("reciprocity_p", float(p), P_RANGE[0] <= float(p) <= P_RANGE[1], "1 to 3")
+    if any(b[0] <= a[0] for a, b in itertools.pairwise(points)):
+        raise DomainError("film", entry.get("id", "?"), "points in increasing metered time")
+    return Film(str(entry["id"]), str(entry.get("name", entry["id"])), None if p is None else float(p),
+                float(entry.get("threshold_s", 1.0)), tuple(str(a) for a in entry.get("aliases", ())),
+                str(entry.get("source", default_source)), points,
+                float(entry["valid_to_s"]) if "valid_to_s" in entry else None)
 
 
 def find_film(name: str) -> Film:
@@ -122,7 +212,10 @@ def find_film(name: str) -> Film:
     found = index.get(_key(name))
     if found is not None:
         return found
-    close = difflib.get_close_matches(_key(name), list(index), n=6, cutoff=0.6)
+    import difflib  # only on this error path
+
+    close = difflib.get_close_matches(_key(name), list(index), n=6, cutoff=0.65)
     ids = sorted({index[k].id for k in close})
-    hint = f"did you mean {', '.join(ids)}?" if ids else "known: " + ", ".join(films)
+    hint = (f"did you mean {', '.join(ids)}?" if ids else
+            "films with published data: " + ", ".join(films) + "; for another, give --reciprocity-p or a films preset")
     raise DomainError("film", name, "a known film", hint)

@@ -132,3 +132,74 @@ def focal_length_for_angle_mm(size_mm: Any, angle_deg: Any) -> Any:
     require("angle_deg", angle_deg, (angle_deg > 0) & (angle_deg < 180), "between 0 and 180 degrees (exclusive)")
     xp = ops(size_mm, angle_deg)
     return 0.5 * size_mm / xp.tan(xp.radians(0.5 * angle_deg))
+
+
+class View(NamedTuple):
+    """What a lens focused at a distance shows: angles (degrees), magnification and field (mm).
+
+    ``field_width_mm`` and ``field_height_mm`` are None for infinity focus
+    without a distance.
+    """
+
+    angles: FieldOfView
+    magnification: Any
+    field_width_mm: Any
+    field_height_mm: Any
+    equivalent_focal_length_mm: Any
+
+
+def view(
+    width_mm: Any,
+    height_mm: Any,
+    focal_length_mm: Any,
+    distance_mm: Any = None,
+    distance_from: str = "sensor",
+    pupil_magnification: Any = 1.0,
+    hiatus_mm: Any = 0.0,
+    crop_factor: Any = 1.0,
+) -> View:
+    """Angles of view with focus breathing, and the field covered at the focus distance.
+
+    Focused at a distance the lens breathes: f(1 + m/P) replaces f
+    (:func:`angle_of_view_deg`), and the field at the subject is the sensor
+    size over m (:func:`field_size_mm`); m from the thin-lens focus geometry
+    with the hiatus δ. Without a distance the focus is at infinity (m = 0) and
+    there is no field. The 35 mm equivalent focal length is f times the crop
+    factor.
+
+    Parameters
+    ----------
+    width_mm, height_mm : float or array
+        Sensor size, > 0.
+    focal_length_mm : float or array, f > 0
+    distance_mm : float, array or None
+        Focus distance from ``distance_from``; None: infinity, no field.
+    distance_from : ``"sensor"`` or ``"lens"``
+    pupil_magnification, hiatus_mm : float or array
+        P (1 for a thin lens) and δ (0).
+    crop_factor : float
+        Of the sensor, for the equivalent focal length.
+
+    References
+    ----------
+    Wikipedia, "Angle of view" (2·atan(d/2f), with the focused image distance);
+    docs/design.md §4.
+
+    Examples
+    --------
+    >>> v = view(36.0, 24.0, 50.0, 200.0)
+    >>> v.magnification, v.field_width_mm, v.field_height_mm
+    (1.0, 36.0, 24.0)
+    >>> round(view(36.0, 24.0, 50.0).angles.horizontal_deg, 1)
+    39.6
+    """
+    from camtool.geometry.thinlens import focus_geometry
+
+    s = float("inf") if distance_mm is None else distance_mm
+    m = focus_geometry(focal_length_mm, s, distance_from, hiatus_mm).magnification
+    angles = field_of_view(width_mm, height_mm, focal_length_mm, m, pupil_magnification)
+    if distance_mm is None:
+        width = height = None
+    else:
+        width, height = field_size_mm(width_mm, m), field_size_mm(height_mm, m)
+    return View(angles, m, width, height, focal_length_mm * crop_factor)

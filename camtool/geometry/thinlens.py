@@ -15,6 +15,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
+from camtool.core.planes import FOCUS_PLANES, check_plane
 
 
 class LensPlaneDistances(NamedTuple):
@@ -212,18 +213,16 @@ def focus_geometry(
     >>> focus_geometry(50.0, 100.0, distance_from="lens").sensor_distance_mm
     200.0
     """
-    if distance_from == "sensor":
+    if check_plane(distance_from, FOCUS_PLANES) == "sensor":
         u, v = lens_distances(focal_length_mm, distance_mm, hiatus_mm)
         sensor = distance_mm
-    elif distance_from == "lens":
+    else:
         require_positive("focal_length_mm", focal_length_mm)
         require("distance_mm", distance_mm, distance_mm >= 2.0 * focal_length_mm,
                 "at least {limit} from the lens (1:1, 2 × focal length)", limit=2.0 * focal_length_mm)
         u = distance_mm
         v = image_distance_mm(focal_length_mm, u)
         sensor = u + v + hiatus_mm
-    else:
-        raise ValueError(f"distance_from must be 'sensor' or 'lens', not {distance_from!r}")
     m = v / u
     return FocusGeometry(u, v, sensor, m, v - focal_length_mm)
 
@@ -241,3 +240,74 @@ def focus_for_magnification(focal_length_mm: Any, magnification: Any, hiatus_mm:
     u = focal_length_mm * (1.0 + 1.0 / magnification)
     v = focal_length_mm * (1.0 + magnification)
     return FocusGeometry(u, v, u + v + hiatus_mm, broadcast(magnification, u), v - focal_length_mm)
+
+
+class FocusSetting(NamedTuple):
+    """A lens focused on a distance or for a magnification; lengths in mm.
+
+    ``distance_mm`` is the focus distance in the plane asked for (from the
+    sensor or from the lens); ``working_f_number`` is None without an f-number.
+    """
+
+    distance_mm: Any
+    image_distance_mm: Any  # v, rear principal plane to the sensor
+    extension_mm: Any  # v − f
+    magnification: Any  # m = v/u
+    closest_focus_mm: Any  # 1:1, in the same plane
+    working_f_number: Any
+
+
+def focus_setting(
+    focal_length_mm: Any,
+    distance_mm: Any = None,
+    magnification: Any = None,
+    distance_from: str = "sensor",
+    hiatus_mm: Any = 0.0,
+    f_number: Any = None,
+    pupil_magnification: Any = 1.0,
+) -> FocusSetting:
+    """Focus a unit-focusing lens on ``distance_mm`` (or for ``magnification``): where everything sits.
+
+    u, v from :func:`focus_geometry` (a distance) or :func:`focus_for_magnification`
+    (u = f(1 + 1/m), v = f(1 + m)); the working f-number N(1 + m/P) when N is
+    given; the closest focus (1:1) in the same plane.
+
+    Parameters
+    ----------
+    focal_length_mm : float or array, f > 0
+    distance_mm : float or array, or None
+        Focus distance from ``distance_from`` (``inf`` allowed); give this or ``magnification``.
+    magnification : float or array, or None
+        Wanted m > 0.
+    distance_from : ``"sensor"`` or ``"lens"``
+    hiatus_mm : float or array
+        δ between the principal planes (0 for a thin lens).
+    f_number : float, array or None
+        Nominal N for the working f-number.
+    pupil_magnification : float or array
+        P (1 for a thin lens).
+
+    References
+    ----------
+    Thin-lens equation (Hecht, *Optics*, §5.2); working f-number: Wikipedia,
+    "f-number"; docs/design.md §4.
+
+    Examples
+    --------
+    >>> s = focus_setting(100.0, 500.0, distance_from="lens", f_number=8.0)
+    >>> s.distance_mm, s.image_distance_mm, s.magnification, s.working_f_number
+    (500.0, 125.0, 0.25, 10.0)
+    >>> focus_setting(100.0, magnification=1.0).distance_mm
+    400.0
+    """
+    if (distance_mm is None) == (magnification is None):
+        raise ValueError("give either distance_mm or magnification")
+    if distance_mm is not None:
+        geometry = focus_geometry(focal_length_mm, distance_mm, distance_from, hiatus_mm)
+    else:
+        geometry = focus_for_magnification(focal_length_mm, magnification, hiatus_mm)
+    nearest = closest_focus_mm(focal_length_mm, hiatus_mm, distance_from=distance_from)
+    plane_distance = geometry.sensor_distance_mm if distance_from == "sensor" else geometry.object_mm
+    working = None if f_number is None else working_f_number(f_number, geometry.magnification, pupil_magnification)
+    return FocusSetting(plane_distance, geometry.image_mm, geometry.extension_mm, geometry.magnification, nearest,
+                        working)

@@ -26,6 +26,7 @@ from camtool.presets.schema import (
     KINDS,
     REFERENCES,
     Camera,
+    Film,
     Lens,
     Prescription,
     Preset,
@@ -150,6 +151,10 @@ class Database:
     def scene(self, name: str) -> Scene:
         """A named shot, its camera, sensor and lens resolved."""
         return self.get("scene", name)  # type: ignore[return-value]
+
+    def film(self, name: str) -> Film:
+        """A film's reciprocity data by name (the ``films`` kind of preset files)."""
+        return self.get("film", name)  # type: ignore[return-value]
 
     def names(self, kind: str) -> list[str]:
         """The ids of every preset of ``kind`` in effect, sorted (for listings and shell completion)."""
@@ -294,15 +299,20 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         r.get("f_number_min_tele"), r.get("min_focus_mm"), r.get("max_magnification"),
         r.get("pupil_magnification"), r.get("hiatus_mm"),
         prescription_id=prescription.id if prescription else None,
-        prescription=prescription.data if prescription else None,
+        prescription=prescription.optics if prescription else None,
         sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
         approximate=r.get("approximate", False), **_common(entry))
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:
+    from camtool.optics.prescription import prescription_from_mapping
+    from camtool.presets.schema import optics_mapping
+
     r = entry.record
+    # validated when the file was read (schema._check_prescription); building it cannot fail
+    optics = prescription_from_mapping(optics_mapping(r), source=r["id"])
     return Prescription(r["id"], r["name"], r["_data"], r.get("focal_length_mm"), r.get("f_number"),
-                        r.get("wavelength_nm"), **_common(entry))
+                        r.get("wavelength_nm"), **_common(entry), optics=optics)
 
 
 def _build_scene(db: Database, entry: _Entry) -> Scene:
@@ -315,7 +325,14 @@ def _build_scene(db: Database, entry: _Entry) -> Scene:
                  **_common(entry))
 
 
+def _build_film(db: Database, entry: _Entry) -> Film:
+    r = entry.record
+    return Film(r["id"], r["name"], r.get("p"), r.get("threshold_s"), r.get("points", ()), r.get("valid_to_s"),
+                **_common(entry))
+
+
 _BUILDERS = {
+    "film": _build_film,
     "sensor": _build_sensor,
     "camera": _build_camera,
     "lens": _build_lens,

@@ -13,18 +13,33 @@ What is kept:
 
 - each ``<camera>`` becomes a *sensor* preset named after the body. lensfun
   gives only a crop factor, so the size is derived from it: diagonal
-  43.27 mm / crop, in the aspect ratio of the body's fixed lens when lensfun
-  gives one, else 3:2 for crop factors 0.9 to 1.8 (35 mm and APS bodies) and
-  4:3 otherwise (medium format, Four Thirds, compacts); every such sensor is
-  marked ``approximate``;
+  43.27 mm / crop, in the aspect ratio of the body itself. lensfun records an
+  aspect ratio only on lenses, and on an interchangeable lens it is the
+  ratio of whatever body the lens was calibrated on (a Sigma lens made for
+  both Sony E and Micro Four Thirds says 4:3), so it is used only from the
+  body's own fixed lens: a lens named "fixed lens" or "Standard", or one
+  made for that mount alone when no lens on the mount serves another mount
+  and the lenses on it agree. Otherwise 3:2 for crop factors 0.9 to 1.8
+  (35 mm and APS bodies) and 4:3 otherwise (medium format, Four Thirds,
+  compacts); every such sensor is marked ``approximate``;
 - each ``<lens>`` becomes a lens preset with its focal length or range and
   widest f-number, taken from ``<focal>`` / ``<aperture>`` when present, else
   parsed from the model name (``18-55mm f/3.5-5.6``, ``1:2``, ``2.8/50``),
   else from the range of its calibration data, as lensfun itself does.
 
 Entries that clash with camtool's shipped presets or with an earlier entry,
-or whose focal length cannot be found, are skipped and counted; a file that
-cannot be parsed is reported and skipped, never failing the import.
+or whose focal length cannot be found, are skipped and counted; an entry
+whose figures do not validate (a model named "0mm" gives a focal length of
+0) is skipped and named in the reason; a file that cannot be parsed is
+reported and skipped, never failing the import. A lensfun lens is taken to
+be a shipped preset when its name, with or without the maker in front,
+matches a shipped lens's id, name or alias (the shipped lenses carry
+lensfun's spelling as an alias), so a body imported from lensfun finds the
+shipped lens instead of a second, uncited copy of it.
+
+The output file keeps the permission bits of the file it replaces (a new
+file gets 0644); an output path that exists and is not a regular file (a
+directory, a device, a FIFO) is refused before anything is read.
 """
 
 from __future__ import annotations
@@ -40,7 +55,7 @@ from typing import Any
 from xml.etree import ElementTree
 
 from camtool.presets import paths
-from camtool.presets.schema import FULL_FRAME_DIAGONAL_MM, normalize, slugify
+from camtool.presets.schema import FULL_FRAME_DIAGONAL_MM, check_record, normalize, slugify
 
 _NUMBER = r"(\d+(?:[.,]\d+)?)"
 _FOCAL_IN_NAME = re.compile(rf"(?<![\d.]){_NUMBER}(?:\s*-\s*{_NUMBER})?\s*mm", re.IGNORECASE)
@@ -204,14 +219,33 @@ class _Collector:
         self.result = ImportResult()
         self.mount_cameras: dict[str, list[tuple[str, str]]] = {}
         self.mount_aspect: dict[str, float] = {}
+        # Aspect ratios seen on each mount: from fixed lenses, from single-mount lenses; mounts
+        # that a multi-mount lens also serves (interchangeable mounts shared with other systems).
+        self.fixed_aspects: dict[str, set[float]] = {}
+        self.single_mount_aspects: dict[str, set[float]] = {}
+        self.shared_mounts: set[str] = set()
 
-    def add(self, kind: str, record: dict[str, Any]) -> bool:
+    def settle_aspects(self) -> None:
+        """Decide each mount's aspect ratio once every file has been scanned (see the module notes)."""
+        for mount in set(self.fixed_aspects) | set(self.single_mount_aspects):
+            ratios = self.fixed_aspects.get(mount)
+            if not ratios and mount not in self.shared_mounts:
+                ratios = self.single_mount_aspects.get(mount)
+            if ratios and len(ratios) == 1:
+                self.mount_aspect[mount] = next(iter(ratios))
+
+    def add(self, kind: str, record: dict[str, Any], model: str = "") -> bool:
         key = normalize(record["id"])
         if not key:
             self.result.skipped[f"{kind}: no usable name"] += 1
             return False
-        if key in self.taken.get(kind, set()):
+        if self._shipped(kind, record):
             self.result.skipped[f"{kind}: already in camtool's shipped presets"] += 1
+            return False
+        _, problems = check_record(kind, {k: v for k, v in record.items() if not k.startswith("_")})
+        if problems:
+            name, problem = problems[0]
+            self.result.skipped[f"{kind}: {model or record['name']!r}: {name} {problem}"] += 1
             return False
         if key in self.keys[kind]:
             self.result.skipped[f"{kind}: listed more than once"] += 1
@@ -220,6 +254,41 @@ class _Collector:
         (self.sensors if kind == "sensor" else self.lenses).append(record)
         return True
 
+    def _shipped(self, kind: str, record: dict[str, Any]) -> bool:
+        taken = self.taken.get(kind, set())
+        return any(key in taken for key in match_keys(record["name"], record.get("_maker")) | {
+            normalize(record["id"])})
+
+
+_MAKER_WORDS = {"canon": ("canon",), "nikon": ("nikon", "nikkor"), "sony": ("sony",),
+                "fujifilm": ("fujifilm", "fujinon", "fuji"), "fuji": ("fujifilm", "fujinon", "fuji"),
+                "olympus": ("olympus", "omsystem", "om", "mzuiko", "zuiko"), "omsystem": ("omsystem", "om", "olympus"),
+                "panasonic": ("panasonic", "lumix"), "leica": ("leica",), "sigma": ("sigma",), "tamron": ("tamron",),
+                "zeiss": ("zeiss", "carlzeiss"), "hasselblad": ("hasselblad",), "samyang": ("samyang",),
+                "ricoh": ("ricoh",), "pentax": ("pentax", "smcpentax")}
+
+
+def match_keys(name: str, maker: str | None = None) -> set[str]:
+    """Lookup keys under which a lensfun lens name matches a shipped preset.
+
+    The name as it is, and without its maker's words in front, so lensfun's
+    "Nikon NIKKOR Z 50mm f/1.8 S" meets the shipped "NIKKOR Z 50mm f/1.8 S".
+
+    >>> sorted(match_keys("Nikon NIKKOR Z 50mm f/1.8 S", "Nikon"))
+    ['nikkorz50mmf18s', 'nikonnikkorz50mmf18s', 'z50mmf18s']
+    """
+    key = normalize(name)
+    keys = {key}
+    words = _MAKER_WORDS.get(normalize(maker or ""), (normalize(maker or ""),) if maker else ())
+    changed = True
+    while changed:
+        changed = False
+        for word in words:
+            if word and key.startswith(word) and len(key) > len(word) + 2:
+                key = key[len(word):]
+                keys.add(key)
+                changed = True
+    return keys
 
 def _scan(root: ElementTree.Element, collector: _Collector) -> None:
     """First pass over a file: fixed-lens mounts and their aspect ratios."""
@@ -230,9 +299,17 @@ def _scan(root: ElementTree.Element, collector: _Collector) -> None:
             collector.mount_cameras.setdefault(mount, []).append((name, slugify(name)))
     for lens_element in root.iter("lens"):
         aspect = _aspect(_text(lens_element, "aspect-ratio"))
-        for mount_element in lens_element.findall("mount"):
-            if aspect and mount_element.text:
-                collector.mount_aspect.setdefault(mount_element.text.strip(), aspect)
+        mounts = [m.text.strip() for m in lens_element.findall("mount") if m.text and m.text.strip()]
+        if len(mounts) > 1:
+            collector.shared_mounts.update(mounts)
+        if not aspect:
+            continue
+        model = normalize(_text(lens_element, "model") or "")
+        fixed = model in _GENERIC_LENS_NAMES or model.startswith("standard")
+        for mount in mounts:
+            target = collector.fixed_aspects if fixed else collector.single_mount_aspects
+            if fixed or len(mounts) == 1:
+                target.setdefault(mount, set()).add(round(aspect, 4))
 
 
 def _cameras(root: ElementTree.Element, source: str, collector: _Collector) -> None:
@@ -249,13 +326,13 @@ def _cameras(root: ElementTree.Element, source: str, collector: _Collector) -> N
         mount = _text(camera, "mount")
         aspect = collector.mount_aspect.get(mount or "")
         width, height = sensor_size(crop, aspect)
-        ratio = "lens data" if aspect else ("3:2" if 0.9 <= crop <= 1.8 else "4:3")
+        ratio = "its fixed lens" if aspect else ("3:2" if 0.9 <= crop <= 1.8 else "4:3")
         record = {"id": slugify(name), "name": name, "width_mm": round(width, 3), "height_mm": round(height, 3),
                   "approximate": True, "category": "digital",
                   "source": f"lensfun {source}: crop factor {crop:g}, size derived (aspect from {ratio})"}
         if mount:
             record["notes"] = f"lensfun mount {mount}"
-        if collector.add("sensor", record):
+        if collector.add("sensor", record, model):
             collector.result.sensors += 1
 
 
@@ -319,7 +396,10 @@ def _lenses(root: ElementTree.Element, source: str, collector: _Collector) -> No
             record["sensor"] = sensor_id
         crop = _positive(_text(lens, "cropfactor"))
         record["source"] = f"lensfun {source}" + (f" (calibrated at crop factor {crop:g})" if crop else "")
-        if collector.add("lens", record):
+        record["_maker"] = maker
+        added = collector.add("lens", record, model)
+        del record["_maker"]
+        if added:
             collector.result.lenses += 1
 
 
@@ -354,6 +434,7 @@ def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | No
         collector.result.files += 1
         parsed.append((path, root))
         _scan(root, collector)
+    collector.settle_aspects()
     # Later directories (updates, the user's own) come first so that they win the clashes.
     for path, root in reversed(parsed):
         try:
@@ -377,6 +458,9 @@ def _shipped_keys() -> dict[str, set[str]]:
         for kind in keys:
             for record in records.get(kind, ()):
                 keys[kind].update(record["_keys"])
+                for name in [record.get("name", ""), *record.get("aliases", ())]:
+                    words = str(name).split()
+                    keys[kind].update(match_keys(str(name), words[0] if words else None))
     return keys
 
 
@@ -390,6 +474,7 @@ def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.Pat
     leaves the previous file untouched. Raises :class:`LensfunImportError`
     when no lensfun XML is found or nothing can be imported.
     """
+    target = _output_path(Path(out if out is not None else paths.lensfun_file()))
     directories = default_dirs() if dirs is None else [Path(d) for d in dirs]
     if not any(any(Path(d).glob("*.xml")) for d in directories):
         where = ", ".join(map(str, directories)) or "the usual places"
@@ -398,10 +483,34 @@ def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.Pat
     sensors, lenses, result = read_lensfun(directories, _shipped_keys())
     if not sensors and not lenses:
         raise LensfunImportError(f"nothing imported from {', '.join(map(str, directories))}")
-    target = Path(out if out is not None else paths.lensfun_file())
     _write_atomically(target, _render(sensors, lenses, directories))
     result.path = str(target)
     return result
+
+
+NEW_FILE_MODE = 0o644
+"""Permission bits of a new output file (a replaced file keeps its own)."""
+
+
+def _output_path(target: Path) -> Path:
+    """The file to write: ``target``, or the regular file a symbolic link names; refuse anything else.
+
+    Checked before any lensfun file is read, so a wrong ``--out`` fails at once.
+    """
+    import stat
+
+    try:
+        mode = target.stat().st_mode
+    except FileNotFoundError:
+        if target.is_symlink():
+            raise LensfunImportError(f"cannot write {target}: it is a symbolic link to a missing file") from None
+        return target
+    except OSError as error:
+        raise LensfunImportError(f"cannot write {target}: {error.strerror or error}") from None
+    if not stat.S_ISREG(mode):
+        what = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
+        raise LensfunImportError(f"cannot write {target}: it is {what}")
+    return Path(os.path.realpath(target)) if target.is_symlink() else target
 
 
 def _render(sensors: list[dict[str, Any]], lenses: list[dict[str, Any]], dirs: list[Path]) -> str:
@@ -420,6 +529,7 @@ def _render(sensors: list[dict[str, Any]], lenses: list[dict[str, Any]], dirs: l
 
 
 def _write_atomically(target: Path, text: str) -> None:
+    import stat
     import tempfile
 
     from camtool.presets.errors import PresetFileError
@@ -435,6 +545,11 @@ def _write_atomically(target: Path, text: str) -> None:
     try:
         with handle:
             handle.write(text)
+        try:
+            mode = stat.S_IMODE(target.stat().st_mode)
+        except FileNotFoundError:
+            mode = NEW_FILE_MODE
+        os.chmod(handle.name, mode)
         problems = parse_file(handle.name).problems
         if problems:
             raise LensfunImportError(f"the imported presets do not validate: {problems[0].error(str(target))}")

@@ -266,7 +266,6 @@ def _collect_entry(kind: str, entry: dict[Any, Any], node: Any, data: FileData) 
     record["_refs"] = {key: _line(key_nodes.get(key)) for key in refs if key in record}
     if kind == "prescription":
         record["_data"] = {k: v for k, v in entry.items() if not str(k).startswith("_")}
-        record["_data"]["surfaces"] = record["surfaces"]
     data._records.setdefault(kind, []).append(record)
 
 

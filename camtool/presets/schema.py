@@ -17,11 +17,11 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-KINDS = ("sensor", "camera", "lens", "prescription", "scene")
+KINDS = ("sensor", "camera", "lens", "prescription", "scene", "film")
 """The kinds of preset, in the order they are listed."""
 
 SECTIONS = {"sensors": "sensor", "cameras": "camera", "lenses": "lens", "prescriptions": "prescription",
-            "scenes": "scene"}
+            "scenes": "scene", "films": "film"}
 """Top-level keys of a preset file and the kind of the entries under each."""
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
@@ -230,6 +230,43 @@ def f_number_text(value: Any) -> float:
     return number
 
 
+CLOSE_FOCUS_FIELDS: dict[str, Callable[[Any], Any]] = {
+    "focal_length_mm": positive_mm,
+    "min_focus_mm": positive_mm,
+    "max_magnification": positive,
+}
+
+
+def close_focus_rows(value: Any) -> list[dict[str, float]]:
+    """A zoom's closest focus per focal length: ``[{focal_length_mm, min_focus_mm[, max_magnification]}]``.
+
+    One row per focal length the maker publishes, in increasing focal length.
+
+    >>> close_focus_rows([{"focal_length_mm": 24, "min_focus_mm": 210}, {"focal_length_mm": 70, "min_focus_mm": 380}])
+    [{'focal_length_mm': 24.0, 'min_focus_mm': 210.0}, {'focal_length_mm': 70.0, 'min_focus_mm': 380.0}]
+    >>> close_focus_rows([{"focal_length_mm": 70, "min_focus_mm": 380}, {"focal_length_mm": 24, "min_focus_mm": 210}])
+    Traceback (most recent call last):
+    ...
+    camtool.presets.schema.Bad: row 2: focal_length_mm must be greater than the row before (70)
+    """
+    if not isinstance(value, list) or not value:
+        raise Bad(f"expected a non-empty list of {{focal_length_mm, min_focus_mm[, max_magnification]}}, "
+                  f"got {show(value)}")
+    out: list[dict[str, float]] = []
+    for number, raw in enumerate(value, start=1):
+        if not isinstance(raw, Mapping):
+            raise Bad(f"row {number} must be a mapping, got {show(raw)}")
+        record, problems = check_fields(raw, CLOSE_FOCUS_FIELDS, ("focal_length_mm", "min_focus_mm"))
+        if problems:
+            key, problem = problems[0]
+            raise Bad(f"row {number}, {key}: {problem}")
+        if out and record["focal_length_mm"] <= out[-1]["focal_length_mm"]:
+            raise Bad(f"row {number}: focal_length_mm must be greater than the row before "
+                      f"({out[-1]['focal_length_mm']:g})")
+        out.append(record)
+    return out
+
+
 def sensor_ref(value: Any) -> str | dict[str, Any]:
     """A sensor: the name of a sensor preset, or an inline ``{width_mm, height_mm[, coc_mm]}``."""
     if isinstance(value, Mapping):
@@ -241,40 +278,6 @@ def sensor_ref(value: Any) -> str | dict[str, Any]:
     return reference(value)
 
 
-_ASPHERIC_TERM = re.compile(r"^a([0-9]+)$")
-
-
-def _aspheric(value: Any) -> dict[str, float]:
-    if not isinstance(value, Mapping):
-        raise Bad(f"expected a mapping such as {{a4: 1.2e-5, a6: ...}}, got {show(value)}")
-    out = {}
-    for key, coefficient in value.items():
-        match = _ASPHERIC_TERM.match(str(key).strip().lower())
-        if not match or not 2 <= int(match.group(1)) <= 30:
-            raise Bad(f"term {show(key)} is not one of a2 ... a30 (aN: coefficient of r^N)")
-        try:
-            out[str(key)] = finite(coefficient)
-        except Bad as error:
-            raise Bad(f"{key}: {error}") from None
-    return out
-
-
-def _radius(value: Any) -> float:
-    if isinstance(value, str) and value.strip().lower() in {"inf", ".inf", "+inf", "infinity", "flat"}:
-        return math.inf
-    number = _real(value, "mm")
-    if number == 0:
-        raise Bad("must not be 0 (write inf for a flat surface)")
-    return number
-
-
-def _thickness(value: Any) -> float:
-    number = finite(value)
-    if number < 0:
-        raise Bad(f"must be >= 0 mm, got {value!r}")
-    return number
-
-
 def _index(value: Any) -> float:
     number = finite(value)
     if number < 1.0:
@@ -282,40 +285,58 @@ def _index(value: Any) -> float:
     return number
 
 
-SURFACE_FIELDS: dict[str, Callable[[Any], Any]] = {
-    "radius_mm": _radius,
-    "thickness_mm": _thickness,
-    "n": _index,
-    "semi_diameter_mm": positive_mm,
-    "stop": boolean,
-    "conic": finite,
-    "aspheric": _aspheric,
-    "name": text,
-    "glass": text,
-    "note": text,
-}
+def surfaces(value: Any) -> list[Any]:
+    """The surfaces of a prescription, from the object side: a non-empty list.
 
-
-def surfaces(value: Any) -> list[dict[str, Any]]:
-    """The surfaces of a prescription, from the object side; exactly one has ``stop: true``."""
+    What each surface holds (and the one stop) is checked with the rest of the
+    prescription by :func:`camtool.optics.prescription.prescription_from_mapping`
+    (:func:`_check_prescription`), the one validation of a prescription.
+    """
     if not isinstance(value, list) or not value:
         raise Bad(f"expected a non-empty list of surfaces, got {show(value)}")
-    out = []
-    for number, raw in enumerate(value, start=1):
-        if not isinstance(raw, Mapping):
-            raise Bad(f"surface {number} must be a mapping, got {show(raw)}")
-        record, problems = check_fields(raw, SURFACE_FIELDS, ("radius_mm", "thickness_mm", "n"))
-        if problems:
-            key, problem = problems[0]
-            raise Bad(f"surface {number}, {key}: {problem}")
-        out.append(record)
-    stops = [i for i, s in enumerate(out, start=1) if s.get("stop")]
-    if len(stops) != 1:
-        found = "surfaces " + ", ".join(map(str, stops)) if stops else "none"
-        raise Bad(f"exactly one surface must have stop: true (found {found})")
-    if out[-1]["thickness_mm"] <= 0:
-        raise Bad("the last thickness_mm (the back focal distance) must be > 0")
-    return out
+    return value
+
+
+def reciprocity_exponent(value: Any) -> float:
+    """A Schwarzschild exponent p for t_c = t_m^p: a plain number from 1 to 3.
+
+    >>> reciprocity_exponent(1.31)
+    1.31
+    """
+    number = _real(value)
+    if not 1.0 <= number <= 3.0:
+        raise Bad(f"must be from 1 to 3, got {value!r}")
+    return number
+
+
+def film_points(value: Any) -> tuple[tuple[float, Any], ...]:
+    """A film's published reciprocity table: [metered s, adjusted s] or [metered s, "+1/3 stops"] pairs.
+
+    Metered times increase; an adjusted time is at least the metered one; a
+    correction is written ``+N stops`` (N a number or a fraction).
+
+    >>> film_points([[1, 2], [10, "+2 stops"]])
+    ((1.0, 2.0), (10.0, '+2 stops'))
+    """
+    if not isinstance(value, (list, tuple)) or not value:
+        raise Bad(f"expected a list of [metered s, adjusted s or '+N stops'] pairs, got {show(value)}")
+    out: list[tuple[float, Any]] = []
+    for pair in value:
+        if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+            raise Bad(f"each point is [metered s, adjusted s or '+N stops'], got {show(pair)}")
+        metered = positive(pair[0])
+        given = pair[1]
+        if isinstance(given, str):
+            if not re.fullmatch(r"\s*\+?\d+(?:\.\d+)?(?:\s*/\s*\d+)?\s*stops?\s*", given):
+                raise Bad(f"a correction is written '+1/3 stops' or '+1 stops', got {show(given)}")
+        elif positive(given) < metered:
+            raise Bad(f"the adjusted time {given!r} s is shorter than the metered {metered:g} s")
+        else:
+            given = float(given)
+        if out and metered <= out[-1][0]:
+            raise Bad(f"metered times must increase ({metered:g} s after {out[-1][0]:g} s)")
+        out.append((metered, given))
+    return tuple(out)
 
 
 # --- the keys of each kind ------------------------------------------------------------------
@@ -363,6 +384,10 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "f_number_min_tele": positive,
         "min_focus_mm": positive_mm,
         "max_magnification": positive,
+        "min_magnification": positive,
+        "close_focus": close_focus_rows,
+        "t_number_min": positive,
+        "equivalent_focal_length_mm": positive_mm,
         "pupil_magnification": positive,
         "hiatus_mm": finite,
         "prescription": reference,
@@ -400,6 +425,13 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "coc": _length_with_default("mm", allow_inf=False),
         "coc_mm": positive_mm,
     },
+    "film": {
+        **_COMMON,
+        "p": reciprocity_exponent,
+        "threshold_s": positive,
+        "points": film_points,
+        "valid_to_s": positive,
+    },
 }
 
 REQUIRED = {
@@ -408,6 +440,7 @@ REQUIRED = {
     "lens": ("id",),
     "prescription": ("id", "surfaces"),
     "scene": ("id",),
+    "film": ("id",),
 }
 
 REFERENCES = {
@@ -501,6 +534,32 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
             return [("f_number_min_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
         if widest is None or tele < widest:
             return [("f_number_min_tele", "needs f_number_min and must be >= it")]
+    t_stop = record.get("t_number_min")
+    if t_stop is not None and widest is not None and t_stop < widest:
+        return [("t_number_min", f"a T-stop cannot be below the f-number ({widest:g})")]
+    low, high = record.get("min_magnification"), record.get("max_magnification")
+    if low is not None and high is not None and low > high:
+        return [("min_magnification", f"must be <= max_magnification ({high:g})")]
+    if "close_focus" in record:
+        return _check_close_focus(record)
+    return []
+
+
+def _check_close_focus(record: dict[str, Any]) -> list[tuple[str, str]]:
+    """A zoom's per-focal-length rows lie in its range and agree with its lens-level figures."""
+    rows = record["close_focus"]
+    if "focal_min_mm" not in record:
+        return [("close_focus", "applies only to a zoom (focal_min_mm/focal_max_mm); a prime has min_focus_mm")]
+    low, high = record["focal_min_mm"], record["focal_max_mm"]
+    outside = [r["focal_length_mm"] for r in rows if not low - 0.5 <= r["focal_length_mm"] <= high + 0.5]
+    if outside:
+        return [("close_focus", f"focal length {outside[0]:g} mm is outside {low:g}-{high:g} mm")]
+    shortest = min(r["min_focus_mm"] for r in rows)
+    if "min_focus_mm" in record and not math.isclose(record["min_focus_mm"], shortest, abs_tol=0.5):
+        return [("min_focus_mm", f"must be the shortest closest focus of close_focus ({shortest:g} mm)")]
+    largest = max((r["max_magnification"] for r in rows if "max_magnification" in r), default=None)
+    if largest is not None and record.get("max_magnification", math.inf) < largest - 1e-9:
+        return [("max_magnification", f"must be at least the largest of close_focus ({largest:g})")]
     return []
 
 
@@ -515,10 +574,38 @@ def _check_scene(record: dict[str, Any]) -> list[tuple[str, str]]:
     return problems
 
 
+def _check_prescription(record: dict[str, Any]) -> list[tuple[str, str]]:
+    """The prescription as :mod:`camtool.optics.prescription` validates it; a surface's problem is on ``surfaces``."""
+    from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
+
+    try:
+        prescription_from_mapping(optics_mapping(record), source=record["id"])
+    except PrescriptionError as error:
+        if error.surface is not None:
+            return [("surfaces", f"surface {error.surface}, {error.key}: {error.problem}")]
+        return [("surfaces" if error.key == "stop" else error.key, error.problem)]
+    return []
+
+
+def optics_mapping(record: Mapping[str, Any]) -> dict[str, Any]:
+    """The keys of a prescription record that :func:`camtool.optics.prescription.prescription_from_mapping` reads."""
+    return {key: value for key, value in record.items() if not str(key).startswith("_")}
+
+
+def _check_film(record: dict[str, Any]) -> list[tuple[str, str]]:
+    if ("p" in record) == ("points" in record):
+        return [("p", "give p (an exponent) or points (a published table), one of them")]
+    if "points" in record and "threshold_s" in record:
+        return [("threshold_s", "applies to p; a table starts where its first point does")]
+    return []
+
+
 _CROSS_CHECKS: dict[str, Callable[[dict[str, Any]], list[tuple[str, str]]]] = {
     "camera": _check_camera,
     "lens": _check_lens,
+    "prescription": _check_prescription,
     "scene": _check_scene,
+    "film": _check_film,
 }
 
 
@@ -606,10 +693,11 @@ class Camera:
 
 @dataclass(frozen=True)
 class Prescription:
-    """A lens prescription preset; ``data`` is the validated mapping for :mod:`camtool.optics`.
+    """A lens prescription preset: its names and ``optics``, the validated lens.
 
-    Only the structure is checked here (keys, types, one stop); tracing it is
-    :func:`camtool.optics.prescription.prescription_from_mapping`'s job.
+    ``optics`` is the :class:`camtool.optics.prescription.Prescription` that
+    :func:`camtool.optics.prescription.prescription_from_mapping` built from
+    ``data`` (the mapping as written), the one validation of a prescription.
     """
 
     id: str
@@ -623,18 +711,19 @@ class Prescription:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    optics: Any = field(default=None, compare=False, hash=False, repr=False)
 
     kind = "prescription"
 
     @property
     def surfaces(self) -> list[dict[str, Any]]:
-        """The surface mappings, from the object side."""
+        """The surface mappings as written, from the object side."""
         return list(self.data["surfaces"])
 
     @property
     def stop_index(self) -> int:
         """0-based index of the aperture stop."""
-        return next(i for i, s in enumerate(self.data["surfaces"]) if s.get("stop"))
+        return int(self.optics.stop_index)
 
 
 @dataclass(frozen=True)
@@ -644,7 +733,8 @@ class Lens:
     ``f_number_min`` is the widest aperture (smallest f-number), at the short
     end for a variable-aperture zoom, whose widest f-number at the long end is
     ``f_number_min_tele``. ``min_focus_mm`` is measured from the sensor plane.
-    ``prescription`` is the resolved prescription mapping (or None).
+    ``prescription`` is the resolved, validated
+    :class:`camtool.optics.prescription.Prescription` (or None).
 
     >>> zoom = Lens("z", "Z", 24.0, 70.0, 4.0, 22.0, f_number_min_tele=5.6)
     >>> zoom.is_zoom, zoom.widest_f_number(24.0), zoom.widest_f_number(70.0)
@@ -663,7 +753,7 @@ class Lens:
     pupil_magnification: float | None = None
     hiatus_mm: float | None = None
     prescription_id: str | None = None
-    prescription: dict[str, Any] | None = field(default=None, compare=False, hash=False, repr=False)
+    prescription: Any = field(default=None, compare=False, hash=False, repr=False)
     sensor_id: str | None = None
     mount: str | None = None
     aliases: tuple[str, ...] = ()
@@ -729,3 +819,44 @@ class Scene:
 
 
 Preset = Sensor | Camera | Lens | Prescription | Scene
+
+
+@dataclass(frozen=True)
+class Film:
+    """A film's reciprocity data from a preset file: an exponent ``p`` or a table ``points``.
+
+    :meth:`reciprocity` gives the :class:`camtool.exposure.reciprocity.Film`
+    the exposure calculator uses.
+
+    >>> Film("my-film", "My film", p=1.4).reciprocity().p
+    1.4
+    """
+
+    id: str
+    name: str
+    p: float | None = None
+    threshold_s: float | None = None
+    points: tuple[tuple[float, Any], ...] = ()
+    valid_to_s: float | None = None
+    aliases: tuple[str, ...] = ()
+    source: str | None = None
+    notes: str | None = None
+    origin: str | None = None
+    tier: str | None = None
+
+    kind = "film"
+
+    def reciprocity(self) -> Any:
+        """This film as the exposure calculator's film (exponent or interpolated table)."""
+        from camtool.exposure.reciprocity import film_from_entry
+
+        entry: dict[str, Any] = {"id": self.id, "name": self.name, "aliases": list(self.aliases),
+                                 "source": self.source or f"preset file {self.origin}"}
+        if self.p is not None:
+            entry["p"] = self.p
+            entry["threshold_s"] = 1.0 if self.threshold_s is None else self.threshold_s
+        if self.points:
+            entry["points"] = [list(point) for point in self.points]
+        if self.valid_to_s is not None:
+            entry["valid_to_s"] = self.valid_to_s
+        return film_from_entry(entry)

@@ -1,0 +1,103 @@
+"""``camtool flash``: guide-number arithmetic, GN = distance × f-number at ISO 100."""
+
+from __future__ import annotations
+
+import click
+
+from camtool.cli.command import Output, camtool_command, combine_params
+from camtool.cli.common import rows_from
+from camtool.cli.exposure import single
+from camtool.cli.options import DISTANCE_M, library_errors, param_named
+from camtool.cli.params import FNumberType, NumberType, _ListType, flatten
+from camtool.core.units import UnitError
+from camtool.render.columns import TEXT, Column
+
+KEYS = ["guide_number_m", "guide_number_at_iso_m", "distance_mm", "f_number", "iso", "solved"]
+COLUMNS = [
+    Column("gn", "GN (ISO 100)", TEXT),
+    Column("gn_iso", "GN at ISO", TEXT),
+    Column("distance", "distance", TEXT),
+    Column("aperture", "N", TEXT),
+    Column("iso_text", "ISO", TEXT),
+]
+FEET_PER_METRE = 1 / 0.3048
+SOLVED = {"guide_number": "guide number", "distance": "distance", "f_number": "f-number", "iso": "ISO"}
+
+
+class GuideNumberType(_ListType):
+    """A guide number in metres (a bare number or 40m) or feet (131ft)."""
+
+    name = "guide number"
+    valid = "> 0 (metres, or feet with ft: 40, 40m, 131ft)"
+
+    def parse(self, text: str) -> float:
+        raw = str(text).strip().lower()
+        scale = 1.0
+        if raw.endswith("ft"):
+            raw, scale = raw[:-2].strip(), 0.3048
+        elif raw.endswith("m"):
+            raw = raw[:-1].strip()
+        try:
+            return float(raw) * scale
+        except ValueError:
+            raise UnitError(f"{text!r} is not a guide number (examples: 40, 40m, 131ft)") from None
+
+
+@camtool_command("flash", keys=KEYS)
+@click.option("--gn", "guide_number", type=GuideNumberType(), multiple=True,
+              help="Guide number in metres (40, 40m) or feet (131ft), at --gn-iso.")
+@click.option("--gn-iso", type=NumberType(1, 1e7), default="100", show_default=True,
+              help="The ISO the guide number is quoted at (makers quote ISO 100, some ISO 200).")
+@click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
+              help="Flash-to-subject distance (bare numbers are metres; 10ft).")
+@click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True, help="f-number: 8, f/8 or f8.")
+@click.option("--iso", type=NumberType(1, 1e7), multiple=True, help="ISO speed in use.")
+def flash(ctx: click.Context, guide_number, gn_iso, distance, f_number, iso, fmt, units, preset_files) -> Output:
+    """Flash guide numbers: give three of --gn, -s, -N, --iso and get the fourth.
+
+    GN = distance × f-number at the ISO the guide number is quoted at (100);
+    at ISO S the guide number is GN·√(S/100), so four times the ISO doubles
+    the distance or the f-number. Guide numbers are in metres (feet with ft).
+
+    \b
+    Examples:
+      camtool flash --gn 20 -s 5 --iso 100
+      camtool flash --gn 51 --gn-iso 200 -s 9 --iso 800
+      camtool flash --gn 40 -N 8 --iso 400
+      camtool flash -s 3 -N 5.6 --iso 100
+    """
+    from camtool.core.errors import DomainError
+    from camtool.exposure.flash import solve_flash
+
+    lists = {"guide_number_m": flatten(guide_number), "distance_m": [d / 1000.0 for d in flatten(distance)],
+             "f_number": flatten(f_number), "iso": flatten(iso)}
+    given = {name: values for name, values in lists.items() if values}
+    if len(given) != 3:
+        names = {"guide_number_m": "--gn", "distance_m": "-s", "f_number": "-N", "iso": "--iso"}
+        missing = [names[n] for n in lists if n not in given]
+        raise click.UsageError(f"Give three of --gn, -s, -N, --iso and get the fourth (left out: {', '.join(missing)}).",
+                               ctx)
+    count, columns = combine_params(ctx, *given.values())
+    with library_errors(ctx):
+        try:
+            result = solve_flash(**dict(zip(given, columns)), quoted_iso=single(ctx, gn_iso, 100.0))
+        except DomainError as error:
+            raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, error.param)) from None
+    rows = rows_from(count, {"guide_number_m": result.guide_number_m, "guide_number_at_iso_m":
+                             result.guide_number_at_iso_m, "distance_mm": result.distance_m * 1000.0,
+                             "f_number": result.f_number, "iso": result.iso, "solved": result.solved})
+    imperial = units == "imperial"
+    for row in rows:
+        row["gn"] = _gn(row["guide_number_m"], imperial)
+        row["gn_iso"] = _gn(row["guide_number_at_iso_m"], imperial)
+        d = row["distance_mm"] / 1000.0
+        row["distance"] = f"{d * FEET_PER_METRE:.3g} ft" if imperial else f"{d:.3g} m"
+        row["aperture"] = f"f/{row['f_number']:.3g}"
+        row["iso_text"] = f"{row['iso']:.4g}"
+    note = f"solved: {SOLVED[result.solved]} · GN = distance × N at ISO 100, × √(ISO/100) · guide numbers in " \
+           f"{'feet' if imperial else 'metres'}"
+    return Output(rows, COLUMNS, KEYS, note if fmt == "table" else "")
+
+
+def _gn(metres: float, imperial: bool) -> str:
+    return f"{metres * FEET_PER_METRE:.3g}" if imperial else f"{metres:.3g}"
