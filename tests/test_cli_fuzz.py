@@ -8,8 +8,8 @@ runs in-process through click's CliRunner and must:
 - raise nothing but ``SystemExit`` (no traceback), with exit status 0, 1 or 2;
 - on failure print one line on standard error, ``Error: ...``, naming an option
   (or the argument) the user typed;
-- with ``--format json``, print JSON without NaN or Infinity, no negative
-  ``*_mm`` length, and near ≤ focus ≤ far in every row.
+- never print ``nan``; with ``--format json``, print JSON without NaN or
+  Infinity, no negative ``*_mm`` length, and near ≤ focus ≤ far in every row.
 
 The run is derandomized (the same command lines every time). In CI it tries
 ``CAMTOOL_FUZZ_EXAMPLES`` command lines (default 2,000, under a minute on two
@@ -238,6 +238,8 @@ def check(argv: list[str], result: Any) -> str:
         if not OPTION.search(lines[0]) and not typed_path:
             return f"error names no option: {lines[0]}"
         return ""
+    if re.search(r"\bnan\b", result.stdout, flags=re.I):
+        return "nan printed"
     formats = [argv[i + 1] for i, a in enumerate(argv[:-1]) if a == "--format"]
     if not formats or formats[-1] != "json" or "--field" in argv:
         return ""

@@ -18,6 +18,7 @@ from camtool.cli.options import (
     sensor_options,
 )
 from camtool.cli.params import NumberType, flatten
+from camtool.core import ranges
 from camtool.dof.inverse import focus_for_limits, focus_for_limits_at
 from camtool.geometry.thinlens import focus_setting
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
@@ -47,7 +48,7 @@ INVERSE_COLUMNS = [
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres).")
-@click.option("-m", "--magnification", type=NumberType(1e-9, 1000.0), multiple=True,
+@click.option("-m", "--magnification", type=NumberType(*ranges.MAGNIFICATION), multiple=True,
               help="Wanted magnification (0.5 = 1:2) instead of -s.")
 @aperture_options
 @click.option("--near", type=DISTANCE_M, multiple=True, help="Inverse: wanted near limit (bare numbers are metres).")
