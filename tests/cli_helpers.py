@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import json
+import signal
+from collections.abc import Iterator
 from typing import Any
 
+import pytest
 from click.testing import CliRunner, Result
 
 from camtool.cli import cli
@@ -24,3 +27,19 @@ def run_json(*args: str) -> list[dict[str, Any]]:
     rows = json.loads(result.stdout)
     assert isinstance(rows, list)
     return rows
+
+
+@pytest.fixture(autouse=True)
+def time_bound() -> Iterator[None]:
+    """Every test here ends within 60 s: a hang fails instead of stalling the run."""
+
+    def expire(signum: int, frame: object) -> None:
+        raise TimeoutError("test took longer than 60 s")
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.alarm(60)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)

@@ -6,7 +6,7 @@ import json
 import random
 
 import pytest
-from cli_helpers import run, run_json
+from cli_helpers import run, run_json, time_bound  # noqa: F401 - an autouse fixture
 
 from camtool.dof.closed import thin_dof
 from camtool.dof.ladder import depth_of_field
@@ -70,22 +70,61 @@ def test_command_line_options_apply_to_every_row_and_csv_feeds_back() -> None:
 
 def test_bad_row_stops_with_its_number_and_column() -> None:
     code, out, err = batch("f-number,distance\n8,3\nx,3\n", "dof", "-f", "50", "--format", "json")
-    assert code == 2 and out == ""
+    # the rows before the bad one, as a complete JSON document
+    assert code == 2 and [row["f_number"] for row in json.loads(out)] == [8.0]
     assert err == ("Error: --batch row 2, column 'f-number': Invalid value for '-N' / '--f-number': "
                    "'x' is not an f-number (examples: 8, f/8, f8)\n")
 
 
-def test_skip_reports_and_goes_on() -> None:
-    code, out, err = batch("f-number,distance\n8,3\nx,3\n8,0.01\n4,2\n", "dof", "-f", "50", "--format", "json",
+def test_skip_keeps_each_bad_row_in_its_place_reports_in_order_and_exits_1() -> None:
+    text = "f-number,distance\n8,3\nx,3\n8,0.01\n4,2\n"
+    code, out, err = batch(text, "dof", "-f", "50", "--format", "json", "--on-error", "skip")
+    assert code == 1
+    rows = json.loads(out)
+    assert [r["f_number"] for r in rows] == [8.0, None, None, 4.0]
+    assert rows[1]["near_mm"] is None and rows[1]["error"].startswith("--batch row 2, column 'f-number'")
+    assert rows[2]["error"].startswith("--batch row 3: Invalid value for '-s'")
+    assert "error" not in rows[0] and "error" not in rows[3]
+    # a parse error (row 2) and a computing error (row 3) on stderr in row order, then a count
+    lines = err.splitlines()
+    assert [line.split(":")[1].strip().split(",")[0] for line in lines[:2]] == ["--batch row 2", "--batch row 3"]
+    assert lines[2] == "camtool: 2 of 4 rows skipped"
+    code, out, _ = batch(text, "dof", "-f", "50", "--format", "csv", "--on-error", "skip")
+    lines = out.splitlines()
+    assert code == 1 and len(lines) == 5 and lines[2] == lines[3] == "," * 13
+    code, out, _ = batch(text, "dof", "-f", "50", "--field", "f_number", "--on-error", "skip")
+    assert code == 1 and out == "8.0\n\n\n4.0\n"
+
+
+def test_extra_cells_and_bad_json_lines_are_skippable() -> None:
+    code, out, err = batch("f-number,distance\n8,3\n8,3,4\n4,2\n", "dof", "-f", "50", "--field", "f_number",
                            "--on-error", "skip")
-    assert code == 0
-    assert [r["f_number"] for r in json.loads(out)] == [8.0, 4.0]
-    assert err.count("(skipped)") == 2 and "row 3" in err
+    assert code == 1 and out == "8.0\n\n4.0\n" and "row 2: 3 cells, more than the 2 header columns" in err
+    text = '{"f_number": 8, "distance": 3}\n{"f_number": 8,\n[1]\n{"f_number": 4, "distance": 2}\n'
+    code, out, err = batch(text, "dof", "-f", "50", "--field", "f_number", "--on-error", "skip")
+    assert code == 1 and out == "8.0\n\n\n4.0\n"
+    assert "row 2: not valid JSON" in err and "row 3: expected a JSON object" in err
 
 
-def test_unknown_column() -> None:
-    code, _, err = batch("focal,f-number\n50,8\n", "dof", "-s", "3")
-    assert code == 2 and "column 'focal' names no option" in err
+def test_other_columns_pass_through_so_results_join_back() -> None:
+    # exiftool -csv -FocalLength -FNumber writes SourceFile first and "50.0 mm" cells
+    text = "SourceFile,FocalLength,FNumber\na.jpg,50.0 mm,8.0\nb.jpg,85.0 mm,x\nc.jpg,24.0 mm,4.0\n"
+    code, out, _ = batch(text, "dof", "-s", "3m", "--format", "csv", "--on-error", "skip")
+    lines = out.splitlines()
+    assert code == 1
+    assert lines[0].startswith("SourceFile,focal_length_mm,f_number,")
+    assert lines[1].startswith("a.jpg,50.0,8.0,") and lines[2] == "b.jpg" + "," * 14
+    assert lines[3].startswith("c.jpg,24.0,4.0,")
+    code, out, _ = batch('{"file": "a.jpg", "focal_length": 50, "f_number": 8}\n', "dof", "-s", "3", "--format",
+                         "json")
+    assert code == 0 and json.loads(out)[0]["file"] == "a.jpg"
+
+
+def test_near_miss_of_an_option_name_is_an_error_not_a_passed_column() -> None:
+    code, _, err = batch("focal-lenght,f-number\n50,8\n", "dof", "-s", "3")
+    assert code == 2
+    assert err == ("Error: --batch: column 'focal-lenght' names no option; did you mean --focal-length? (a column "
+                   "that names no option is passed through to the output: rename it to keep it)\n")
 
 
 def test_field_values_for_shell() -> None:
@@ -106,5 +145,5 @@ def test_unknown_field_lists_keys() -> None:
 def test_stop_names_the_bad_row_not_the_first_of_its_group() -> None:
     # rows 1-3 share their settings and run as one vectorised group; only row 3 is too close to focus
     code, out, err = batch("f-number,distance\n8,3\n11,2\n8,0.01\n", "dof", "-f", "50", "--format", "json")
-    assert code == 2 and out == ""
+    assert code == 2 and [row["f_number"] for row in json.loads(out)] == [8.0, 11.0]
     assert err.startswith("Error: --batch row 3: Invalid value for '-s' / '--distance': 10 mm is outside")

@@ -19,7 +19,7 @@ LAYERS = [
     {"optics"},
     {"dof"},
     {"presets", "render"},
-    {"api"},
+    {"api", "exif"},
     {"cli", "__main__"},
 ]
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import pty
+import re
 import shutil
 import subprocess
 import sys
@@ -111,3 +112,135 @@ def test_man_page_is_installed_beside_the_entry_point() -> None:
     result = sh("man -w camtool-dof", {"MANPATH": ""})
     assert result.returncode == 0
     assert result.stdout.strip().endswith("share/man/man1/camtool-dof.1")
+
+
+# --- pipes, write errors and hostile batch files, in a real process with time (and memory) bounds ---
+
+def _camtool_env(extra: dict[str, str] | None = None) -> dict[str, str]:
+    return {**ENV, "PATH": os.path.dirname(CAMTOOL) + os.pathsep + ENV.get("PATH", ""), **(extra or {})}
+
+
+MANY = "-N " + ",".join(str(2 + i / 10) for i in range(30)) + " -s " + ",".join(f"{i + 1}m" for i in range(100))
+
+
+@pytest.mark.parametrize("fmt", ["table", "csv", "json"])
+def test_a_closed_pipe_is_a_normal_end(fmt: str) -> None:
+    # 3000 rows: far more than a pipe holds, so camtool is still writing when head exits
+    script = f"camtool dof -f 50 {MANY} --format {fmt} | head -1; echo \"status=${{PIPESTATUS[0]}}\""
+    result = subprocess.run(["bash", "-c", script], capture_output=True, text=True, env=_camtool_env(), timeout=60)
+    assert result.stdout.splitlines()[-1] == "status=0"
+    assert result.stderr == ""
+
+
+def test_a_closed_pipe_ends_a_batch_quietly_too() -> None:
+    rows = "".join(f"50,8,{d}\n" for d in range(1, 30001))
+    for fmt in ("json", "table"):
+        result = subprocess.run(["bash", "-c", f"camtool dof --batch - --format {fmt} | head -1; "
+                                 "echo \"status=${PIPESTATUS[0]}\""], input="focal-length,f-number,distance\n" + rows,
+                                capture_output=True, text=True, env=_camtool_env(), timeout=120)
+        assert result.stdout.splitlines()[-1] == "status=0" and result.stderr == ""
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full here")
+@pytest.mark.parametrize("fmt", ["table", "csv", "json"])
+def test_a_full_disk_is_a_one_line_error(fmt: str) -> None:
+    result = sh(f"camtool dof -f 50 -N 8 -s 3 --format {fmt} > /dev/full")
+    assert result.returncode == 1
+    assert result.stderr == "Error: cannot write the output: no space left on device\n"
+
+
+def test_a_closed_stdout_is_a_one_line_error() -> None:
+    result = sh("camtool dof -f 50 -N 8 -s 3 >&-")
+    assert result.returncode == 1
+    assert result.stderr == "Error: cannot write the output: standard output is closed\n"
+    # an error in the input is still reported as such
+    assert sh("camtool dof -f 50 -N 8 -s 0.01 >&-").returncode == 2
+
+
+def test_an_ascii_only_stdout_gets_ascii_stand_ins() -> None:
+    result = sh("camtool dof -f 24 -N 8,16 -s inf", {"PYTHONIOENCODING": "ascii"})
+    assert result.returncode == 0 and result.stderr == ""
+    assert result.stdout.isascii()
+    lines = result.stdout.splitlines()
+    assert lines[2].startswith("-----") and "inf" in lines[3] and "| focus, H hyperfocal, > inf" in lines[-1]
+    csv_out = sh("camtool dof -f 24 -N 8 -s inf --format csv", {"PYTHONIOENCODING": "ascii"})
+    assert csv_out.returncode == 0 and csv_out.stdout.isascii()
+
+
+def _bounded(args: list[str], path: str, memory_mib: int = 1024) -> subprocess.CompletedProcess[bytes]:
+    """Run camtool on a batch file with an address-space limit and a time limit."""
+    import resource
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (memory_mib << 20, memory_mib << 20))
+
+    env = _camtool_env({"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"})
+    return subprocess.run([CAMTOOL, *args, "--batch", path], capture_output=True, env=env, timeout=60,
+                          preexec_fn=limit)
+
+
+def test_hostile_batch_files_are_one_line_errors_in_bounded_time_and_memory(tmp_path) -> None:
+    header = b"focal-length,f-number,distance\n"
+    files = {
+        "latin1.csv": header + "50,8,3\n# caf\xe9\n".encode("latin-1"),  # Excel's "CSV" on Windows
+        "utf16-no-bom.csv": (header + b"50,8,3\n").decode().encode("utf-16-le"),
+        # a 64 MiB cell with no line break: read in bounded pieces, not whole
+        "huge-cell.csv": header + b"50,8," + b"3" * (64 << 20) + b"\n50,8,3\n",
+    }
+    for name, data in files.items():
+        (tmp_path / name).write_bytes(data)
+    latin = _bounded(["dof", "--format", "csv"], str(tmp_path / "latin1.csv"))
+    assert latin.returncode == 1
+    assert latin.stderr.decode() == (f"Error: --batch {tmp_path / 'latin1.csv'}: not UTF-8 text (invalid "
+                                     "continuation byte, byte 0xe9); save it as UTF-8 (in Excel: CSV UTF-8)\n")
+    utf16 = _bounded(["dof", "--format", "csv"], str(tmp_path / "utf16-no-bom.csv"))
+    assert utf16.returncode == 1 and b"UTF-16" in utf16.stderr and utf16.stderr.count(b"\n") == 1
+    huge = _bounded(["dof", "--format", "csv", "--on-error", "skip"], str(tmp_path / "huge-cell.csv"), 512)
+    assert huge.returncode == 1, huge.stderr
+    assert huge.stderr.decode().splitlines() == ["Error: --batch row 1: a cell longer than 128 KiB (skipped)",
+                                                 "camtool: 1 of 2 rows skipped"]
+    assert huge.stdout.decode().splitlines()[1] == "," * 13
+    stop = _bounded(["dof", "--format", "json"], str(tmp_path / "huge-cell.csv"), 512)
+    assert stop.returncode == 2 and stop.stdout == b""
+
+
+def test_utf16_with_its_byte_order_mark_and_a_utf8_bom_are_read(tmp_path) -> None:
+    text = "focal-length,f-number,distance\n50,8,3\n"
+    expected = sh("camtool dof -f 50 -N 8 -s 3 --format csv").stdout
+    for name, data in (("utf16.csv", text.encode("utf-16")), ("bom.csv", text.encode("utf-8-sig"))):
+        (tmp_path / name).write_bytes(data)
+        result = _bounded(["dof", "--format", "csv"], str(tmp_path / name))
+        assert result.returncode == 0 and result.stdout.decode() == expected
+
+
+def test_a_fifo_is_read_like_a_pipe_and_a_directory_is_an_error(tmp_path) -> None:
+    fifo = tmp_path / "scenes"
+    os.mkfifo(fifo)
+    result = sh(f"printf 'focal-length,f-number,distance\\n50,8,3\\n' > {fifo} & camtool dof --batch {fifo} "
+                "--format json; wait")
+    assert result.returncode == 0 and json.loads(result.stdout)[0]["distance_mm"] == 3000.0
+    directory = sh(f"camtool dof --batch {tmp_path} --format json")
+    assert directory.returncode == 1 and directory.stdout == ""
+    assert directory.stderr == f"Error: --batch {tmp_path}: is a directory, not a file\n"
+
+
+def test_a_narrow_terminal_names_the_columns_left_out() -> None:
+    drawn = _in_terminal(["dof", "-f", "50", "-N", "2.8,4,8", "-s", "3"], {"COLUMNS": "60"})
+    assert "left out to fit 60 columns: rear, H (" in drawn
+    table = drawn.split("thin model")[0]
+    assert max(len(re.sub(r"\x1b\[[0-9;]*m", "", line)) for line in table.splitlines()) <= 60
+    assert "622.6" in drawn  # the front depth at f/8, whole
+
+
+def test_a_grid_of_a_million_rows_is_refused_without_the_memory_it_would_take() -> None:
+    import resource
+
+    many = ",".join(str(1 + i / 100) for i in range(1000))
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (512 << 20, 512 << 20))
+
+    result = subprocess.run([CAMTOOL, "dof", "-f", "50", "-N", many, "-s", many], capture_output=True, text=True,
+                            env=_camtool_env({"OPENBLAS_NUM_THREADS": "1"}), timeout=30, preexec_fn=limit)
+    assert result.returncode == 2 and result.stdout == ""
+    assert "1,000,000 combinations; the limit is 100,000" in result.stderr and "--batch" in result.stderr

@@ -1,38 +1,66 @@
 """``--batch FILE``: one scene per input row, streamed in chunks through the vectorised core.
 
 The input is CSV with a header row, or JSON lines (one object per line); the
-format is told by the first non-blank character (``{`` means JSON lines).
-Columns are named like the command's long options (``focal-length``,
-``f_number``, ``--distance``: dashes, underscores and leading dashes are all
-accepted), or like the output keys with a unit suffix (``distance_mm``), which
-makes camtool's own CSV a valid batch file (its other output keys are passed
-over). Cells may carry units (``3m``);
-bare numbers mean what they mean on the command line, except in ``*_mm``
-columns, which are millimetres. Options given on the command line apply to
-every row; a column overrides them.
+format is told by the first non-blank character (``{`` means JSON lines). The
+file is UTF-8, with or without a byte-order mark (Excel's "CSV UTF-8"); a
+UTF-16 file with its byte-order mark is read too. Columns are named like the
+command's long options (``focal-length``, ``f_number``, ``--distance``,
+``FNumber``: case, dashes, underscores and leading dashes do not matter), or
+like the output keys with a unit suffix (``distance_mm``), which makes
+camtool's own CSV a valid batch file (its other output keys are passed
+over). Any other column (``SourceFile``, ``file``, a note) is passed through:
+it leads each output row unchanged, so results join back to their inputs; a
+column whose name is a near miss of an option's is an error instead. Cells
+may carry units (``3m``); bare numbers mean what they mean on the command
+line, except in ``*_mm`` columns, which are millimetres. Options given on the
+command line apply to every row; a column overrides them.
 
-Rows are read in chunks of :data:`CHUNK` rows; within a chunk, rows sharing
-the same non-numeric settings (sensor, model, ...) are computed in one
-vectorised call, and the output keeps the input order. Memory stays bounded
-for JSON, CSV and ``--field`` output; a table gets one table per chunk.
+Rows are read in chunks of :data:`CHUNK` rows and parsed a column at a time:
+plain numbers (and cells that all share one unit, ``3.2m``) at once, other
+cells one by one; a validity mask finds the bad cells, which alone are
+parsed again for their messages. Within a chunk, rows sharing the same
+non-numeric settings (sensor, model, ...) are computed in one vectorised
+call (a failing call is bisected to find its bad rows), and the output
+keeps the input order, written column by column. Output goes through the one
+:class:`~camtool.render.output.RowWriter`: memory stays bounded for JSON, CSV
+and ``--field`` output; a table is drawn once at the end from every row.
+
+A bad row stops the run (exit 2) after the rows before it are written (JSON
+still a complete array); with ``--on-error skip`` it keeps its place in the
+output, is reported on standard error in row order, and the run exits 1.
 """
 
 from __future__ import annotations
 
+import codecs
 import csv
+import difflib
+import io
 import json
+import math
+import os
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from typing import IO, Any
 
 import click
 
-from camtool.cli.params import _ListType
-from camtool.cli.rows import ZIP, Output, check_fields, field_line
-from camtool.render.serial import plain
+from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType
+from camtool.cli.rows import ZIP, Output, open_writer
+from camtool.core.units import UnitError
+from camtool.render.columnar import ColumnRows, values_of
+from camtool.render.columns import TEXT, Column
+from camtool.render.output import RowWriter
 
 CHUNK = 20_000
-CONTROL = {"fmt", "units", "preset_files"}
+CONTROL = {"fmt", "units", "preset_files", "fields", "batch", "on_error"}
+CELL_LIMIT = 128 * 1024
+"""Longest cell, in characters (the csv module's limit); a longer one is a bad row."""
+LINE_LIMIT = 1024 * 1024
+"""Longest line read whole; the rest of a longer one is dropped and the row is bad."""
+
+PASS = ("", None)
+"""What :meth:`_Columns.resolve` returns for a column passed through to the output."""
 
 
 class BatchRowError(click.ClickException):
@@ -41,41 +69,136 @@ class BatchRowError(click.ClickException):
     exit_code = 2
 
 
+class BatchFileError(click.ClickException):
+    """A batch file that cannot be read (missing, a directory, not text): exit 1."""
+
+    exit_code = 1
+
+
 def _normalise(name: str) -> str:
     return name.strip().lstrip("-").replace("-", "_").lower()
 
 
-def _records(source: IO[str]) -> Iterator[tuple[int, dict[str, str]]]:
-    """(row number, {column: cell}) for each input row; row 1 is the first data row."""
+def _loose(name: str) -> str:
+    return _normalise(name).replace("_", "")
+
+
+def open_source(source: str) -> tuple[IO[str], str]:
+    """The batch text stream (``-`` is standard input) and the name errors call it.
+
+    UTF-8 with or without a byte-order mark, or UTF-16 with one; a FIFO
+    reads like a pipe; a directory or unreadable file is a :class:`BatchFileError`.
+    """
+    if source == "-":
+        binary: Any = sys.stdin.buffer
+        name = "standard input"
+    else:
+        name = source
+        if os.path.isdir(source):
+            raise BatchFileError(f"--batch {source}: is a directory, not a file")
+        try:
+            binary = open(source, "rb")  # noqa: SIM115 - closed by the caller through the text wrapper
+        except OSError as error:
+            raise BatchFileError(f"--batch {source}: cannot read it ({error.strerror})") from None
+    if not hasattr(binary, "peek"):
+        binary = io.BufferedReader(binary)
+    try:
+        head = binary.peek(4)[:4]
+    except OSError as error:
+        raise BatchFileError(f"--batch {name}: cannot read it ({error.strerror})") from None
+    if head.startswith(codecs.BOM_UTF8):
+        encoding = "utf-8-sig"
+    elif head.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        encoding = "utf-16"
+    else:
+        encoding = "utf-8"
+    return io.TextIOWrapper(binary, encoding=encoding, newline=""), name
+
+
+def _lines(source: IO[str], name: str) -> Iterator[str]:
+    """The lines of ``source``, none longer than :data:`LINE_LIMIT` (memory stays bounded)."""
+    while True:
+        try:
+            line = source.readline(LINE_LIMIT)
+        except OSError as error:  # e.g. standard input redirected from a directory
+            raise BatchFileError(f"--batch {name}: cannot read it ({error.strerror or error})") from None
+        if not line:
+            return
+        if len(line) >= LINE_LIMIT and not line.endswith("\n"):
+            while True:  # drop the rest of the over-long line; what is left fails as a too-long cell
+                rest = source.readline(LINE_LIMIT)
+                if not rest or rest.endswith("\n"):
+                    break
+            line += "\n"
+        yield line
+
+
+Record = tuple[int, Any, "str | None"]
+
+
+def _records(source: IO[str], name: str) -> Iterator[Record]:
+    """(row number, cells, None) per input row, or (row number, None, error) for a bad one.
+
+    CSV rows are lists of cells, after the header as row 0; JSON lines are dicts.
+    """
+    lines = _lines(source, name)
     first = ""
-    for line in source:
+    for line in lines:
         if line.strip():
             first = line
             break
     if not first:
         return
+    if "\x00" in first:
+        raise BatchFileError(f"--batch {name}: looks like UTF-16 text without a byte-order mark; "
+                             "save it as UTF-8 (in Excel: CSV UTF-8)")
     if first.lstrip().startswith("{"):
         number = 0
-        for line in _chain(first, source):
+        for line in _chain(first, lines):
             if not line.strip():
                 continue
             number += 1
             try:
                 record = json.loads(line)
             except json.JSONDecodeError as error:
-                raise BatchRowError(f"--batch row {number}: not valid JSON ({error.msg})") from None
+                yield number, None, f"--batch row {number}: not valid JSON ({error.msg})"
+                continue
             if not isinstance(record, dict):
-                raise BatchRowError(f"--batch row {number}: expected a JSON object")
-            yield number, {k: ("" if v is None else str(v)) for k, v in record.items()}
+                yield number, None, f"--batch row {number}: expected a JSON object"
+                continue
+            yield number, record, None
     else:
-        reader = csv.DictReader(_chain(first, source))
-        for number, record in enumerate(reader, start=1):
-            if None in record:
-                raise BatchRowError(f"--batch row {number}: more cells than header columns")
-            yield number, {k: (v or "") for k, v in record.items()}
+        reader = csv.reader(_chain(first, lines))
+        header = next(reader)
+        yield 0, header, None
+        number = 0
+        while True:
+            try:
+                cells = next(reader)
+            except StopIteration:
+                return
+            except csv.Error as error:
+                number += 1
+                yield number, None, f"--batch row {number}: {_csv_message(error)}"
+                continue
+            if not cells:
+                continue
+            number += 1
+            if len(cells) > len(header):
+                yield number, None, (f"--batch row {number}: {len(cells)} cells, more than the "
+                                     f"{len(header)} header columns")
+                continue
+            yield number, cells, None
 
 
-def _chain(first: str, rest: IO[str]) -> Iterator[str]:
+def _csv_message(error: csv.Error) -> str:
+    text = str(error)
+    if "field limit" in text:
+        return f"a cell longer than {CELL_LIMIT // 1024} KiB"
+    return f"not valid CSV ({text})"
+
+
+def _chain(first: str, rest: Iterator[str]) -> Iterator[str]:
     yield first
     yield from rest
 
@@ -84,34 +207,44 @@ class _Columns:
     """Maps input column names to the command's parameters (and unit suffixes)."""
 
     def __init__(self, command: click.Command) -> None:
-        self.params = {p.name: p for p in command.params if isinstance(p, click.Option) and p.name not in CONTROL}
+        self.params = {p.name: p for p in command.params
+                       if isinstance(p, click.Option) and p.name and p.name not in CONTROL}
         self.aliases: dict[str, tuple[str, str | None]] = {}
         for param in self.params.values():
+            assert param.name is not None
             for opt in param.opts:
-                self.aliases[_normalise(opt)] = (param.name, None)
-            self.aliases[_normalise(param.name)] = (param.name, None)
+                self.aliases[_loose(opt)] = (param.name, None)
+            self.aliases[_loose(param.name)] = (param.name, None)
         for key, target in _KEY_ALIASES.items():
             if target[0] in self.params:
-                self.aliases.setdefault(key, target)
-
-        self.ignored: frozenset[str] = getattr(command, "output_keys", frozenset())
+                self.aliases.setdefault(_loose(key), target)
+        self.ignored = {_loose(key) for key in getattr(command, "output_keys", frozenset())}
         self.known: dict[str, tuple[str, str | None] | None] = {}
+        self.passed: list[str] = []
 
     def resolve(self, column: str) -> tuple[str, str | None] | None:
-        """(parameter name, unit of bare numbers) for a column; None for an output key to pass over."""
+        """(parameter name, unit of bare numbers) for a column; None for an output key; PASS to pass through."""
         if column not in self.known:
-            self.known[column] = self._resolve(column)
+            target = self._resolve(column)
+            self.known[column] = target
+            if target == PASS:
+                self.passed.append(column)
         return self.known[column]
 
     def _resolve(self, column: str) -> tuple[str, str | None] | None:
-        key = _normalise(column)
+        key = _loose(column)
         if key in self.aliases:
             return self.aliases[key]
-        if key.endswith("_mm") and key[:-3] in self.aliases:
-            return self.aliases[key[:-3]][0], "mm"
+        if key.endswith("mm") and key[:-2] in self.aliases:
+            return self.aliases[key[:-2]][0], "mm"
         if key in self.ignored:
             return None
-        raise BatchRowError(f"--batch: column {column!r} names no option of this command")
+        near = difflib.get_close_matches(key, list(self.aliases), n=1, cutoff=0.85)
+        if near and key:
+            option = self.params[self.aliases[near[0]][0]].opts[-1]
+            raise BatchRowError(f"--batch: column {column!r} names no option; did you mean {option}? (a column "
+                                "that names no option is passed through to the output: rename it to keep it)")
+        return PASS
 
 
 # Output keys that feed back in as inputs (camtool's CSV is a valid batch file).
@@ -135,113 +268,384 @@ def _convert(ctx: click.Context, param: click.Parameter, cell: str, unit: str | 
     return value
 
 
-def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any], source: IO[str],
+def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any], source: str,
               on_error: str, fields: tuple[str, ...]) -> None:
-    """Compute and write one output row per input row, chunk by chunk."""
+    """Compute and write one output row per input row, chunk by chunk; exit 1 if a row was skipped."""
     columns = _Columns(ctx.command)
-    writer = _Writer(params["fmt"], params["units"], fields)
-    chunk: list[tuple[int, dict[str, Any]]] = []
-    for number, record in _decoded(ctx, source):
-        try:
-            chunk.append((number, _parse(ctx, columns, record, number)))
-        except BatchRowError as error:
-            if on_error == "stop":
-                raise
-            click.echo(f"Error: {error.format_message()} (skipped)", err=True)
-        if len(chunk) >= CHUNK:
-            writer.write(_compute_chunk(ctx, compute, params, chunk, columns, on_error))
-            chunk = []
-    if chunk:
-        writer.write(_compute_chunk(ctx, compute, params, chunk, columns, on_error))
-    writer.close()
-
-
-def _decoded(ctx: click.Context, source: IO[str]) -> Iterator[tuple[int, dict[str, str]]]:
-    """The records of ``source``; a file that is not UTF-8 is one line naming --batch and the file, exit 1."""
-    from camtool.cli.options import FileParameterError, param_named
-
+    defaults = {name: _single(params.get(name), name) for name, param in columns.params.items()
+                if isinstance(param.type, _ListType)}
+    writer = open_writer(params["fmt"], params["units"], fields)
+    batch = _Batch(ctx, compute, params, defaults, columns, writer, on_error)
+    stream, name = open_source(source)
     try:
-        yield from _records(source)
-    except UnicodeDecodeError as error:
-        raise FileParameterError(f"{getattr(source, 'name', '-')}: not UTF-8 text (byte {error.start}); save it as "
-                                 "UTF-8", ctx=ctx, param=param_named(ctx, "batch")) from None
-
-
-def _parse(ctx: click.Context, columns: _Columns, record: dict[str, str], number: int) -> dict[str, Any]:
-    values: dict[str, Any] = {}
-    for column, cell in record.items():
-        if column is None or not cell.strip():
-            continue
-        target = columns.resolve(column)
-        if target is None:
-            continue
-        name, unit = target
-        values[name] = _convert(ctx, columns.params[name], cell, unit, number, column)
-    return values
-
-
-def _compute_chunk(ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any],
-                   chunk: list[tuple[int, dict[str, Any]]], columns: _Columns, on_error: str) -> Output | None:
-    """Group the chunk's rows by their non-numeric settings and compute each group in one call."""
-    groups: dict[tuple[Any, ...], list[tuple[int, dict[str, Any]]]] = {}
-    for number, values in chunk:
-        settings = tuple(sorted((k, _hashable(v)) for k, v in values.items()
-                                if not isinstance(columns.params[k].type, _ListType)))
-        groups.setdefault(settings, []).append((number, values))
-    results: list[tuple[int, dict[str, Any]]] = []
-    last: Output | None = None
-    bad: list[tuple[int, str]] = []
-    for members in groups.values():
-        try:
-            out = _compute_group(ctx, compute, params, members, columns)
-        except click.ClickException:
-            # find the bad rows one by one; the good ones still count
-            for member in members:
-                try:
-                    out = _compute_group(ctx, compute, params, [member], columns)
-                except click.ClickException as row_error:
-                    bad.append((member[0], row_error.format_message()))
+        with stream:
+            header: list[str] | None = None
+            numbers: list[int] = []
+            records: list[Any] = []
+            errors: list[str | None] = []
+            for number, record, error in _records(stream, name):
+                if number == 0:
+                    header = record
                     continue
-                results.append((member[0], out.rows[0]))
-                last = out
-            continue
-        results.extend(zip((number for number, _ in members), out.rows))
-        last = out
-    bad.sort()
-    if bad and on_error == "stop":
-        raise BatchRowError(f"--batch row {bad[0][0]}: {bad[0][1]}")
-    for number, message in bad:
-        click.echo(f"Error: --batch row {number}: {message} (skipped)", err=True)
-    if last is None:
+                numbers.append(number)
+                records.append(record)
+                errors.append(error)
+                if error is not None and on_error == "stop":
+                    break
+                if len(numbers) >= CHUNK:
+                    batch.run(header, numbers, records, errors)
+                    numbers, records, errors = [], [], []
+            batch.run(header, numbers, records, errors)
+    except UnicodeDecodeError as error:
+        batch.end(failed=True)
+        raise BatchFileError(f"--batch {name}: not UTF-8 text ({error.reason}, byte 0x{error.object[error.start]:02x}); "
+                             "save it as UTF-8 (in Excel: CSV UTF-8)") from None
+    except click.ClickException:
+        batch.end(failed=True)
+        raise
+    batch.end()
+    if batch.skipped:
+        click.echo(f"camtool: {batch.skipped} of {batch.total} rows skipped", err=True)
+        ctx.exit(1)
+
+
+class _Batch:
+    """Parses chunks of rows column by column, computes them in groups, and writes them in input order."""
+
+    def __init__(self, ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any],
+                 defaults: dict[str, Any], columns: _Columns, writer: RowWriter, on_error: str) -> None:
+        self.ctx, self.compute, self.params, self.defaults = ctx, compute, params, defaults
+        self.columns, self.writer, self.on_error = columns, writer, on_error
+        self.skipped = self.total = 0
+        self.shape: tuple[list[Column], list[str]] | None = None
+        self.fallback: list[str] = []
+        self.factors: dict[tuple[str, str | None], float] = {}
+
+    # -- parsing: a column at a time ------------------------------------------------------------
+
+    def _parse(self, header: list[str] | None, numbers: list[int], records: list[Any],
+               errors: list[str | None]) -> tuple[dict[str, Any], dict[str, list[Any]]]:
+        """Parameter values by name (float arrays, NaN where a cell is empty; lists for the others) and
+        the passed-through cells by column; a bad cell's message goes to ``errors`` (the first per row)."""
+        if header is not None:
+            width = len(header)
+            rows = [cells if cells is not None and len(cells) == width
+                    else [*(cells or []), *[""] * (width - len(cells or []))] for cells in records]
+            data: dict[str, Sequence[Any]] = dict(zip(header, zip(*rows))) if width else {}
+        else:
+            keys = dict.fromkeys(key for record in records if record for key in record)
+            data = {key: [record.get(key) if record else None for record in records] for key in keys}
+        values: dict[str, Any] = {}
+        passed: dict[str, list[Any]] = {}
+        for column, cells in data.items():
+            target = self.columns.resolve(column)
+            if target is None:
+                continue
+            if target == PASS:
+                # JSON's NaN and Infinity have no place in JSON output: null
+                passed[column] = list(cells) if header is not None else [
+                    None if isinstance(cell, float) and not math.isfinite(cell) else cell for cell in cells]
+                continue
+            name, unit = target
+            param = self.columns.params[name]
+            if isinstance(param.type, _ListType):
+                values[name] = self._numbers(param, unit, column, cells, numbers, errors)
+            else:
+                values[name] = self._settings(param, unit, column, cells, numbers, errors)
+        return values, passed
+
+    def _numbers(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
+                 numbers: list[int], errors: list[str | None]) -> Any:
+        """One list-option column as floats: plain numbers parsed at once, cells with units one by one."""
+        import numpy as np
+
+        key = (str(param.name), unit)
+        if key not in self.factors:
+            self.factors[key] = float(param.type.parse("1" + (unit or "")))  # type: ignore[attr-defined]
+        factor = self.factors[key]
+        array = None
+        try:
+            array = np.array(cells, dtype=float)
+            if np.isnan(array).any():
+                array = None  # "nan" typed in a cell: an error, found below
+        except (ValueError, TypeError):
+            array = _suffixed(cells, param)
+            factor = 1.0 if array is not None else factor
+        if array is not None:
+            array = array * factor if factor != 1.0 else array
+        else:
+            array = np.empty(len(cells))
+            for index, cell in enumerate(cells):
+                text = "" if cell is None else cell if isinstance(cell, str) else str(cell)
+                if not text.strip():
+                    array[index] = np.nan
+                    continue
+                try:
+                    number = float(text)
+                except ValueError:
+                    number = math.nan
+                array[index] = number * factor if number == number else self._one(
+                    param, text, unit, column, numbers[index], errors, index)
+        bad = np.flatnonzero(~_valid(param.type, array) & ~np.isnan(array))
+        for index in bad.tolist():
+            cell = cells[index]
+            array[index] = self._one(param, cell if isinstance(cell, str) else str(cell), unit, column,
+                                     numbers[index], errors, index)
+        return array
+
+    def _one(self, param: click.Parameter, text: str, unit: str | None, column: str, number: int,
+             errors: list[str | None], index: int) -> float:
+        """One cell parsed as on the command line; NaN, and its message in ``errors``, if it is bad."""
+        try:
+            return float(_convert(self.ctx, param, text, unit, number, column))
+        except BatchRowError as error:
+            if errors[index] is None:
+                errors[index] = error.format_message()
+            return math.nan
+
+    def _settings(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
+                  numbers: list[int], errors: list[str | None]) -> list[Any]:
+        """A column of other options (sensor, model, ...): each distinct cell converted once."""
+        known: dict[str, Any] = {}
+        out: list[Any] = [None] * len(cells)
+        for index, cell in enumerate(cells):
+            text = "" if cell is None else cell if isinstance(cell, str) else str(cell)
+            if not text.strip():
+                continue
+            if text not in known:
+                try:
+                    known[text] = _convert(self.ctx, param, text, unit, numbers[index], column)
+                except BatchRowError:
+                    known[text] = _BAD
+            if known[text] is _BAD:
+                try:
+                    _convert(self.ctx, param, text, unit, numbers[index], column)
+                except BatchRowError as error:
+                    if errors[index] is None:
+                        errors[index] = error.format_message()
+                continue
+            out[index] = known[text]
+        return out
+
+    # -- computing: one call per group of rows sharing their settings ------------------------------
+
+    def run(self, header: list[str] | None, numbers: list[int], records: list[Any],
+            errors: list[str | None]) -> None:
+        """Compute one chunk and write its rows; in stop mode, the rows before the first bad one, then raise."""
+        if not numbers:
+            return
+        import numpy as np
+
+        errors = list(errors)
+        values, passed = self._parse(header, numbers, records, errors)
+        for name, column in values.items():
+            param = self.columns.params[name]
+            if isinstance(param.type, _ListType) and self.defaults[name] is None:
+                missing = np.isnan(column)
+                if missing.all():
+                    continue  # not this chunk's column at all: the command says what it needs
+                for index in np.flatnonzero(missing).tolist():
+                    if errors[index] is None:
+                        errors[index] = f"--batch row {numbers[index]}: no value for {param.opts[-1]}"
+        settings = [name for name in values if not isinstance(self.columns.params[name].type, _ListType)]
+        groups: dict[tuple[Any, ...], list[int]] = {}
+        for index in range(len(numbers)):
+            if errors[index] is None:
+                key = tuple(_hashable(values[name][index]) for name in settings)
+                groups.setdefault(key, []).append(index)
+        results: list[tuple[list[int], Output]] = []
+        for members in groups.values():
+            self._solve(members, values, numbers, errors, results)
+        self.total += len(numbers)
+        bad = [index for index, error in enumerate(errors) if error is not None]
+        if bad and self.on_error == "stop":
+            self._write_rows(results, passed, errors, bad[0])
+            raise BatchRowError(str(errors[bad[0]]))
+        for index in bad:
+            click.echo(f"Error: {errors[index]} (skipped)", err=True)
+        self.skipped += len(bad)
+        if bad:
+            self._start_shape(passed)
+        if results and all(isinstance(out.rows, ColumnRows) and not out.rows.materialised for _, out in results):
+            self._write_columns(results, passed, errors)
+        else:
+            self._write_rows(results, passed, errors, len(numbers))
+
+    def _solve(self, members: list[int], values: dict[str, Any], numbers: list[int], errors: list[str | None],
+               results: list[tuple[list[int], Output]]) -> None:
+        """Compute a group in one call; if it fails, halve it until the bad rows are found."""
+        try:
+            out = self._compute_group(members, values)
+        except click.ClickException as error:
+            if len(members) > 1:
+                half = len(members) // 2
+                self._solve(members[:half], values, numbers, errors, results)
+                self._solve(members[half:], values, numbers, errors, results)
+                return
+            message = error.format_message()
+            number = numbers[members[0]]
+            errors[members[0]] = message if isinstance(error, BatchRowError) else f"--batch row {number}: {message}"
+            return
+        results.append((members, out))
+
+    def _compute_group(self, members: list[int], values: dict[str, Any]) -> Output:
+        import numpy as np
+
+        merged = dict(self.params)
+        for name, column in values.items():
+            param = self.columns.params[name]
+            if isinstance(param.type, _ListType):
+                chosen = column[members]
+                missing = np.isnan(chosen)
+                if missing.all():
+                    continue
+                if missing.any():
+                    chosen = np.where(missing, self.defaults[name], chosen)
+                merged[name] = [chosen.tolist()]
+            elif column[members[0]] is not None:
+                merged[name] = column[members[0]]
+        self.ctx.meta[ZIP] = True
+        try:
+            return self.compute(self.ctx, **merged)
+        finally:
+            self.ctx.meta[ZIP] = False
+
+    # -- writing, in input order ---------------------------------------------------------------------
+
+    def _shape(self, out: Output) -> tuple[list[Column], list[str]]:
+        if self.shape is None:
+            passed = self.columns.passed
+            self.shape = ([*(Column(k, k, TEXT) for k in passed), *out.columns], [*passed, *out.keys])
+        return self.shape
+
+    def _write_columns(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
+                       errors: list[str | None]) -> None:
+        """The chunk as one block of columns: each group's columns put in its rows' places."""
+        import numpy as np
+
+        count = len(errors)
+        columns, keys = self._shape(results[0][1])
+        whole = len(results) == 1 and len(results[0][0]) == count
+        data: dict[str, Any] = {}
+        for key in keys:
+            if key in passed:
+                data[key] = passed[key]
+                continue
+            parts = [(members, out.rows.columns.get(key)) for members, out in results]  # type: ignore[attr-defined]
+            same = all(isinstance(v, str) or v is None for _, v in parts) and len({v for _, v in parts}) == 1
+            if whole or same:
+                data[key] = parts[0][1]
+            elif all(_numeric(v) for _, v in parts):
+                column = np.full(count, np.nan)
+                for members, value in parts:
+                    column[members] = np.asarray(value, dtype=float).reshape(-1) if not isinstance(
+                        value, (int, float)) else value
+                data[key] = column
+            else:
+                column = np.empty(count, dtype=object)
+                for members, value in parts:
+                    column[members] = values_of(value, len(members)) if value is not None else None
+                data[key] = column
+        skipped = errors if any(error is not None for error in errors) else None
+        rows = ColumnRows(count, data, skipped, kept=frozenset(passed))
+        for _, out in results:
+            self.writer.write(rows if out is results[0][1] else [], columns, keys, out.footer)
+
+    def _write_rows(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
+                    errors: list[str | None], end: int) -> None:
+        """Rows before index ``end`` one by one (row dicts): skipped rows in place, runs of one output together."""
+        found: dict[int, tuple[dict[str, Any], Output]] = {}
+        for members, out in results:
+            for index, row in zip(members, out.rows):
+                if index < end:
+                    found[index] = ({**{k: v[index] for k, v in passed.items()}, **row} if passed else row, out)
+        run: list[dict[str, Any]] = []
+        current: Output | None = None
+        for index in range(end):
+            if errors[index] is not None:
+                self._flush(run, current)
+                run = []
+                self.writer.skip(str(errors[index]), {k: v[index] for k, v in passed.items()})
+                continue
+            row, out = found[index]
+            if out is not current:
+                self._flush(run, current)
+                run, current = [], out
+            run.append(row)
+        self._flush(run, current)
+
+    def _flush(self, rows: list[dict[str, Any]], out: Output | None) -> None:
+        if out is None or not rows:
+            return
+        columns, keys = self._shape(out)
+        self.writer.write(rows, columns, keys, out.footer)
+
+    def _start_shape(self, passed: dict[str, list[Any]]) -> None:
+        """Keys for skipped rows before any row was computed: the passed-through columns and the command's."""
+        if self.writer.keys is None and not self.writer.pending:
+            keys = getattr(self.ctx.command, "output_key_list", [])
+            self.fallback = [*self.columns.passed, *keys]
+
+    def end(self, failed: bool = False) -> None:
+        """Close the output: a complete JSON document, the table of every row written.
+
+        After an error, output that never started stays empty.
+        """
+        if failed and self.writer.keys is None:
+            return
+        self.writer.close(self.fallback, [Column(k, k, TEXT) for k in self.fallback])
+
+
+_BAD = object()
+
+
+def _numeric(value: Any) -> bool:
+    if isinstance(value, (int, float)):
+        return True
+    return getattr(value, "dtype", None) is not None and value.dtype.kind in "fiub"
+
+
+def _suffixed(cells: Sequence[Any], param: click.Parameter) -> Any:
+    """Cells that all end in the same unit (``3.2m``), as numbers in the option's unit; None otherwise."""
+    import numpy as np
+
+    first = cells[0] if cells else None
+    if not isinstance(first, str):
         return None
-    results.sort(key=lambda item: item[0])
-    return last._replace(rows=[row for _, row in results])
+    text = first.rstrip()
+    suffix = text[len(text.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")):]
+    if not suffix or not all(isinstance(cell, str) and cell.rstrip().endswith(suffix) for cell in cells):
+        return None
+    try:
+        scale = float(param.type.parse("1" + suffix))  # type: ignore[attr-defined]
+        array = np.array([cell.rstrip()[:-len(suffix)] for cell in cells], dtype=float)
+    except (ValueError, TypeError, UnitError):
+        return None
+    if np.isnan(array).any():
+        return None
+    return array * scale
+
+
+def _valid(kind: click.ParamType, array: Any) -> Any:
+    """Which values pass the option's range check (the check of :mod:`camtool.cli.params`, on arrays)."""
+    import numpy as np
+
+    check = type(kind).check  # type: ignore[attr-defined]
+    with np.errstate(invalid="ignore"):
+        if check is LengthType.check:
+            ok = array > 0
+            return ok if kind.allow_inf else ok & np.isfinite(array)  # type: ignore[attr-defined]
+        if check is FNumberType.check:
+            return (array >= 0.7) & (array <= 1024)
+        if check is NumberType.check:
+            return (array >= kind.low) & (array <= kind.high)  # type: ignore[attr-defined]
+        if check is _ListType.check:
+            return (array > 0) & np.isfinite(array)
+    return np.array([value != value or kind.check(value) for value in array.tolist()], dtype=bool)  # type: ignore[attr-defined]
 
 
 def _hashable(value: Any) -> Any:
     return tuple(value) if isinstance(value, list) else value
-
-
-def _compute_group(ctx: click.Context, compute: Callable[..., Output], params: dict[str, Any],
-                   members: list[tuple[int, dict[str, Any]]], columns: _Columns) -> Output:
-    merged = dict(params)
-    first = members[0][1]
-    for name, param in columns.params.items():
-        if isinstance(param.type, _ListType):
-            present = [values.get(name) for _, values in members]
-            if any(v is not None for v in present):
-                default = _single(params.get(name), name)
-                if default is None and any(v is None for v in present):
-                    missing = next(n for n, v in zip((n for n, _ in members), present) if v is None)
-                    raise BatchRowError(f"--batch row {missing}: no value for {param.opts[-1]}")
-                merged[name] = [[v if v is not None else default for v in present]]
-        elif name in first:
-            merged[name] = first[name]
-    ctx.meta[ZIP] = True
-    try:
-        return compute(ctx, **merged)
-    finally:
-        ctx.meta[ZIP] = False
 
 
 def _single(value: Any, name: str) -> Any:
@@ -249,40 +653,3 @@ def _single(value: Any, name: str) -> Any:
     if len(flat) > 1:
         raise click.UsageError(f"with --batch, --{name.replace('_', '-')} takes one value on the command line")
     return flat[0] if flat else None
-
-
-class _Writer:
-    """Streams chunks of rows as one JSON array, one CSV table, field lines, or a table per chunk."""
-
-    def __init__(self, fmt: str, units: str, fields: tuple[str, ...]) -> None:
-        self.fmt, self.units, self.fields = fmt, units, fields
-        self.started = False
-        self.stream = sys.stdout
-
-    def write(self, out: Output | None) -> None:
-        if out is None:
-            return
-        if self.fields:
-            check_fields(self.fields, out.keys)
-            self.stream.write("".join(field_line(row, self.fields) + "\n" for row in out.rows))
-        elif self.fmt == "json":
-            for row in out.rows:
-                self.stream.write("[\n" if not self.started else ",\n")
-                self.stream.write(json.dumps({k: plain(row.get(k)) for k in out.keys}, allow_nan=False,
-                                             ensure_ascii=False))
-                self.started = True
-        elif self.fmt == "csv":
-            writer = csv.writer(self.stream, lineterminator="\n")
-            if not self.started:
-                writer.writerow(out.keys)
-                self.started = True
-            for row in out.rows:
-                writer.writerow(["" if plain(row.get(k)) is None else plain(row.get(k)) for k in out.keys])
-        else:
-            from camtool.render.output import write_rows
-
-            write_rows(out.rows, out.columns, "table", self.units, out.footer, keys=out.keys)
-
-    def close(self) -> None:
-        if self.fmt == "json" and not self.fields:
-            self.stream.write("\n]\n" if self.started else "[]\n")

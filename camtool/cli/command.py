@@ -15,7 +15,7 @@ of combined: :func:`combine_params` does either, as the context says.
 from __future__ import annotations
 
 import functools
-import sys
+import math
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -23,13 +23,26 @@ import click
 
 from camtool.cli.grid import combine
 from camtool.cli.options import preset_completion, stack
-from camtool.cli.rows import ZIP, Output, check_fields, field_line
-from camtool.render.output import FORMATS, write_rows
+from camtool.cli.rows import ZIP, Output, open_writer
+from camtool.render.output import FORMATS
+
+MAX_COMBINATIONS = 100_000
+"""The most rows list options may ask for on the command line; ``--batch`` streams any number."""
 
 
 def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
-    """Rows from list options: every combination on the command line, row by row in a batch."""
+    """Rows from list options: every combination on the command line, row by row in a batch.
+
+    More than :data:`MAX_COMBINATIONS` combinations is a usage error that
+    points to ``--batch``, rather than gigabytes of rows held at once.
+    """
     if not ctx.meta.get(ZIP):
+        count = math.prod(len(values) for values in lists)
+        if count > MAX_COMBINATIONS:
+            sizes = " × ".join(str(len(values)) for values in lists if len(values) > 1)
+            raise click.UsageError(f"the list options ask for {sizes} = {count:,} combinations; the limit is "
+                                   f"{MAX_COMBINATIONS:,} (write the scenes to a file, one per row, and use --batch, "
+                                   "which streams any number)", ctx)
         return combine(*lists)
     import numpy as np
 
@@ -40,7 +53,7 @@ def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tu
 
 format_option = click.option(
     "--format", "fmt", type=click.Choice(FORMATS), default="table", show_default=True, envvar="CAMTOOL_FORMAT",
-    help="Output: a table for people, JSON (an array of rows) or CSV for scripts.")
+    help="Output: a table for people, JSON (an array of rows, one per line) or CSV for scripts.")
 presets_option = click.option(
     "--presets", "preset_files", multiple=True, type=click.Path(dir_okay=False),
     help="Extra preset file (YAML); repeatable, later files win.")
@@ -73,10 +86,13 @@ equipment_options = stack(
 def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:
     """``--batch FILE`` and ``--on-error``."""
     function = click.option("--on-error", type=click.Choice(["stop", "skip"]), default="stop", show_default=True,
-                            help="With --batch: stop at the first bad row (exit 2), or report it and go on.")(function)
-    return click.option("--batch", type=click.File("r", encoding="utf-8", lazy=True), metavar="FILE",
-                        help="Read one scene per row from FILE (CSV with a header, or JSON lines; - for stdin); "
-                             "columns are named like the long options, cells may carry units.")(function)
+                            help="With --batch: stop at the first bad row (exit 2), or skip it: it keeps its place "
+                                 "(empty in CSV, null with an error key in JSON), is reported on stderr, and the "
+                                 "run exits 1.")(function)
+    return click.option("--batch", metavar="FILE",
+                        help="Read one scene per row from FILE (CSV with a header, or JSON lines; - for stdin; "
+                             "UTF-8, a BOM is fine); columns are named like the long options, cells may carry "
+                             "units; other columns are passed through to the output.")(function)
 
 
 def camtool_command(
@@ -112,6 +128,7 @@ def camtool_command(
             wrapped = batch_options(wrapped)
         command = click.command(name)(click.pass_context(wrapped))
         command.output_keys = frozenset(keys)  # type: ignore[attr-defined]
+        command.output_key_list = list(keys)  # type: ignore[attr-defined]
         return command
 
     return decorate
@@ -119,8 +136,6 @@ def camtool_command(
 
 def emit(out: Output, fmt: str, units: str, fields: Sequence[str] = ()) -> None:
     """Write one command's output: ``--field`` values, or the chosen format."""
-    if fields:
-        check_fields(fields, out.keys)
-        sys.stdout.write("".join(field_line(row, fields) + "\n" for row in out.rows))
-        return
-    write_rows(out.rows, out.columns, fmt, units, out.footer, keys=out.keys)
+    writer = open_writer(fmt, units, fields)
+    writer.write(out.rows, out.columns, out.keys, out.footer)
+    writer.close()

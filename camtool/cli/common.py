@@ -7,9 +7,9 @@ from typing import Any
 
 import click
 
-from camtool.cli.grid import column
 from camtool.cli.params import flatten
 from camtool.core.units import exact_f_number
+from camtool.render.columnar import ColumnRows
 
 
 def required(ctx: click.Context, values: Sequence[Any], option: str) -> list[Any]:
@@ -26,10 +26,9 @@ def f_numbers(values: Sequence[list[float]], exact: bool) -> list[float]:
     return [exact_f_number(n) for n in flat] if exact else flat
 
 
-def rows_from(count: int, columns: dict[str, Any]) -> list[dict[str, Any]]:
-    """Rows (dicts) from named result columns, each a float, a string or an array."""
-    expanded = {key: column(value, count) for key, value in columns.items()}
-    return [{key: values[i] for key, values in expanded.items()} for i in range(count)]
+def rows_from(count: int, columns: dict[str, Any]) -> ColumnRows:
+    """Rows from named result columns, each a float, a string or an array (dicts made only when read)."""
+    return ColumnRows(count, columns)
 
 
 def plane_note(distance_from: str) -> str:

@@ -35,7 +35,7 @@ COLUMNS = [
     Column("front_mm", "front"),
     Column("rear_mm", "rear"),
     Column("hyperfocal_mm", "H"),
-    Column("sharp_zone", "sharp zone", TEXT),
+    Column("sharp_zone", "sharp zone", TEXT, legend="┃ focus, H hyperfocal, ▶ ∞"),
 ]
 ALL_COLUMNS = [
     Column("model", "model", TEXT),
@@ -106,7 +106,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
         worst = max(row["error_estimate"] for row in rows)
         used = " / ".join(dict.fromkeys(row["model"] for row in rows))
         label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
-        note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from, "┃ focus, H hyperfocal, ▶ ∞")
+        note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from)
     return Output(rows, COLUMNS, KEYS, note)
 
 

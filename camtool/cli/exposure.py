@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 import click
@@ -248,7 +249,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     return Output(rows, _columns(answer, rows), KEYS, footer if fmt == "table" else "")
 
 
-def _columns(answer: Any, rows: list[dict[str, Any]]) -> list[Column]:
+def _columns(answer: Any, rows: Sequence[dict[str, Any]]) -> list[Column]:
     """The table's columns: the corrections that are not zero, then the answer."""
     if answer.mode == "metered":
         optional = {"nd_stops", "bellows_stops", "iso_change_stops", "aperture_change_stops", "reciprocity_stops"}

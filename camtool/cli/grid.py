@@ -12,6 +12,8 @@ import itertools
 from collections.abc import Sequence
 from typing import Any
 
+from camtool.render.columnar import values_of
+
 
 def combine(*lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
     """Return the number of combinations and one column (float or array) per list.
@@ -33,13 +35,4 @@ def combine(*lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
 
 def column(values: Any, count: int) -> list[Any]:
     """The per-row Python values of a result column (a float repeated, or an array's items)."""
-    if isinstance(values, (int, float)):
-        return [float(values)] * count
-    if isinstance(values, str) or values is None:
-        return [values] * count
-    flat = values.reshape(-1) if hasattr(values, "reshape") else values
-    if getattr(values, "dtype", None) is not None and values.dtype.kind not in "fiub":
-        return [str(v) for v in flat]  # names, e.g. the model each row ran
-    if len(flat) == 1 and count > 1:
-        return [float(flat[0])] * count
-    return [float(v) for v in flat]
+    return values_of(values, count)

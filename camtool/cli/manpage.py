@@ -20,14 +20,16 @@ HELP_OPTIONS = ["-h", "--help"]
 ENVIRONMENT = [
     ("CAMTOOL_FORMAT", "Default output format (table, json or csv) when --format is not given."),
     ("NO_COLOR", "When set, tables are printed without colour (colour is only used on a terminal anyway)."),
-    ("COLUMNS", "Width of the terminal for tables; into a pipe a table takes the width it needs."),
+    ("COLUMNS", "Width of the terminal for tables (ignored unless a positive number); columns that do not fit are "
+                "left out and named on stderr, never cropped; into a pipe a table takes the width it needs."),
     ("XDG_CONFIG_HOME", "User presets are read from $XDG_CONFIG_HOME/camtool (default ~/.config/camtool)."),
     ("XDG_CONFIG_DIRS", "System-wide presets are read from camtool/ below each of these directories."),
     ("XDG_DATA_HOME", "The lensfun import is written to $XDG_DATA_HOME/camtool (default ~/.local/share/camtool)."),
 ]
 EXIT_STATUS = [
     ("0", "Success."),
-    ("1", "A runtime failure, such as an unreadable or invalid preset file."),
+    ("1", "A runtime failure, such as an unreadable or invalid preset or batch file, or output that cannot be "
+          "written; or --on-error skip skipped a row. A closed pipe (| head -1) is a normal end, 0."),
     ("2", "Bad usage, or a value outside the physical domain; the message names the option, the value and "
           "the valid range."),
 ]

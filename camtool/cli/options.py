@@ -38,6 +38,7 @@ PARAM_FOR = {
     "far_mm": "far",
     "magnification": "magnification",
     "sensor_mm": "sensor",
+    "nd_factor": "nd",
 }
 SHOWN_IN_METRES = {"distance", "near", "far"}
 

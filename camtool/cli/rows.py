@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
 from typing import Any, NamedTuple
 
 import click
 
 from camtool.render.columns import Column
+from camtool.render.output import RowWriter
+from camtool.render.serial import field_line
+
+__all__ = ["ZIP", "Output", "check_fields", "field_line", "open_writer"]
 
 ZIP = "camtool.zip"
 """The ``ctx.meta`` key that says the list options come zipped, row by row, from a batch file."""
@@ -16,7 +21,7 @@ ZIP = "camtool.zip"
 class Output(NamedTuple):
     """What a command computed: rows of raw values, table columns, JSON/CSV keys, table footer."""
 
-    rows: list[dict[str, Any]]
+    rows: Sequence[dict[str, Any]]
     columns: Sequence[Column]
     keys: Sequence[str]
     footer: str = ""
@@ -30,10 +35,11 @@ def check_fields(fields: Sequence[str], keys: Sequence[str]) -> None:
                                  param_hint="'--field'")
 
 
-def field_line(row: dict[str, Any], fields: Sequence[str]) -> str:
-    """One line of ``--field`` output: the values, tab-separated, infinity as ``inf``."""
-    values = []
-    for key in fields:
-        value = row.get(key)
-        values.append("" if value is None else repr(value) if isinstance(value, float) else str(value))
-    return "\t".join(values)
+def open_writer(fmt: str, units: str, fields: Sequence[str] = ()) -> RowWriter:
+    """The one writer for a command's output (single run or batch); ``--field`` is checked against its keys."""
+
+    def check(keys: Sequence[str]) -> None:
+        if fields:
+            check_fields(fields, keys)
+
+    return RowWriter(fmt, units, fields, stream=sys.stdout, errors=sys.stderr, on_keys=check)

@@ -1,1 +1,1 @@
-"""Output: one entry point, :func:`camtool.render.output.write_rows`, for table, JSON and CSV."""
+"""Output: one writer, :class:`camtool.render.output.RowWriter`, for table, JSON, CSV and ``--field``."""

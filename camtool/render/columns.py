@@ -13,8 +13,13 @@ TEXT = "text"
 
 
 class Column(NamedTuple):
-    """One output column: JSON/CSV ``key``, table ``header`` (without unit) and ``kind``."""
+    """One output column: JSON/CSV ``key``, table ``header`` (without unit), ``kind``, and a ``legend``.
+
+    The legend (what a picture's symbols mean) joins the table's footer only
+    when the column is shown.
+    """
 
     key: str
     header: str
     kind: str = DISTANCE
+    legend: str = ""

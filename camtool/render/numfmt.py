@@ -66,11 +66,14 @@ def distance_unit(values_mm: Sequence[float | None], units: str = "metric") -> t
 def feet_inches(value_mm: float | None) -> str:
     """A distance as photographers in feet write it: 9' 10.1", 378' 9", ∞.
 
-    Inches get one decimal below 100 ft and none above (four significant
-    figures either way, as metric cells).
+    Inches get one decimal below 100 ft and none above, and below a foot
+    four significant figures (as metric cells): one notation whatever the
+    size, so a table of distances never mixes two.
 
     >>> print(feet_inches(3000.0), feet_inches(115_400.0), feet_inches(240.0), feet_inches(float("inf")))
-    9' 10.1" 378' 7" 9.4" ∞
+    9' 10.1" 378' 7" 9.449" ∞
+    >>> print(feet_inches(0.3))
+    0.01181"
     """
     if value_mm is None:
         return "–"
@@ -82,5 +85,5 @@ def feet_inches(value_mm: float | None) -> str:
     if abs(feet) >= 100_000:
         return significant(value_mm / 304.8) + "'"
     if feet == 0:
-        return f"{inches:.{decimals}f}\""
+        return significant(value_mm / 25.4) + '"'
     return f"{int(feet)}' {inches:.{decimals}f}\""

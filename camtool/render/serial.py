@@ -1,14 +1,33 @@
-"""JSON and CSV output for scripts: raw numbers, snake_case keys with units, infinity as null."""
+"""JSON and CSV output for scripts: raw numbers, snake_case keys with units, infinity as null.
+
+One layout, however the rows come (options or ``--batch``), written row by
+row so a long batch streams: JSON is an array with one row object per line::
+
+    [
+    {"focal_length_mm": 50.0, "f_number": 8.0, ...},
+    {"focal_length_mm": 50.0, "f_number": 11.0, ...}
+    ]
+
+(``[]`` when there are no rows); CSV is a header of the keys and one line per
+row, an infinite value an empty cell. A skipped ``--batch`` row keeps its
+place: in JSON every computed key ``null`` plus an ``error`` key, in CSV a row
+of empty cells, with ``--field`` empty values (passed-through input columns
+keep their cells).
+"""
 
 from __future__ import annotations
 
-import csv
 import json
 import math
 from collections.abc import Sequence
-from typing import IO, Any
+from typing import Any
 
 Row = dict[str, Any]
+
+ERROR = "error"
+"""The key of a skipped row's message."""
+
+_ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
 
 
 def plain(value: Any) -> Any:
@@ -22,16 +41,37 @@ def plain(value: Any) -> Any:
     return value
 
 
-def write_json(rows: Sequence[Row], keys: Sequence[str], stream: IO[str]) -> None:
-    """Write ``rows`` as a JSON array of objects holding ``keys`` (an infinite value is null)."""
-    data = [{key: plain(row.get(key)) for key in keys} for row in rows]
-    stream.write(json.dumps(data, allow_nan=False, ensure_ascii=False, indent=2))
-    stream.write("\n")
+def json_row(row: Row, keys: Sequence[str]) -> str:
+    """One row object on one line; a skipped row has every key null and its ``error``.
+
+    >>> json_row({"a": 1.5, "b": float("inf")}, ["a", "b"])
+    '{"a": 1.5, "b": null}'
+    >>> json_row({ERROR: "row 2: bad"}, ["a"])
+    '{"a": null, "error": "row 2: bad"}'
+    """
+    data = {key: plain(row.get(key)) for key in keys}
+    if ERROR in row:
+        data[ERROR] = row[ERROR]
+    return _ENCODER.encode(data)
 
 
-def write_csv(rows: Sequence[Row], keys: Sequence[str], stream: IO[str]) -> None:
-    """Write ``rows`` as CSV with a header of ``keys`` (an infinite value is an empty cell)."""
-    writer = csv.writer(stream, lineterminator="\n")
-    writer.writerow(keys)
-    for row in rows:
-        writer.writerow(["" if plain(row.get(k)) is None else plain(row.get(k)) for k in keys])
+def csv_cells(row: Row, keys: Sequence[str]) -> list[Any]:
+    """One CSV row's cells: raw values, empty for infinity, a missing key and a skipped row."""
+    cells = []
+    for key in keys:
+        value = plain(row.get(key))
+        cells.append("" if value is None else value)
+    return cells
+
+
+def field_line(row: Row, fields: Sequence[str]) -> str:
+    """One line of ``--field`` output: the values, tab-separated, infinity as ``inf``.
+
+    >>> field_line({"near_mm": 1234.5, "far_mm": float("inf")}, ["near_mm", "far_mm"])
+    '1234.5\\tinf'
+    """
+    values = []
+    for key in fields:
+        value = row.get(key)
+        values.append("" if value is None else repr(value) if isinstance(value, float) else str(value))
+    return "\t".join(values)

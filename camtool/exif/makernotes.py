@@ -1,0 +1,134 @@
+"""Focus distances as the makers encode them in their maker notes, converted to millimetres.
+
+Each function takes the raw number exiv2 decodes from the maker note and
+returns the distance in mm (``inf`` for the makers' infinity code) or None
+where the code means "not recorded". The encodings are those ExifTool
+documents (Image::ExifTool tag tables, https://exiftool.org/TagNames/) and
+exiv2 prints; tests/test_exif_makernotes.py checks each against exiv2's own
+rendering of the same raw value.
+
+Which plane the distance is measured from is not recorded by any maker:
+the figures come from the lens's distance encoder, which is calibrated
+against the lens's distance scale, and distance scales are measured from the
+focal-plane mark (the sensor). camtool therefore reads them as distances from
+the sensor by default (``--distance-from sensor``); ExifTool's Composite:DOF
+takes them as distances from the lens (docs/exif.md).
+"""
+
+from __future__ import annotations
+
+INFINITY = float("inf")
+
+
+def canon_focus_distance_mm(raw: int) -> float | None:
+    """Canon FocusDistanceUpper/FocusDistanceLower (CanonFi 0x14/0x15, CanonSi 0x13) in mm.
+
+    Formula: d = raw / 100 m = 10·raw mm, an unsigned 16-bit count of
+    centimetres; 65535 (655.35 m) is Canon's infinity and 0 "not recorded".
+
+    Parameters
+    ----------
+    raw : int
+        The tag's value as stored; a signed reading (exiv2 decodes CanonFi
+        as signed shorts) is taken modulo 2¹⁶.
+
+    References
+    ----------
+    ExifTool Canon tags, ShotInfo/FileInfo FocusDistanceUpper and
+    FocusDistanceLower: ``ValueConv => '$val / 100'`` (metres), printed as
+    "inf" above 655.345 m; exiv2 prints the same value as "3.50 m" for 350.
+
+    Examples
+    --------
+    >>> canon_focus_distance_mm(350)
+    3500.0
+    >>> canon_focus_distance_mm(-1), canon_focus_distance_mm(0)
+    (inf, None)
+    """
+    value = int(raw) & 0xFFFF
+    if value == 0:
+        return None
+    if value == 0xFFFF:
+        return INFINITY
+    return 10.0 * value
+
+
+def nikon_focus_distance_mm(raw: int) -> float:
+    """Nikon lens-data FocusDistance (NikonLd2/NikonLd3 FocusDistance, one byte) in mm.
+
+    Formula: d = 0.01 m · 10^(raw/40) = 10 mm · 10^(raw/40): a logarithmic
+    scale, 40 steps per decade, from 1 cm at raw 0; raw 80 is 1 m, raw 120
+    10 m, raw 255 (the largest byte) about 23.7 km, which is infinity for
+    any lens.
+
+    Parameters
+    ----------
+    raw : int
+        The byte, 0 to 255.
+
+    References
+    ----------
+    ExifTool Nikon tags, LensData01/LensData0204 FocusDistance:
+    ``ValueConv => '0.01 * 10**($val/40)'`` (metres), with the note that it is
+    approximate and inaccurate for some lenses; exiv2 prints 80 as "1.00 m".
+
+    Examples
+    --------
+    >>> nikon_focus_distance_mm(80)
+    1000.0
+    >>> round(nikon_focus_distance_mm(100), 1)
+    3162.3
+    """
+    value = int(raw) & 0xFF
+    return 10.0 * 10.0 ** (value / 40.0)
+
+
+def olympus_focus_distance_mm(numerator: int, denominator: int = 1) -> float | None:
+    """Olympus FocusDistance (OlympusFi 0x0305, a rational) in mm.
+
+    Formula: d = numerator mm, the denominator ignored: the rational looks
+    like metres over 1000 but the cameras write the numerator in mm whatever
+    the denominator (1 on the E-1, 10 on the E-300), so only the numerator is
+    consistent. 0xFFFFFFFF is infinity; 0 is "not recorded".
+
+    References
+    ----------
+    ExifTool Olympus tags, FocusInfo 0x0305 FocusDistance (read as two
+    int32u, ``$a[0] / 1000`` metres: "if we ignore the denominator we are
+    consistently in mm"); exiv2's print of the same tag takes the numerator
+    as mm too.
+
+    Examples
+    --------
+    >>> olympus_focus_distance_mm(2500, 10)
+    2500.0
+    >>> olympus_focus_distance_mm(0xFFFFFFFF, 1), olympus_focus_distance_mm(0, 1)
+    (inf, None)
+    """
+    value = int(numerator) & 0xFFFFFFFF
+    if value == 0:
+        return None
+    if value == 0xFFFFFFFF:
+        return INFINITY
+    return float(value)
+
+
+def exif_subject_distance_mm(numerator: int, denominator: int) -> float | None:
+    """Exif SubjectDistance (0x9206, a rational in metres) in mm.
+
+    Per the Exif standard (CIPA DC-008, tag 0x9206) the value is in metres;
+    0xFFFFFFFF/1 means infinity and 0/1 "unknown".
+
+    Examples
+    --------
+    >>> exif_subject_distance_mm(35, 10)
+    3500.0
+    >>> exif_subject_distance_mm(0xFFFFFFFF, 1), exif_subject_distance_mm(0, 1)
+    (inf, None)
+    """
+    num, den = int(numerator), int(denominator)
+    if num == 0xFFFFFFFF:
+        return INFINITY
+    if num <= 0 or den <= 0:
+        return None
+    return 1000.0 * num / den
