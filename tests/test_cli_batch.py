@@ -91,7 +91,8 @@ def test_skip_keeps_each_bad_row_in_its_place_reports_in_order_and_exits_1() -> 
     assert lines[2] == "camtool: 2 of 4 rows skipped"
     code, out, _ = batch(text, "dof", "-f", "50", "--format", "csv", "--on-error", "skip")
     lines = out.splitlines()
-    assert code == 1 and len(lines) == 5 and lines[2] == lines[3] == "," * 13
+    # an empty cell for each of the header's columns
+    assert code == 1 and len(lines) == 5 and lines[2] == lines[3] == "," * lines[0].count(",")
     code, out, _ = batch(text, "dof", "-f", "50", "--field", "f_number", "--on-error", "skip")
     assert code == 1 and out == "8.0\n\n\n4.0\n"
 
@@ -113,7 +114,7 @@ def test_other_columns_pass_through_so_results_join_back() -> None:
     lines = out.splitlines()
     assert code == 1
     assert lines[0].startswith("SourceFile,focal_length_mm,f_number,")
-    assert lines[1].startswith("a.jpg,50.0,8.0,") and lines[2] == "b.jpg" + "," * 14
+    assert lines[1].startswith("a.jpg,50.0,8.0,") and lines[2] == "b.jpg" + "," * lines[0].count(",")
     assert lines[3].startswith("c.jpg,24.0,4.0,")
     code, out, _ = batch('{"file": "a.jpg", "focal_length": 50, "f_number": 8}\n', "dof", "-s", "3", "--format",
                          "json")

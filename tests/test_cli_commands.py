@@ -103,7 +103,8 @@ FOCUS_TABLE = """\
 (mm)    (mm)          (mm)        (mm)        m   working N
 ───────────────────────────────────────────────────────────
  100   500.0         138.2        38.2   0.3820      f/11.1
-thin model · unit focusing, m = v/u · from the sensor plane
+thin model · unit focusing, m = v/u · from the sensor plane · the same distance is also reached at m = 2.62 \
+(give -m for that branch)
 """
 
 

@@ -105,7 +105,7 @@ def test_table_snapshot() -> None:
         (["-f", "-50"], "Error: Invalid value for '-f' / '--focal-length': -50 is outside the valid range: 1 to 5000 mm"),
         (["--coc", "0"], "Error: Invalid value for '--coc': 0 is outside the valid range: 0.0005 to 1 mm"),
         (["-s", "0.1"], "Error: Invalid value for '-s' / '--distance': 100 mm is outside the valid range: at least 200 mm from the sensor (the closest focus, 1:1: 4 × focal length)"),
-        (["-s", "0.05", "--distance-from", "lens"], "Error: Invalid value for '-s' / '--distance': 50 mm is outside the valid range: at least 100 mm from the lens (the closest focus, 1:1: 2 × focal length)"),
+        (["-s", "0.05", "--distance-from", "lens"], "Error: Invalid value for '-s' / '--distance': 50 mm is outside the valid range: more than 50 mm from the lens (the focal length; between f and 2f the magnification is above 1)"),
         (["-s", "3parsecs"], "Error: Invalid value for '-s' / '--distance': '3parsecs' has an unknown unit 'parsecs' (use mm, cm, m, km, in or ft)"),
         (["-s", "nan"], "Error: Invalid value for '-s' / '--distance': 'nan' is not a length (examples: 50mm, 3.5cm, 3m, 10ft, 6in, inf)"),
         (["-N", "f/x"], "Error: Invalid value for '-N' / '--f-number': 'f/x' is not an f-number (examples: 8, f/8, f8)"),

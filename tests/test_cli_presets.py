@@ -44,7 +44,10 @@ def test_camera_gives_sensor_and_pixel_pitch() -> None:
 def test_prime_lens_supplies_focal_length_and_checks_range() -> None:
     (row,) = run_json("dof", "--lens", "sony-fe-85mm-f1.8", "-N", "2", "-s", "3", "--coc", "0.03")
     assert row["focal_length_mm"] == 85.0
-    assert row["near_mm"] == pytest.approx(thin_dof(85.0, 2.0, 0.03, 3000.0).near_mm)
+    # the preset publishes its closest focus, so it focuses internally (docs/closeup.md §2): the thin lens
+    # of its focal length at this focus
+    assert row["focal_length_at_focus_mm"] < 85.0
+    assert row["near_mm"] == pytest.approx(thin_dof(row["focal_length_at_focus_mm"], 2.0, 0.03, 3000.0).near_mm)
     wide = run("dof", "--lens", "sony-fe-85mm-f1.8", "-N", "1.4", "-s", "3")
     assert wide.exit_code == 2
     assert wide.stderr == ("Error: Invalid value for '-N' / '--f-number': f/1.4 is outside the valid range of "

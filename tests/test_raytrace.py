@@ -1,7 +1,8 @@
 """The ``raytrace`` model against the real-ray reference rows, plus ray-level checks.
 
 Reference: tests/data/oracle-dof.csv (rayoptics 0.9.8 for dgauss100 and cellphone,
-optiland 0.6.3 for telephoto127; definitions in tests/data/oracle-README.md). Required
+optiland 0.6.3 for telephoto127, telecentric36 and wideangle17; definitions in
+tests/data/oracle-README.md). Required
 agreement: 0.5 % of the front and rear depths (real_defocus) and 1 % of blur_at_focus_mm
 (real_rms); the assertions below are far tighter, which the README's ~6e-9 says is possible.
 """
@@ -26,7 +27,7 @@ from camtool.optics.tracer import RayTraceError, real_tracer
 DATA = Path(__file__).parent / "data"
 LENSES = {
     name: prescription_from_mapping(yaml.safe_load((DATA / "prescriptions" / f"{name}.yaml").read_text()), name)
-    for name in ("dgauss100", "telephoto127", "cellphone")
+    for name in ("dgauss100", "telephoto127", "cellphone", "telecentric36", "wideangle17")
 }
 with open(DATA / "oracle-dof.csv", newline="") as _handle:
     ROWS = list(csv.DictReader(_handle))
@@ -219,3 +220,19 @@ def test_array_call_matches_scalar_calls():
         one = raytrace_dof(lens, 5.6, 0.03, float(distances[index]))
         for field in one._fields:
             assert getattr(many, field)[index] == getattr(one, field), field
+
+
+def test_arrays_of_f_numbers_match_scalar_calls():
+    # several f-numbers in one call share one batched trace for their interpolants
+    from camtool.dof.realray import _curves
+
+    lens = LENSES["wideangle17"]
+    n = np.array([4.0, 4.4, 5.2, 7.1, 9.9, 13.0])
+    _curves.cache_clear()
+    many = raytrace_dof(lens, n, 0.019, 1500.0)
+    _curves.cache_clear()
+    for i, value in enumerate(n):
+        one = raytrace_dof(lens, float(value), 0.019, 1500.0)
+        assert many.front_mm[i] == pytest.approx(one.front_mm, rel=1e-10)
+        assert many.rear_mm[i] == pytest.approx(one.rear_mm, rel=1e-10)
+        assert many.hyperfocal_mm[i] == pytest.approx(one.hyperfocal_mm, rel=1e-10)

@@ -161,7 +161,7 @@ def test_domain_errors_name_the_parameter(name: str, call: Callable[[float], Any
     ("call", "param", "limit"),
     [
         (lambda: thin_dof(50.0, 8.0, 0.03, 199.9), "distance_mm", 200.0),  # closer than 4f from the sensor
-        (lambda: thin_dof(50.0, 8.0, 0.03, 99.9, distance_from="lens"), "distance_mm", 100.0),  # 2f from the lens
+        (lambda: thin_dof(50.0, 8.0, 0.03, 49.9, distance_from="lens"), "distance_mm", 50.0),  # f from the lens
         (lambda: thin_dof(50.0, 8.0, 0.03, math.nan), "distance_mm", 200.0),
         (lambda: thin_dof(50.0, 8.0, 0.03, math.nan, distance_from="lens"), "distance_mm", None),
         (lambda: thin_dof(50.0, 8.0, 0.03, -3000.0, distance_from="lens"), "distance_mm", None),
@@ -169,7 +169,7 @@ def test_domain_errors_name_the_parameter(name: str, call: Callable[[float], Any
         (lambda: approx_dof(50.0, 8.0, 0.03, math.nan), "distance_mm", None),
         (lambda: lens_distances(50.0, 150.0), "distance_mm", 200.0),
         (lambda: image_distance_mm(50.0, 50.0), "object_distance_mm", None),
-        (lambda: focus_geometry(50.0, 99.0, distance_from="lens"), "distance_mm", 100.0),
+        (lambda: focus_geometry(50.0, 49.0, distance_from="lens"), "distance_mm", 50.0),
         (lambda: focus_for_limits(50.0, 0.03, 150.0, 4000.0), "near_mm", 200.0),
         (lambda: focus_for_limits(50.0, 0.03, 90.0, 4000.0, distance_from="lens"), "near_mm", 100.0),
         (lambda: focus_for_limits(50.0, 0.03, 4000.0, 2000.0), "far_mm", 4000.0),

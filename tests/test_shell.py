@@ -199,7 +199,8 @@ def test_hostile_batch_files_are_one_line_errors_in_bounded_time_and_memory(tmp_
     assert huge.returncode == 1, huge.stderr
     assert huge.stderr.decode().splitlines() == ["Error: --batch row 1: a cell longer than 128 KiB (skipped)",
                                                  "camtool: 1 of 2 rows skipped"]
-    assert huge.stdout.decode().splitlines()[1] == "," * 13
+    header, row = huge.stdout.decode().splitlines()[:2]
+    assert row == "," * header.count(",")
     stop = _bounded(["dof", "--format", "json"], str(tmp_path / "huge-cell.csv"), 512)
     assert stop.returncode == 2 and stop.stdout == b""
 

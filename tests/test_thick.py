@@ -108,7 +108,7 @@ def test_focus_at_infinity_and_at_one_to_one():
         ((math.nan, 8.0, 0.03, 3000.0), {}, "focal_length_mm"),
         ((50.0, 8.0, 0.03, 3000.0), {"hiatus_mm": math.nan}, "hiatus_mm"),
         ((50.0, 8.0, 0.03, 199.0), {}, "distance_mm"),  # closer than 1:1 (4f)
-        ((50.0, 8.0, 0.03, 99.0), {"distance_from": "lens"}, "distance_mm"),  # closer than 2f
+        ((50.0, 8.0, 0.03, 49.0), {"distance_from": "lens"}, "distance_mm"),  # closer than f
         ((50.0, 8.0, 0.03, 3000.0), {"pupil_magnification": 0.3, "hiatus_mm": 0.0}, "hiatus_mm"),  # E behind sensor
     ],
 )

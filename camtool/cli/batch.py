@@ -45,7 +45,7 @@ from typing import IO, Any
 
 import click
 
-from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType
+from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import ZIP, Output, open_writer
 from camtool.core.units import UnitError
 from camtool.render.columnar import ColumnRows, values_of
@@ -492,6 +492,7 @@ class _Batch:
         import numpy as np
 
         merged = dict(self.params)
+        zipped = False
         for name, column in values.items():
             param = self.columns.params[name]
             if isinstance(param.type, _ListType):
@@ -502,8 +503,15 @@ class _Batch:
                 if missing.any():
                     chosen = np.where(missing, self.defaults[name], chosen)
                 merged[name] = [chosen.tolist()]
+                zipped = True
             elif column[members[0]] is not None:
                 merged[name] = column[members[0]]
+        if not zipped and len(members) > 1:  # no row gives a value: one row per member from the options alone
+            for name, param in self.columns.params.items():
+                given = flatten(merged.get(name)) if isinstance(param.type, _ListType) else []
+                if len(given) == 1:
+                    merged[name] = [given * len(members)]
+                    break
         self.ctx.meta[ZIP] = True
         try:
             return self.compute(self.ctx, **merged)

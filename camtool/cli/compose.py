@@ -8,6 +8,7 @@ from typing import Any
 
 import click
 
+from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
@@ -82,7 +83,9 @@ def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator
 @click.option("--fill", type=NumberType(0.001, 10), help="Fraction of the frame the subject fills, e.g. 0.8.")
 @click.option("--fill-axis", type=click.Choice(["height", "width"]), default="height", show_default=True,
               help="Frame dimension --fill refers to.")
-@click.option("--magnification", type=NumberType(1e-9, 10), help="Magnification, instead of --subject-size and --fill.")
+@click.option("-m", "--magnification", type=NumberType(1e-9, 1000), multiple=True,
+              help="Magnification (any m > 0), instead of --subject-size and --fill; a list 0.5,1,2 gives a row each "
+                   "with one focal length.")
 @aperture_options
 @click.option("--background", type=DISTANCE_M,
               help="Distance of a background plane behind the subject (bare numbers are metres; inf allowed).")
@@ -91,8 +94,9 @@ def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator
 @sensor_options
 @coc_options
 @distance_plane_option
+@teleconverter_option
 def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, magnification, f_number, exact_stops,
-            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt, units,
+            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, teleconverter, fmt, units,
             preset_files) -> Output:
     """Perspective composition: where to stand with each focal length to frame the subject the same.
 
@@ -111,10 +115,12 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     from camtool.dof.ladder import depth_of_field
     from camtool.geometry.compose import composition, magnification_for_fill, plane_view
 
-    focal = flatten(focal_length) or DEFAULT_FOCAL_LENGTHS_MM
-    apertures = f_numbers(f_number, exact_stops)
+    k = teleconverter or 1.0  # the lens taken as k·f at k·N (docs/closeup.md §7)
+    focal = [k * v for v in flatten(focal_length)] or DEFAULT_FOCAL_LENGTHS_MM
+    apertures = [k * v for v in f_numbers(f_number, exact_stops)]
     size, share = _single(ctx, subject_size, "--subject-size"), _single(ctx, fill, "--fill")
-    given_m = _single(ctx, magnification, "--magnification")
+    given_ms = flatten(magnification)
+    given_m = given_ms[0] if given_ms else None
     behind, before = _single(ctx, background, "--background"), _single(ctx, foreground, "--foreground")
     if (given_m is None) == (size is None or share is None):
         raise click.UsageError("Give --subject-size and --fill, or --magnification.", ctx)
@@ -124,20 +130,28 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch) if apertures else (None, "")
     frame = chosen.height_mm if fill_axis == "height" else chosen.width_mm
     optical: list[Any] = [apertures, cocs] if apertures else []
-    count, columns = combine_params(ctx, focal, *optical)
-    f, n, c = ((*columns, None, None))[:3]
+    count, columns = combine_params(ctx, focal, given_ms or [0.0], *optical)
+    f, m_row, n, c = ((*columns, None, None))[:4]
     values: dict[str, Any] = {"f_number": n, "coc_mm": c, "distance_from": distance_from,
                               "background_mm": behind, "foreground_mm": before}
     with library_errors(ctx):
-        m = given_m if given_m is not None else magnification_for_fill(size, share, frame)
+        m = m_row if given_m is not None else magnification_for_fill(size, share, frame)
         shot = composition(f, m, chosen.width_mm, chosen.height_mm)
         distance = shot.distance_mm if distance_from == "sensor" else shot.lens_distance_mm
         values.update({key: getattr(shot, key) for key in ("focal_length_mm", "magnification", "horizontal_deg",
                                                             "vertical_deg", "field_width_mm", "field_height_mm")})
         values["distance_mm"] = distance
-        if apertures:
+        import numpy as np
+
+        if apertures and float(np.max(m)) <= 1.0:
             limits = depth_of_field("auto", f, n, c, distance, distance_from).limits
             values.update({"near_mm": limits.near_mm, "far_mm": limits.far_mm})
+        elif apertures:
+            # above 1:1 from the lens plane, where every magnification has its one distance (from the sensor
+            # a distance belongs to m ≤ 1 first), then moved to the sensor plane by v = f(1 + m)
+            limits = depth_of_field("auto", f, n, c, shot.lens_distance_mm, "lens").limits
+            shift = 0.0 if distance_from == "lens" else distance - shot.lens_distance_mm
+            values.update({"near_mm": limits.near_mm + shift, "far_mm": limits.far_mm + shift})
         for name, offset in (("background", behind), ("foreground", None if before is None else -before)):
             if offset is not None:
                 with _plane_errors(ctx, name, behind if name == "background" else before):
@@ -150,7 +164,9 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     shown += _plane_columns("foreground", "fg") if before is not None else []
     note = ""
     if fmt == "table":
-        subject = f"m = {m:.4g}" if given_m is not None else f"subject {size / 1000:g} m fills {share:g} of the {fill_axis}"
+        shown_m = ", ".join(f"{v:.4g}" for v in given_ms)
+        subject = (f"m = {shown_m}" if given_m is not None
+                   else f"subject {size / 1000:g} m fills {share:g} of the {fill_axis}")
         scale = f"scale vs {focal[0]:g} mm" if behind is not None or before is not None else ""
         note = footer("thin" if apertures else None, cocs, coc_origin, chosen.label, distance_from,
                       " · ".join(part for part in (subject, scale) if part))

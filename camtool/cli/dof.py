@@ -6,10 +6,24 @@ from typing import Any
 
 import click
 
+from camtool.cli.closeup import (
+    CLOSE_UP,
+    CLOSEUP_COLUMNS,
+    CLOSEUP_KEYS,
+    DIFFRACTION_COLUMNS,
+    DIFFRACTION_KEYS,
+    FOCUS_COLUMN,
+    branch_note,
+    closeup_options,
+    dof_rows,
+    has_focus_model,
+    magnification_option,
+    plan_focus,
+)
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, flatten, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
-from camtool.cli.lensdata import ladder_errors, lens_data, model_options
+from camtool.cli.lensdata import ladder_errors, lens_data, model_options, pupil_and_hiatus
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
@@ -19,12 +33,13 @@ from camtool.cli.options import (
     library_errors,
     sensor_options,
 )
+from camtool.cli.rows import ZIP
 from camtool.dof.ladder import compare_models, depth_of_field, focal_lengths, model_choices, model_help
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
         "hyperfocal_mm", "coc_mm", "magnification", "model", "error_estimate", "distance_from"]
-ALL_KEYS = [*KEYS, "difference_pct", "time_per_evaluation_s"]
+ALL_KEYS = [*KEYS, "difference_pct", "time_per_evaluation_s", *CLOSEUP_KEYS, *DIFFRACTION_KEYS]
 COLUMNS = [
     Column("focal_length_mm", "f", SMALL),
     Column("f_number", "N", FNUMBER),
@@ -56,15 +71,18 @@ MODEL_HELP = model_help()
 @focal_option
 @aperture_options
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
-              help="Focus distance, e.g. 3 (bare numbers are metres), 3m, 10ft, inf; a list gives a row each.")
+              help="Focus distance, e.g. 3 (bare numbers are metres), 3m, 10ft, inf; a list gives a row each. "
+                   "From the sensor, a distance also reached at m > 1 is answered at m ≤ 1 (give -m for the other).")
+@magnification_option
+@closeup_options
 @sensor_options
 @coc_options
 @distance_plane_option
 @click.option("--model", type=click.Choice(model_choices()), default="auto", show_default=True, help=MODEL_HELP)
 @model_options
-def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, sensor, crop, coc, coc_rule,
-        pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file,
-        fmt, units, preset_files) -> Output:
+def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magnification, extension, teleconverter,
+        sensor, crop, coc, coc_rule, pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag,
+        hiatus, prescription_file, fmt, units, preset_files) -> Output:
     """Depth of field: near and far limits, total depth, front/rear split and hyperfocal distance.
 
     \b
@@ -72,28 +90,63 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
       camtool dof -f 50 -N 8 -s 3m
       camtool dof -f 85 -N 1.8,2.8,4 -s 2 --sensor aps-c --format json
       camtool dof -N 2 -s 1m --prescription dgauss100.yaml --model all
-      camtool dof -f 100 -N 11 -s 0.5 --pupil-mag 0.8 --diffraction
+      camtool dof -f 100 -N 11,22 -s 0.5 --pupil-mag 0.8 --diffraction
+      camtool dof -f 100 -N 8 -m 0.5,1,2
+      camtool dof --lens mp-e-65 -N 2.8 -m 1,2,5 --diffraction
+      camtool dof -f 100 -N 8,16 -s 400mm --diffraction
+      camtool dof -f 50 -N 8 -s 1m --extension 25mm --teleconverter 1.4
+
+    With -m (any m > 0) or close up, the table shows the magnification and
+    the working f-number N(1 + m/P). A lens preset with a published closest
+    focus focuses internally (docs/closeup.md): it is accepted down to that
+    closest focus and reaches its published magnification there. With
+    --diffraction every row gets its Airy disc, the f-number at which it
+    fills the CoC and the wave-optics depth λ/NA²; rows where nothing can
+    be sharp show a reason, and the command fails only if no row has an answer.
     """
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     with library_errors(ctx):
         focal = required(ctx, focal_lengths(lens, flatten(focal_length)), "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
-    distances = required(ctx, distance, "-s")
+    wanted_m = flatten(magnification)
+    if wanted_m and flatten(distance):
+        if not ctx.meta.get(ZIP):
+            raise click.UsageError("give either -s/--distance or -m/--magnification, not both", ctx)
+        wanted_m = []  # a batch row with both (camtool's own CSV fed back) is read by its distance
+    distances = wanted_m or required(ctx, distance, "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     count, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
+    closeup = bool(wanted_m or extension or teleconverter or diffraction) or has_focus_model(ctx)
+    by_rays = lens is not None and lens.prescription is not None
+    if model != "all" and closeup and not (by_rays and not (wanted_m or extension or teleconverter)):
+        return _closeup(ctx, model, f, n, s, c, bool(wanted_m), extension, teleconverter, distance_from, lens,
+                        diffraction, wavelength, tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, chosen.label)
+    if wanted_m or extension or teleconverter:
+        raise click.UsageError("-m, --extension and --teleconverter do not work with --model all", ctx)
     if model == "all":
         return _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavelength, fmt, cocs,
                            coc_origin, chosen.label)
     with library_errors(ctx), ladder_errors(ctx):
         result = depth_of_field(model, f, n, c, s, distance_from, lens, diffraction, wavelength, tolerance)
     limits = result.limits
+    p = pupil_and_hiatus(ctx, pupil_mag, hiatus)[0]
     rows = rows_from(count, {
         "focal_length_mm": f, "f_number": n, "distance_mm": s, "near_mm": limits.near_mm, "far_mm": limits.far_mm,
         "total_mm": limits.total_mm, "front_mm": limits.front_mm, "rear_mm": limits.rear_mm,
         "hyperfocal_mm": limits.hyperfocal_mm, "coc_mm": c, "magnification": limits.magnification,
         "model": result.model, "error_estimate": result.error_estimate, "distance_from": distance_from,
     })
+    # JSON and CSV always carry the close-up keys (a batch and a single call agree); the table shows them close up
+    close = any(row["magnification"] >= CLOSE_UP for row in rows)
+    keys, columns = [*KEYS, *CLOSEUP_KEYS], list(COLUMNS)
+    for row in rows:
+        m = row["magnification"]
+        row["working_f_number"] = row["f_number"] * (1.0 + m / p)
+        row["other_magnification"] = 1.0 / m if distance_from == "sensor" and 0.0 < m < 1.0 else None
+        row["focal_length_at_focus_mm"] = row["focal_length_mm"]
+    if close:
+        columns[3:3] = CLOSEUP_COLUMNS
     note = ""
     if fmt == "table":
         from camtool.render.bar import axis_range, sharp_zone_bar
@@ -106,8 +159,60 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, senso
         worst = max(row["error_estimate"] for row in rows)
         used = " / ".join(dict.fromkeys(row["model"] for row in rows))
         label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
-        note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from)
-    return Output(rows, COLUMNS, KEYS, note)
+        extra = branch_note(rows) if close else ""
+        note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from, extra)
+    return Output(rows, columns, keys, note)
+
+
+def _closeup(ctx, model, f, n, w, c, by_m, extension, teleconverter, distance_from, lens, diffraction, wavelength,
+             tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, sensor_label) -> Output:
+    """Rows through the close-up planner: any magnification, internal focus, extension, teleconverter."""
+    known = lens.thick_parameters() if lens is not None else None  # a prescription's own P and δ included
+    p, delta = (float(v) for v in known) if known is not None else pupil_and_hiatus(ctx, pupil_mag, hiatus)[:2]
+    with library_errors(ctx):
+        setting = plan_focus(ctx, f, n, w, by_m, distance_from, delta, extension, teleconverter)
+    direct = not by_m and not setting.modelled
+    k = teleconverter or 1.0
+    nominal = [k * float(v) for v in (f if hasattr(f, "__len__") else [f])]
+    rows = dof_rows(ctx, model, setting, c, distance_from, lens, diffraction, wavelength, tolerance, p, delta,
+                    direct, nominal)
+    close = by_m or setting.modelled or any(r["magnification"] >= CLOSE_UP for r in rows)
+    keys = [*KEYS, *CLOSEUP_KEYS, *(DIFFRACTION_KEYS if diffraction else [])]
+    columns = list(COLUMNS)
+    if close:
+        columns[3:3] = CLOSEUP_COLUMNS
+    if any(abs(r["focal_length_at_focus_mm"] - r["focal_length_mm"]) > 1e-9 * r["focal_length_mm"] for r in rows):
+        columns[1:1] = [FOCUS_COLUMN]
+    if diffraction:
+        columns[-1:-1] = DIFFRACTION_COLUMNS
+    note = ""
+    if fmt == "table":
+        from camtool.render.bar import axis_range, sharp_zone_bar
+
+        answered = [r for r in rows if r["near_mm"] is not None]
+        low, high = axis_range([v for r in answered for v in (r["near_mm"], r["far_mm"], r["hyperfocal_mm"])])
+        for row in rows:
+            row["sharp_zone"] = (sharp_zone_bar(row["near_mm"], row["distance_mm"], row["far_mm"],
+                                                row["hyperfocal_mm"], low, high, width=24)
+                                 if row["near_mm"] is not None else row["reason"])
+        worst = max(row["error_estimate"] for row in answered)
+        used = " / ".join(dict.fromkeys(row["model"] for row in answered))
+        label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
+        extra = " · ".join(part for part in (branch_note(rows) if not by_m else "",
+                                             "-s is the lens's own focus setting; focus is where the subject then is"
+                                             if (extension or teleconverter) and not by_m else "",
+                                             _dominance(rows) if diffraction else "") if part)
+        note = label + " · " + footer(None, cocs, coc_origin, sensor_label, distance_from, extra)
+    return Output(rows, columns, keys, note)
+
+
+def _dominance(rows: list[dict[str, Any]]) -> str:
+    kinds = {row["depth_dominated_by"] for row in rows if row.get("depth_dominated_by")}
+    if kinds == {"wave"}:
+        return "wave-optics depth λ/NA² exceeds the geometric depth"
+    if kinds == {"geometric"}:
+        return "geometric depth exceeds the wave-optics depth λ/NA²"
+    return "depth dominated by the wave-optics or geometric term, row by row"
 
 
 def _percent(fraction: float) -> str:

@@ -184,8 +184,9 @@ CAMERA, LENS = "camtool.camera", "camtool.lens"  # where the resolved presets ar
 _SCENE_FIELDS = {
     "focal_length_mm": "focal_length", "f_number": "f_number", "distance_mm": "distance",
     "subject_size_mm": "subject_size", "background_mm": "background", "coc_mm": "coc",
+    "magnification": "magnification",
 }
-_LIST_PARAMS = {"focal_length", "f_number", "distance", "coc"}
+_LIST_PARAMS = {"focal_length", "f_number", "distance", "coc", "magnification"}
 
 
 def _empty(value: Any) -> bool:

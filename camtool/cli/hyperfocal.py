@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import resolve_coc, resolve_sensor
@@ -39,20 +40,26 @@ COLUMNS = [
 @click.option("--model", type=click.Choice(hyperfocal_choices()), default="auto", show_default=True,
               help=hyperfocal_help())
 @lens_geometry_options
+@teleconverter_option
 def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, crop, coc, coc_rule, pixel_pitch,
-               distance_from, model, pupil_mag, hiatus, fmt, units, preset_files) -> Output:
+               distance_from, model, pupil_mag, hiatus, teleconverter, fmt, units, preset_files) -> Output:
     """Hyperfocal distance: focus there and everything from the near limit to infinity is sharp.
 
     \b
     Examples:
       camtool hyperfocal -f 24 -N 8,11,16
       camtool hyperfocal -f 35 -N 8 --sensor aps-c --format json
+      camtool hyperfocal -f 300 -N 4 --teleconverter 1.4
+
+    With --teleconverter K the lens is taken as K·f at K·N (docs/closeup.md §7);
+    the rows show those.
     """
     focal = required(ctx, focal_length, "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    count, (f, n, c) = combine_params(ctx, focal, apertures, cocs)
+    k = teleconverter or 1.0
+    count, (f, n, c) = combine_params(ctx, [k * v for v in focal], [k * v for v in apertures], cocs)
     with library_errors(ctx), ladder_errors(ctx):
         result = hyperfocal_distance(model, f, n, c, distance_from, lens_data(ctx, pupil_mag, hiatus, None))
     rows = rows_from(count, {

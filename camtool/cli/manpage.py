@@ -59,8 +59,10 @@ def _split_help(help_text: str) -> tuple[str, str, list[str]]:
     text = inspect.cleandoc(help_text.replace("\b\n", "").replace("\b", ""))
     summary, _, rest = text.strip().partition("\n")
     description, _, examples = rest.partition("Examples:")
+    block, _, after = examples.strip("\n").partition("\n\n")  # the examples end at the first blank line
+    description = description.strip() + ("\n\n" + after.strip() if after.strip() else "")
     paragraphs = [" ".join(p.split()) for p in description.strip().split("\n\n") if p.strip()]
-    lines = [line.strip() for line in examples.strip().splitlines() if line.strip()]
+    lines = [line.strip() for line in block.splitlines() if line.strip()]
     return summary.strip(), "\n\n".join(paragraphs), lines
 
 

@@ -31,8 +31,11 @@ hyperfocal distance behaves, for the near limit that is left, like one at it):
 - aberrations (real against paraxial rays, only with a prescription): the
   relative change of the local depth of field in object vergence between
   real and paraxial rays, 2√2·S·dz_best/dw against 2·u′·dz′/dw, measured
-  once per prescription and f-number (one batched fan trace, cached) at a few
-  magnifications, times (1 + m), and interpolated.
+  once per prescription over a grid of f-numbers (f/1 to f/64 in half stops)
+  at a few magnifications, times (1 + m), and interpolated (linearly in m,
+  log-log in N). The table is cached for the process and on disk, keyed by
+  the prescription's content, so a command with a prescription traces no
+  rays (and imports no numpy) unless its model is ``raytrace``.
 
 These are first-order results of the closed forms (the first four are within a
 few per cent of the exact differences over the whole domain); the aberration
@@ -41,6 +44,7 @@ estimate is about twice the actual difference on the shared lenses.
 
 from __future__ import annotations
 
+import bisect
 import functools
 import itertools
 import math
@@ -49,7 +53,9 @@ from typing import Any, NamedTuple
 from camtool.core.arrays import ops, quiet
 from camtool.dof.rungs import RUNGS, by_name
 
-__all__ = ["EFFECTS", "LEFT_OUT", "Effects", "aberration_share", "depth_error", "estimate_effects", "left_out"]
+__all__ = [
+    "EFFECTS", "LEFT_OUT", "Effects", "aberration_share", "aberration_table", "depth_error", "estimate_effects", "left_out",
+]
 
 EFFECTS = ("approximation", "distance_plane", "pupil", "hiatus", "diffraction", "aberrations")
 
@@ -162,8 +168,10 @@ def estimate_effects(
 def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> Any:
     """Estimated relative difference between the real-ray and the paraxial depth of field.
 
-    Interpolates, in magnification, the calibration of
-    :func:`_aberration_table` (cached per prescription and f-number).
+    Interpolates the calibration of :func:`aberration_table` (one per
+    prescription, over a grid of f-numbers): linearly in magnification, and
+    in f-number linearly in log N and log share (the share falls about as
+    a power of N). Continuous f-numbers cost no more than a few.
 
     Examples
     --------
@@ -172,19 +180,48 @@ def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> An
     >>> aberration_share(lens, 2.8, 0.0) > aberration_share(lens, 16.0, 0.0)
     True
     """
+    grid_n, table = aberration_table(prescription)
     xp = ops(f_number, magnification)
     if xp.name == "math":
-        return _interpolate(_aberration_table(prescription, float(f_number)), float(magnification))
+        i, t = _grid_position(grid_n, float(f_number))
+        low, high = _interpolate(table[i], float(magnification)), _interpolate(table[i + 1], float(magnification))
+        return _between(low, high, t)
     import numpy as np
 
-    n, m = np.broadcast_arrays(np.asarray(f_number, float), np.asarray(magnification, float))
-    out = np.empty(n.shape)
-    for value in np.unique(n):
-        table = _aberration_table(prescription, float(value))
-        mask = n == value
-        ms, shares = zip(*table)
-        out[mask] = np.interp(np.where(np.isfinite(m[mask]), m[mask], ms[-1]), ms, shares)
-    return out
+    n, mags = np.broadcast_arrays(np.asarray(f_number, float), np.asarray(magnification, float))
+    rows = [np.interp(np.where(np.isfinite(mags), mags, ms[-1]), ms, shares) for ms, shares in (zip(*r) for r in table)]
+    grid = np.array(rows)  # (f-numbers, scenes)
+    logs_n = np.log(grid_n)
+    with np.errstate(all="ignore"):
+        log_n = np.clip(np.log(np.where(n > 0.0, n, grid_n[0])), logs_n[0], logs_n[-1])
+    cell = np.clip(np.searchsorted(logs_n, log_n, side="right") - 1, 0, len(table) - 2)
+    frac = (log_n - logs_n[cell]) / (logs_n[cell + 1] - logs_n[cell])
+    flat = np.arange(n.size).reshape(n.shape)
+    cells = grid.reshape(len(table), -1)
+    below, above = cells[cell, flat], cells[cell + 1, flat]
+    with np.errstate(all="ignore"):
+        logs = np.exp((1.0 - frac) * np.log(below) + frac * np.log(above))
+    return np.where((below > 0.0) & (above > 0.0), logs, (1.0 - frac) * below + frac * above)
+
+
+_GRID_F_NUMBERS = tuple(2.0 ** (k / 2.0) for k in range(13))
+"""N = 2^(k/2), f/1 to f/64 in half stops; a prescription's own design f-number is added."""
+_TABLE_VERSION = 2
+
+
+def _grid_position(grid: tuple[float, ...], f_number: float) -> tuple[int, float]:
+    """The cell of the f-number grid N falls in and its position there in log N (clamped to the ends)."""
+    log_n = math.log(min(max(f_number, grid[0]), grid[-1])) if f_number > 0.0 else math.log(grid[0])
+    i = min(bisect.bisect_right(grid, math.exp(log_n)) - 1, len(grid) - 2)
+    i = max(i, 0)
+    return i, (log_n - math.log(grid[i])) / (math.log(grid[i + 1]) - math.log(grid[i]))
+
+
+def _between(low: float, high: float, t: float) -> float:
+    """Interpolate two grid shares: geometrically when both are positive, else linearly."""
+    if low > 0.0 and high > 0.0:
+        return math.exp((1.0 - t) * math.log(low) + t * math.log(high))
+    return (1.0 - t) * low + t * high
 
 
 def _interpolate(table: tuple[tuple[float, float], ...], m: float) -> float:
@@ -197,9 +234,99 @@ def _interpolate(table: tuple[tuple[float, float], ...], m: float) -> float:
     return table[-1][1]
 
 
-@functools.lru_cache(maxsize=256)
-def _aberration_table(prescription: Any, f_number: float) -> tuple[tuple[float, float], ...]:
-    """(magnification, |real/paraxial − 1|) of the local depth of field in object vergence.
+Table = tuple[tuple[float, ...], tuple[tuple[tuple[float, float], ...], ...]]
+
+
+@functools.lru_cache(maxsize=64)
+def aberration_table(prescription: Any) -> Table:
+    """The aberration calibration of a prescription: its f-number grid and (magnification, share) pairs per f-number.
+
+    The f-numbers are N = 2^(k/2), f/1 to f/64 (k = 0…12), and the
+    prescription's design f-number when it states one. Computing it
+    traces rays (numpy, about 20 ms); the result is cached for the process
+    and on disk, in ``$XDG_CACHE_HOME/camtool/aberrations/`` (default
+    ``~/.cache/camtool``), keyed by the prescription's content, so a later
+    command with the same prescription reads a small JSON file instead.
+
+    Examples
+    --------
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> grid, table = aberration_table(prescription_from_mapping(EXAMPLE_SINGLET))
+    >>> len(grid), grid[0], grid[-1], table[0][0][0]
+    (13, 1.0, 64.0, 0.0)
+    """
+    path, content = _cache_path(prescription), _content(prescription)
+    table = _read_table(path, content)
+    if table is None:
+        table = _compute_table(prescription)
+        _write_table(path, table, content)
+    return table
+
+
+def _content(prescription: Any) -> str:
+    """What the table depends on: the surfaces, the object medium, the grids and the table version."""
+    return repr((_TABLE_VERSION, _grid(prescription), _ABERRATION_MAGNIFICATIONS, prescription.surfaces,
+                 prescription.object_index))
+
+
+def _cache_path(prescription: Any) -> str:
+    """Cache file of a prescription's table, named by two checksums of :func:`_content`.
+
+    (zlib's checksums import in no time, unlike hashlib; the file also holds
+    the content itself, and a file whose content differs is not used.)
+    """
+    import os
+    import zlib
+
+    data = _content(prescription).encode("utf-8")
+    key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
+    base = os.environ.get("XDG_CACHE_HOME", "")
+    base = base if base and os.path.isabs(base) else os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(base, "camtool", "aberrations", f"{key}.json")
+
+
+def _read_table(path: str, content: str) -> Table | None:
+    """The cached table, or None when the file is missing, unreadable, of other content or of another grid size."""
+    import json
+
+    try:
+        with open(path, encoding="utf-8") as handle:
+            data = json.load(handle)
+        if data["content"] != content:
+            return None
+        grid = tuple(float(n) for n in data["f_numbers"])
+        table = tuple(tuple((float(m), float(s)) for m, s in row) for row in data["table"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    if len(table) != len(grid) or len(grid) < 2 or any(len(row) < 2 for row in table):
+        return None
+    return grid, table
+
+
+def _write_table(path: str, table: Table, content: str) -> None:
+    """Store the table (atomically; a cache that cannot be written is skipped)."""
+    import json
+    import os
+    import tempfile
+
+    try:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with tempfile.NamedTemporaryFile("w", dir=os.path.dirname(path), delete=False, suffix=".tmp") as handle:
+            json.dump({"content": content, "f_numbers": table[0], "table": table[1]}, handle)
+        os.replace(handle.name, path)
+    except OSError:
+        pass
+
+
+def _grid(prescription: Any) -> tuple[float, ...]:
+    """The f-numbers of a prescription's table: the half-stop grid and its design f-number."""
+    design = prescription.f_number
+    extra = {float(design)} if design and _GRID_F_NUMBERS[0] < design < _GRID_F_NUMBERS[-1] else set()
+    return tuple(sorted(set(_GRID_F_NUMBERS) | extra))
+
+
+def _compute_table(prescription: Any) -> Table:
+    """(magnification, |real/paraxial − 1|·(1 + m)) of the local depth of field, per grid f-number.
 
     At a few magnifications m (objects at vertex vergence w), with a
     neighbouring object at w + dw: the real rays' 2√2·S·dz_best/dw (S the RMS
@@ -207,10 +334,11 @@ def _aberration_table(prescription: Any, f_number: float) -> tuple[tuple[float, 
     2·|u′|·dz′/dw through the stop edge. Their ratio is the ratio of the
     depths of field in vergence (the limits are where the blur, proportional
     to these, reaches c). Magnifications the real rays cannot reach are left
-    out; if none can be traced the estimate is 1 (everything uncertain).
+    out; where the rays cannot be traced the estimate is 1 (everything
+    uncertain).
     """
     from camtool.optics.paraxial import first_order, paraxial_trace
-    from camtool.optics.tracer import RayTraceError, real_tracer
+    from camtool.optics.tracer import real_tracer
 
     fo = first_order(prescription)
     f = fo.efl_mm
@@ -222,35 +350,42 @@ def _aberration_table(prescription: Any, f_number: float) -> tuple[tuple[float, 
         dw = max(w, 1.0 / f) * 1e-4
         ws += [w, w + dw]
         ms.append(m)
-    try:
-        summary = real_tracer(prescription).summaries(ws, f_number)
-    except RayTraceError:
-        return ((0.0, 1.0), (1.0, 1.0))
+    tracer = real_tracer(prescription)
     stop = prescription.stop_index
     a, _ = paraxial_trace(prescription, 1.0, 0.0, stop=stop)
     b, _ = paraxial_trace(prescription, 0.0, 1.0, stop=stop)
     ya, nua = paraxial_trace(prescription, 1.0, 0.0)
     yb, nub = paraxial_trace(prescription, 0.0, 1.0)
-    z_k, r_stop = prescription.vertices_mm[-1], fo.stop_radius_mm(f_number)
-
-    def paraxial_image(w: float) -> tuple[float, float]:
-        h = r_stop / (a + b * w)
-        y_k, nu_k = h * (ya + w * yb), h * (nua + w * nub)
-        return z_k - y_k / nu_k, abs(nu_k)
-
+    z_k = prescription.vertices_mm[-1]
+    v = tracer.pupil_vergence(ws)
     table = []
-    for i, m in enumerate(ms):
-        w0, w1 = ws[2 * i], ws[2 * i + 1]
-        z0, slope = paraxial_image(w0)
-        z1, _ = paraxial_image(w1)
-        real = 2.0 * math.sqrt(2.0) * float(summary.slope_rms[2 * i]) * float(summary.z_best[2 * i + 1] - summary.z_best[2 * i])
-        first = 2.0 * slope * (z1 - z0)
-        share = abs(real / first - 1.0)
-        # (1 + m): at close range the real focus shift adds about as much again (shared lenses)
-        table.append((m, share * (1.0 + m) if math.isfinite(share) else 1.0))
-    if len(table) == 1:
-        table.append((1.0, table[0][1]))
-    return tuple(table)
+    grid = _grid(prescription)
+    for f_number in grid:
+        summary, ok = tracer.summarise(v, f_number)
+        r_stop = fo.stop_radius_mm(f_number)
+
+        def paraxial_image(w: float, r_stop: float = r_stop) -> tuple[float, float]:
+            h = r_stop / (a + b * w)
+            y_k, nu_k = h * (ya + w * yb), h * (nua + w * nub)
+            return z_k - y_k / nu_k, abs(nu_k)
+
+        row = []
+        for i, m in enumerate(ms):
+            w0, w1 = ws[2 * i], ws[2 * i + 1]
+            z0, slope = paraxial_image(w0)
+            z1, _ = paraxial_image(w1)
+            real = _SQRT8 * float(summary.slope_rms[2 * i]) * float(summary.z_best[2 * i + 1] - summary.z_best[2 * i])
+            share = abs(real / (2.0 * slope * (z1 - z0)) - 1.0)
+            good = bool(ok[2 * i] and ok[2 * i + 1]) and math.isfinite(share)
+            # (1 + m): at close range the real focus shift adds about as much again (shared lenses)
+            row.append((m, share * (1.0 + m) if good else 1.0))
+        if len(row) == 1:
+            row.append((1.0, row[0][1]))
+        table.append(tuple(row))
+    return grid, tuple(table)
+
+
+_SQRT8 = 2.0 * math.sqrt(2.0)
 
 
 def depth_error(limits: Any, reference: Any) -> Any:

@@ -131,7 +131,8 @@ def thin_dof(
     ----------
     focal_length_mm, f_number, coc_mm : float or array, all > 0
     distance_mm : float or array
-        Focus distance: from the sensor, ≥ 4f (1:1); from the lens, ≥ 2f. ``inf`` allowed.
+        Focus distance: from the sensor, ≥ 4f (1:1; the m ≤ 1 branch); from the lens, > f
+        (between f and 2f the magnification m = f/(u − f) is above 1). ``inf`` allowed.
     distance_from : ``"sensor"`` or ``"lens"``
     focus : LensPlaneDistances or None
         From the sensor: (u, v) of ``distance_mm`` already converted by
@@ -165,12 +166,13 @@ def thin_dof(
         hyperfocal = xp.where(h >= 2.0 * f, h + f + f_number * coc_mm, 4.0 * f)
     else:
         require_positive("distance_mm", distance_mm, allow_inf=True)
-        require("distance_mm", distance_mm, distance_mm >= 2.0 * f,
-                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
+        require("distance_mm", distance_mm, distance_mm > f,
+                "more than {limit} from the lens (the focal length; between f and 2f the magnification is above 1)",
+                limit=f)
         u, offset, hyperfocal = distance_mm, 0.0, h
     with quiet(xp):
         u_minus_f = u - f
-        denominator = 1.0 + (h0 - f) / u  # > 1/2 because u ≥ 2f; 1 at infinity
+        denominator = 1.0 + (h0 - f) / u  # > 0 because u > f; 1 at infinity
         near = h0 / denominator
         front = u_minus_f / denominator
         # H − u is a whole number of ulps of H when positive; flooring it at about one ulp only

@@ -283,17 +283,19 @@ def _scene_lens(lens: LensData) -> tuple[Any, Any]:
 
 
 def _focus(f: Any, s: Any, plane: str, lens: LensData) -> rungs.Focus:
-    """The one conversion of the focus distance for a call: checked reachable (1:1 at the closest), thin model's messages.
+    """The one conversion of the focus distance for a call: checked reachable, with the thin model's messages.
 
-    From the sensor with the lens's hiatus (0 when unknown); from the lens
-    the hiatus does not move u or v.
+    From the sensor with the lens's hiatus (0 when unknown; the m ≤ 1 branch,
+    closest 1:1); from the lens any u > f (m > 1 between f and 2f), and the
+    hiatus does not move u or v.
     """
     from camtool.core.errors import require, require_positive
 
     if check_plane(plane, FOCUS_PLANES) == "lens":
         require_positive("distance_mm", s, allow_inf=True)
-        require("distance_mm", s, s >= 2.0 * f,
-                "at least {limit} from the lens (the closest focus, 1:1: 2 × focal length)", limit=2.0 * f)
+        require("distance_mm", s, s > f,
+                "more than {limit} from the lens (the focal length; between f and 2f the magnification is above 1)",
+                limit=f)
         return rungs.Focus(focus_geometry(f, s, plane), 0.0)
     delta = _scene_lens(lens)[1]
     return rungs.Focus(focus_geometry(f, s, plane, delta), delta)

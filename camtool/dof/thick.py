@@ -122,8 +122,8 @@ def _focus(f: Any, distance: Any, hiatus: Any, e: Any, distance_from: str,
                 detail="hiatus + image distance + f(1 − 1/P) must be > 0")
         return u, v, to_pupil
     u = distance + e if distance_from == "entrance_pupil" else distance
-    require("distance_mm", distance, u >= 2.0 * f,
-            "at least 2f from the front principal plane (1:1, the closest a unit-focusing lens gets)")
+    require("distance_mm", distance, u > f,
+            "more than f from the front principal plane (closer, the lens forms no real image)")
     return u, f / (1.0 - f / u), (0.0 if distance_from == "entrance_pupil" else e)
 
 

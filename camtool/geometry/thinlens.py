@@ -218,8 +218,9 @@ def focus_geometry(
         sensor = distance_mm
     else:
         require_positive("focal_length_mm", focal_length_mm)
-        require("distance_mm", distance_mm, distance_mm >= 2.0 * focal_length_mm,
-                "at least {limit} from the lens (1:1, 2 × focal length)", limit=2.0 * focal_length_mm)
+        require("distance_mm", distance_mm, distance_mm > focal_length_mm,
+                "more than {limit} from the lens (the focal length; between f and 2f the magnification is above 1)",
+                limit=focal_length_mm)
         u = distance_mm
         v = image_distance_mm(focal_length_mm, u)
         sensor = u + v + hiatus_mm

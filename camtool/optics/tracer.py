@@ -61,15 +61,26 @@ class RayTraceError(ValueError):
 
 @dataclass(frozen=True)
 class _Surface:
-    """A surface prepared for tracing: vertex z, curvature, conic, polynomial, indices."""
+    """A surface prepared for tracing: vertex z, curvature, conic, polynomial, indices, gap to the next."""
 
     z: float
     c: float
     k: float
-    lowest: int
     dense: tuple[float, ...]
     n_before: float
     n_after: float
+    gap: float
+
+    @property
+    def spherical(self) -> bool:
+        """True for a sphere or a plane (no conic, no polynomial): the closed-form fast path."""
+        return self.k == 0.0 and not self.dense
+
+    @functools.cached_property
+    def terms(self) -> tuple[np.ndarray, np.ndarray]:
+        """Polynomial coefficients a_1…a_P and the slope coefficients 2·a_2…P·a_P."""
+        values = np.array(self.dense)
+        return values, values[1:] * np.arange(2, values.size + 1)
 
 
 @dataclass(frozen=True)
@@ -78,32 +89,122 @@ class FanSummary:
 
     ``z_best`` best-focus (minimum-RMS) film position; ``slope_rms`` √(Σ w·t²);
     ``best_blur`` 2√2 × RMS radius on the best-focus plane; ``edge_mm`` the
-    edge ray's height at z = 0.
+    edge ray's height at z = 0; ``aim_mm`` the edge ray's height where it
+    crosses the plane of the paraxial entrance pupil (extended in object
+    space), the parameter the edge-ray search solves for.
     """
 
     z_best: np.ndarray
     slope_rms: np.ndarray
     best_blur: np.ndarray
     edge_mm: np.ndarray
+    aim_mm: np.ndarray
 
 
-def _poly(lowest: int, dense: tuple[float, ...], r: np.ndarray) -> tuple[Any, Any]:
-    """Σ a_n rⁿ and its derivative Σ n·a_n rⁿ⁻¹ at r ≥ 0, by Horner's rule.
+def _poly(values: np.ndarray, slopes: np.ndarray, r: Any) -> tuple[Any, Any]:
+    """Σ a_n rⁿ and its derivative Σ n·a_n rⁿ⁻¹ at r ≥ 0, from the powers r¹…r^P.
 
-    ``dense`` holds a_lowest, a_lowest+1, … (zeros included), so no array
-    is raised to a power.
+    ``values`` holds a_1…a_P (zeros included), ``slopes`` 2·a_2…P·a_P: the
+    sums are two matrix products over the stacked powers.
     """
-    value: Any = 0.0
-    slope: Any = 0.0
-    for offset in range(len(dense) - 1, -1, -1):
-        value = value * r + dense[offset]
-        slope = slope * r + (lowest + offset) * dense[offset]
-    r_low = r ** (lowest - 1) if lowest != 2 else r
-    return value * r_low * r, slope * r_low
+    flat = r.reshape(-1)
+    powers = np.empty((values.size, flat.size))
+    rows = list(powers)
+    rows[0][...] = flat
+    for k in range(1, values.size):
+        np.multiply(rows[k - 1], flat, out=rows[k])
+    return (values @ powers).reshape(r.shape), (slopes @ powers[:-1]).reshape(r.shape)
+
+
+def _propagate(
+    surfaces: tuple[_Surface, ...], y: Any, z0: Any, m: Any, l: Any, refract_last: bool = True
+) -> tuple[Any, Any, Any, Any, Any]:
+    """Trace rays through ``surfaces`` (z0: position relative to the first one's vertex).
+
+    Returns (y, z, m, l, l_min): height and position relative to the last
+    surface's vertex at the last intersection, the direction cosines after
+    it (before it when ``refract_last`` is false), and the smallest l met on
+    the way (a ray that turns back has l ≤ 0 and is void). Spheres and planes
+    take the closed form (Welford's intersection: with F = c(y² + z²) − 2z
+    and G = l − c(y·m + z·l), the path is F/(G + √(G² − cF)) and the cosine
+    of incidence is √(G² − cF)); conics and aspheres the general path.
+    NaN marks rays that miss a surface or are totally internally reflected.
+    """
+    lmin = l
+    last = len(surfaces) - 1
+    for i, s in enumerate(surfaces):
+        refract = (refract_last or i < last) and s.n_before != s.n_after
+        mu = s.n_before / s.n_after
+        if not s.spherical:
+            y, z0, m, l = _general_surface(s, y, z0, m, l, refract)
+            lmin = np.minimum(lmin, l)
+        elif s.c == 0.0:
+            y = y - z0 / l * m
+            z0 = 0.0
+            if refract:
+                m = mu * m
+                l = np.sqrt(1.0 - m * m)  # cos of refraction; NaN: total internal reflection
+        else:
+            c = s.c
+            f_term = c * (y * y + z0 * z0) - 2.0 * z0
+            g_term = l - c * (y * m + z0 * l)
+            cos_i = np.sqrt(g_term * g_term - c * f_term)  # NaN: the ray misses the sphere
+            t = f_term / (g_term + cos_i)
+            y = y + t * m
+            z0 = z0 + t * l
+            if refract:
+                cos_r = np.sqrt((mu * mu) * (cos_i * cos_i) + (1.0 - mu * mu))
+                g = cos_r - mu * cos_i
+                gc = g * c
+                m, l = mu * m - gc * y, mu * l + g - gc * z0
+                lmin = np.minimum(lmin, l)
+        if i < last:
+            z0 = z0 - s.gap
+    return y, z0, m, l, lmin
+
+
+def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool) -> tuple[Any, Any, Any, Any]:
+    """Intersect (and refract at) a conic or aspheric surface; z0 relative to its vertex."""
+    if s.c == 0.0:
+        t = -z0 / l
+    else:
+        ck = s.c * (1.0 + s.k)
+        a = s.c * m * m + ck * l * l
+        b = s.c * y * m - l + ck * z0 * l
+        cc = s.c * y * y - 2.0 * z0 + ck * z0 * z0
+        t = cc / (np.sqrt(b * b - a * cc) - b)
+    for _ in range(30 if s.dense else 0):
+        height = y + t * m
+        sag, dsag = _sag(s, np.abs(height))
+        step = (z0 + t * l - sag) / (l - dsag * np.sign(height) * m)
+        t = t - step
+        if not np.fmax.reduce(np.abs(step), axis=None) > 1e-6:
+            break  # quadratic convergence: the error left is ~ K·step² with K ~ 0.01/mm on the shared lenses
+    y = y + t * m
+    z0 = z0 + t * l
+    if not refract:
+        return y, z0, m, l
+    _, dsag = _sag(s, np.abs(y))
+    dzdy = dsag * np.sign(y)
+    norm = np.sqrt(1.0 + dzdy * dzdy)
+    ny, nz = -dzdy / norm, 1.0 / norm
+    cos_i = ny * m + nz * l
+    mu = s.n_before / s.n_after
+    cos_r = np.sqrt(1.0 - mu * mu * (1.0 - cos_i * cos_i))  # NaN: total internal reflection
+    g = np.where(cos_i > 0.0, cos_r - mu * cos_i, np.nan)
+    return y, z0, mu * m + g * ny, mu * l + g * nz
 
 
 class RealRayTracer:
     """Real meridional ray trace of one prescription (use :func:`real_tracer` for a cached one).
+
+    Object points are given by their entrance-pupil vergence v = 1/(z_E − z_obj)
+    (z_E the paraxial entrance pupil; 0 at infinity), which stays finite for
+    every object in front of the lens, the first vertex included, and in
+    which focus and blur vary smoothly. The vertex vergence is
+    w = −1/z_obj = v/(1 − v·z_E). A ray from the object is named by its aim
+    height p where it crosses the plane z = z_E: it leaves at the angle
+    tan θ = p·v and crosses z = 0 at the height p·(1 − v·z_E).
 
     Parameters
     ----------
@@ -126,55 +227,18 @@ class RealRayTracer:
         prepared = []
         for surface, z in zip(prescription.surfaces, prescription.vertices_mm):
             terms = dict(surface.aspheric)
-            lowest = min(terms, default=2)
-            dense = tuple(terms.get(p, 0.0) for p in range(lowest, max(terms, default=1) + 1))
-            prepared.append(_Surface(z, surface.curvature, surface.conic, lowest, dense, n_before, surface.n))
+            dense = tuple(terms.get(p, 0.0) for p in range(1, max(terms, default=0) + 1))
+            prepared.append(_Surface(z, surface.curvature, surface.conic, dense, n_before, surface.n, surface.thickness_mm))
             n_before = surface.n
         self.surfaces = tuple(prepared)
         self.stop = prescription.stop_index
+        self._to_stop = self.surfaces[: self.stop + 1]
         weights = np.ones(_FAN_SIZE)
         weights[1:-1:2], weights[2:-1:2] = 4.0, 2.0
         self._simpson = weights
         self._fraction = np.arange(_FAN_SIZE) / (_FAN_SIZE - 1.0)
 
     # -- tracing ---------------------------------------------------------------------
-
-    @staticmethod
-    def _intersect(s: _Surface, y: np.ndarray, z: np.ndarray, m: np.ndarray, l: np.ndarray) -> Any:
-        """Path length t from (y, z) along (m, l) to the surface (NaN where the ray misses)."""
-        z0 = z - s.z
-        if s.c == 0.0:
-            t = -z0 / l
-        else:
-            ck = s.c * (1.0 + s.k)
-            a = s.c * m * m + ck * l * l
-            b = s.c * y * m - l + ck * z0 * l
-            cc = s.c * y * y - 2.0 * z0 + ck * z0 * z0
-            t = cc / (np.sqrt(b * b - a * cc) - b)
-        for _ in range(30 if s.dense else 0):
-            r = np.abs(y + t * m)
-            sag, dsag = _sag(s, r)
-            dzdy = dsag * np.sign(y + t * m)
-            step = (z0 + t * l - sag) / (l - dzdy * m)
-            t = t - step
-            if not np.any(np.abs(step) > 1e-8):
-                break  # quadratic convergence: the error left is ~ step² ≪ 1e-13 mm
-        return t
-
-    @staticmethod
-    def _refract(s: _Surface, y: np.ndarray, m: np.ndarray, l: np.ndarray) -> tuple[Any, Any]:
-        """New direction cosines after Snell's law at the surface point of height y."""
-        r = np.abs(y)
-        _, dsag = _sag(s, r)
-        dzdy = dsag * np.sign(y)
-        norm = np.sqrt(1.0 + dzdy * dzdy)
-        ny, nz = -dzdy / norm, 1.0 / norm
-        cos_i = ny * m + nz * l
-        mu = s.n_before / s.n_after
-        cos_r = np.sqrt(1.0 - mu * mu * (1.0 - cos_i * cos_i))  # NaN: total internal reflection
-        g = cos_r - mu * cos_i
-        g = np.where(cos_i > 0.0, g, np.nan)
-        return mu * m + g * ny, mu * l + g * nz
 
     def trace(self, y: Any, m: Any, l: Any, start: int = 0, end: int | None = None) -> tuple[Any, Any, Any, Any]:
         """Trace rays from the plane z = 0 through surfaces ``start``…``end − 1``.
@@ -192,97 +256,129 @@ class RealRayTracer:
         """
         end = len(self.surfaces) if end is None else end
         y, m, l = np.broadcast_arrays(np.asarray(y, float), np.asarray(m, float), np.asarray(l, float))
-        z = np.zeros_like(y)
+        surfaces = self.surfaces[start:end]
         with np.errstate(all="ignore"):
-            for s in self.surfaces[start:end]:
-                t = self._intersect(s, y, z, m, l)
-                y = y + t * m
-                z = z + t * l
-                if s.n_before != s.n_after:
-                    m, l = self._refract(s, y, m, l)
-                l = np.where(l > 0.0, l, np.nan)
-        return y, z, m, l
+            y, z, m, l, lmin = _propagate(surfaces, y, -surfaces[0].z, m, l)
+            void = ~(lmin > 0.0)
+            z = np.where(void, np.nan, z + surfaces[-1].z)
+            return np.where(void, np.nan, y), z, np.where(void, np.nan, m), np.where(void, np.nan, l)
 
-    def _stop_height(self, h0: np.ndarray, w: np.ndarray) -> np.ndarray:
-        """Height where rays leaving z = 0 at h0 (from an object of vergence w) meet the stop."""
-        theta = np.arctan(h0 * w)
-        y, _, _, _ = self.trace(h0, np.sin(theta), np.cos(theta), 0, self.stop + 1)
-        return y
+    def _start(self, aim: Any, v: Any) -> tuple[Any, Any, Any]:
+        """Height at z = 0 and direction cosines of rays aimed at height ``aim`` on the plane z_E."""
+        slope = aim * v
+        l = 1.0 / np.sqrt(1.0 + slope * slope)
+        return aim * (1.0 - v * self.first.z_e_mm), slope * l, l
 
-    def paraxial_edge_heights(self, w: Any, f_number: float) -> np.ndarray:
-        """Height at z = 0 of the paraxial ray through the entrance-pupil edge: r_E/(1 + w·z_E) (mm)."""
+    def _stop_height(self, aim: Any, v: Any) -> Any:
+        """Height where rays aimed at ``aim`` (from objects at pupil vergence v) meet the stop surface."""
+        y, m, l = self._start(aim, v)
+        y, _, _, _, lmin = _propagate(self._to_stop, y, 0.0, m, l, refract_last=False)
+        return np.where(lmin > 0.0, y, np.nan)
+
+    def pupil_vergence(self, w: Any) -> np.ndarray:
+        """Entrance-pupil vergence v = w/(1 + w·z_E) of objects at vertex vergence w (1/mm)."""
         w = np.atleast_1d(np.asarray(w, float))
-        return self.first.efl_mm / (2.0 * f_number) / (1.0 + w * self.first.z_e_mm)
+        z_e = self.first.z_e_mm
+        with np.errstate(all="ignore"):
+            return np.where(np.isinf(w), 1.0 / z_e if z_e else np.inf, w / (1.0 + w * z_e))
 
-    def edge_heights(self, w: Any, f_number: float, guess: Any = None) -> np.ndarray:
-        """Height at z = 0 of the edge ray (meeting the stop at r_stop) for each vertex vergence w (mm).
+    def aims(self, v: Any, f_number: Any, guess: Any = None) -> np.ndarray:
+        """Aim height of the edge ray (meeting the stop at r_stop) for each pupil vergence v (mm).
 
-        Starts from ``guess`` (default: the paraxial ray through the
-        entrance-pupil edge, :meth:`paraxial_edge_heights`) and refines by
-        Newton's method with a finite-difference slope (relative step 1e-7).
-        Once a step is below 1e-8 of the height, the error left is below
-        ~1e-15 of it (quadratic convergence, slope error ~1e-7), and the
-        iteration stops.
+        ``f_number`` is one N, or one per vergence.
+
+        Starts from ``guess`` (default: the paraxial entrance-pupil radius
+        f/(2N), exact in the paraxial limit) and refines by Newton's method
+        with a finite-difference slope (relative step 1e-7). Once a step is
+        below 1e-8 of the height, the error left is below ~1e-15 of it
+        (quadratic convergence, slope error ~1e-7), and the iteration stops.
+        NaN where the edge ray cannot be traced.
         """
-        w = np.atleast_1d(np.asarray(w, float))
-        r_stop = self.first.stop_radius_mm(f_number)
-        h = self.paraxial_edge_heights(w, f_number) if guess is None else np.asarray(guess, float)
+        v = np.atleast_1d(np.asarray(v, float))
+        n = np.asarray(f_number, float)
+        r_stop = self.first.efl_mm / (2.0 * n * self.first.m_e)  # f/(2·N·m_E), as FirstOrder.stop_radius_mm
+        p = np.broadcast_to(self.first.efl_mm / (2.0 * n), v.shape).copy() if guess is None else np.array(guess, float)
+        pair_v = np.concatenate([v, v])
         with np.errstate(all="ignore"):
             for _ in range(40):
-                pair = self._stop_height(np.stack([h, h * (1.0 + 1e-7)]), w)
-                slope = (pair[1] - pair[0]) / (h * 1e-7)
-                step = (pair[0] - r_stop) / slope
-                h = h - step
-                if not np.any(np.abs(step) > 1e-8 * np.abs(h)):
+                pair = self._stop_height(np.concatenate([p, p * (1.0 + 1e-7)]), pair_v)
+                y0, y1 = pair[: v.size], pair[v.size :]
+                step = (y0 - r_stop) * (p * 1e-7) / (y1 - y0)
+                p = p - step
+                if not np.any(np.abs(step) > 1e-8 * np.abs(p)):
                     break
-        if not np.all(np.isfinite(h)):
-            raise RayTraceError(
-                f"{self._name()}: the edge ray of the f/{f_number:g} beam cannot reach the stop "
-                "(it misses a surface or is totally internally reflected)"
-            )
-        return h
+        return p
 
-    def fan(self, w: Any, f_number: float, h_edge: Any = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Image-space lines y = a + t·z and normalised weights of the 65-ray fan, per vergence.
-
-        ``h_edge`` are the edge-ray heights (default: :meth:`edge_heights`).
-        Returns arrays (a, t, weights) of shape (len(w), 65); dropped rays
-        have weight 0.
-        """
-        w = np.atleast_1d(np.asarray(w, float))
-        h_edge = self.edge_heights(w, f_number) if h_edge is None else h_edge
-        theta = np.arctan(h_edge * w)[:, None] * self._fraction
-        at_infinity = (w == 0.0)[:, None]
-        with np.errstate(all="ignore"):
-            h0 = np.where(at_infinity, h_edge[:, None] * self._fraction, np.tan(theta) / w[:, None])
-            weights = self._simpson * np.where(at_infinity, self._fraction, np.sin(theta))
-            y, z, m, l = self.trace(h0, np.sin(theta), np.cos(theta))
-            t = m / l
-            a = y - t * z
-        ok = np.isfinite(a) & np.isfinite(t)
-        if np.any(ok.sum(axis=1) < _MIN_RAYS):
-            raise RayTraceError(
-                f"{self._name()}: fewer than {_MIN_RAYS} of {_FAN_SIZE} rays get through the lens "
-                f"at f/{f_number:g} (rays miss surfaces or are totally internally reflected)"
-            )
+    def _fan(self, v: np.ndarray, aim: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Image-space lines y = a + t·z and normalised weights of the 65-ray fans, per pupil vergence."""
+        v2 = v[:, None]
+        tan_max = (aim * v)[:, None]
+        theta = np.arctan(tan_max) * self._fraction
+        finite = tan_max != 0.0
+        tan_k = np.tan(theta)
+        ratio = np.where(finite, tan_k / np.where(finite, tan_max, 1.0), self._fraction)
+        h0 = (aim * (1.0 - v * self.first.z_e_mm))[:, None] * ratio
+        weights = self._simpson * np.where(v2 == 0.0, self._fraction, np.sin(theta))
+        l0 = np.cos(theta)
+        y, z, m, l, lmin = _propagate(self.surfaces, h0, 0.0, np.sin(theta), l0)
+        t = m / l
+        a = y - t * (z + self.surfaces[-1].z)
+        ok = np.isfinite(a) & np.isfinite(t) & (lmin > 0.0)
         weights = np.where(ok, weights, 0.0)
-        weights /= weights.sum(axis=1, keepdims=True)
+        weights = weights / weights.sum(axis=1, keepdims=True)
+        self._survivors = ok.sum(axis=1)
         return np.where(ok, a, 0.0), np.where(ok, t, 0.0), weights
+
+    def summarise(self, v: Any, f_number: Any, guess: Any = None) -> tuple[FanSummary, np.ndarray]:
+        """Fan summaries per pupil vergence v, and a mask of those that could be traced.
+
+        ``f_number`` is one N, or one per vergence (several f-numbers in one batch).
+
+        Where the edge ray fails or fewer than 9 of 65 rays survive, the
+        mask is False and the summary NaN; nothing is raised.
+        """
+        v = np.atleast_1d(np.asarray(v, float))
+        with np.errstate(all="ignore"):
+            aim = self.aims(v, f_number, guess)
+            a, t, weights = self._fan(v, aim)
+            wt2 = (weights * t * t).sum(axis=1)
+            z_best = -(weights * a * t).sum(axis=1) / wt2
+            residual = a + t * z_best[:, None]
+            best = _SQRT8 * np.sqrt((weights * residual * residual).sum(axis=1))
+            ok = np.isfinite(aim) & (self._survivors >= _MIN_RAYS) & np.isfinite(z_best) & np.isfinite(best)
+            edge = aim * (1.0 - v * self.first.z_e_mm)
+        return FanSummary(z_best, np.sqrt(wt2), best, edge, aim), ok
 
     def summaries(self, w: Any, f_number: float, guess: Any = None) -> FanSummary:
         """Best focus, RMS slope and best-focus RMS blur for each vertex vergence w (mm).
 
         z_best = −Σ w·a·t/Σ w·t²; slope_rms = √(Σ w·t²);
-        best_blur = 2√2·√(Σ w·(a + t·z_best)²). ``guess``: starting edge-ray
-        heights for :meth:`edge_heights`.
+        best_blur = 2√2·√(Σ w·(a + t·z_best)²). ``guess``: starting aim
+        heights for :meth:`aims`.
+
+        Raises
+        ------
+        RayTraceError
+            The edge ray cannot reach the stop, or fewer than 9 of 65 rays
+            get through the lens.
         """
-        h_edge = self.edge_heights(w, f_number, guess)
-        a, t, weights = self.fan(w, f_number, h_edge)
-        wt2 = (weights * t * t).sum(axis=1)
-        z_best = -(weights * a * t).sum(axis=1) / wt2
-        residual = a + t * z_best[:, None]
-        best = _SQRT8 * np.sqrt((weights * residual * residual).sum(axis=1))
-        return FanSummary(z_best, np.sqrt(wt2), best, h_edge)
+        v = self.pupil_vergence(w)
+        summary, ok = self.summarise(v, f_number, guess)
+        if not np.all(ok):
+            raise self.failure(f_number, summary, ok)
+        return summary
+
+    def failure(self, f_number: float, summary: FanSummary, ok: np.ndarray) -> RayTraceError:
+        """The error that says why some fans could not be traced."""
+        if not np.all(np.isfinite(summary.aim_mm[~ok])):
+            return RayTraceError(
+                f"{self._name()}: the edge ray of the f/{f_number:g} beam cannot reach the stop "
+                "(it misses a surface or is totally internally reflected)"
+            )
+        return RayTraceError(
+            f"{self._name()}: fewer than {_MIN_RAYS} of {_FAN_SIZE} rays get through the lens "
+            f"at f/{f_number:g} (rays miss surfaces or are totally internally reflected)"
+        )
 
     def _name(self) -> str:
         return self.prescription.id or self.prescription.source or "prescription"
@@ -290,11 +386,12 @@ class RealRayTracer:
 
 def _sag(s: _Surface, r: Any) -> tuple[Any, Any]:
     """Sag and radial slope (sag, dsag/dr) of a prepared surface at r ≥ 0; NaN beyond a conic's rim."""
-    root = np.sqrt(1.0 - s.c * s.c * (1.0 + s.k) * r * r)
-    sag = s.c * r * r / (1.0 + root)
+    r2 = r * r
+    root = np.sqrt(1.0 - (s.c * s.c * (1.0 + s.k)) * r2)
+    sag = s.c * r2 / (1.0 + root)
     slope = s.c * r / root
     if s.dense:
-        extra, extra_slope = _poly(s.lowest, s.dense, r)
+        extra, extra_slope = _poly(*s.terms, r)
         sag, slope = sag + extra, slope + extra_slope
     return sag, slope
 

@@ -301,7 +301,9 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         prescription_id=prescription.id if prescription else None,
         prescription=prescription.optics if prescription else None,
         sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
-        approximate=r.get("approximate", False), **_common(entry))
+        approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
+        close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
+                          for row in r.get("close_focus", ())), **_common(entry))
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:
@@ -322,7 +324,7 @@ def _build_scene(db: Database, entry: _Entry) -> Scene:
     lens = db._reference(entry, "scene", "lens") if "lens" in r else None
     return Scene(r["id"], r["name"], camera, sensor, lens, r.get("focal_length_mm"), r.get("f_number"),
                  r.get("distance_mm"), r.get("subject_size_mm"), r.get("background_mm"), r.get("coc_mm"),
-                 **_common(entry))
+                 magnification=r.get("magnification"), **_common(entry))
 
 
 def _build_film(db: Database, entry: _Entry) -> Film:

@@ -424,6 +424,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "background_mm": positive_mm,
         "coc": _length_with_default("mm", allow_inf=False),
         "coc_mm": positive_mm,
+        "magnification": positive,
     },
     "film": {
         **_COMMON,
@@ -763,6 +764,8 @@ class Lens:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    min_magnification: float | None = None
+    close_focus: tuple[tuple[float, float, float | None], ...] = ()  # (focal length, closest focus, magnification)
 
     kind = "lens"
 
@@ -814,6 +817,7 @@ class Scene:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    magnification: float | None = None
 
     kind = "scene"
 

@@ -1,0 +1,102 @@
+"""The aberration estimate of a prescription: one table over a grid of f-numbers, cached on disk.
+
+A single-scene command with a prescription imports numpy and traces rays only when its model is
+``raytrace`` (or the prescription's table is not yet cached); continuous f-numbers are
+interpolated in the table, so they cost no more than a few.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from camtool.dof import auto
+from camtool.optics.prescription import prescription_from_mapping
+
+DATA = Path(__file__).parent / "data" / "prescriptions"
+
+
+def load(name):
+    return prescription_from_mapping(yaml.safe_load((DATA / f"{name}.yaml").read_text()), name)
+
+
+def numpy_imported(model: str, env: dict[str, str]) -> bool:
+    code = (
+        "import sys\n"
+        f"sys.argv = ['camtool', 'dof', '--lens', 'dgauss100-lens', '-N', '5.6', '-s', '3m', '--format', 'json',"
+        f" '--model', '{model}']\n"
+        "from camtool.cli import main\n"
+        "try:\n    main()\nexcept SystemExit as done:\n    assert not done.code, done.code\n"
+        "print('numpy' in sys.modules, file=sys.stderr)\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    return run.stderr.strip().splitlines()[-1] == "True"
+
+
+def test_a_single_scene_with_a_prescription_imports_numpy_only_for_the_ray_trace(tmp_path):
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
+    numpy_imported("auto", env)  # the first command with this prescription calibrates and caches it
+    assert list((tmp_path / "camtool" / "aberrations").glob("*.json"))
+    for model in ("auto", "paraxial", "thin", "thick"):
+        assert not numpy_imported(model, env), model
+    assert numpy_imported("raytrace", env)
+
+
+def test_the_disk_cache_holds_what_a_fresh_calibration_computes(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    lens = load("telecentric36")
+    computed = auto._compute_table(lens)
+    path, content = auto._cache_path(lens), auto._content(lens)
+    auto._write_table(path, computed, content)
+    assert auto._read_table(path, content) == computed  # floats survive JSON exactly (shortest repr)
+    assert json.loads(Path(path).read_text())["f_numbers"][0] == 1.0
+    assert auto._read_table(path, content + " ") is None  # a file of other content is not used
+    Path(path).write_text("{not json")
+    assert auto._read_table(path, content) is None  # a damaged file is recomputed, not trusted
+
+
+def test_the_cache_key_follows_the_prescription_content(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    lens = load("dgauss100")
+    data = yaml.safe_load((DATA / "dgauss100.yaml").read_text())
+    data["surfaces"][0]["radius_mm"] *= 1.0000001
+    changed = prescription_from_mapping(data, "dgauss100")
+    assert auto._cache_path(lens) != auto._cache_path(changed)
+    renamed = prescription_from_mapping({**yaml.safe_load((DATA / "dgauss100.yaml").read_text()), "name": "other"})
+    assert auto._cache_path(lens) == auto._cache_path(renamed)
+
+
+@pytest.mark.parametrize("name", ["dgauss100", "telephoto127", "cellphone", "telecentric36", "wideangle17"])
+def test_interpolated_f_numbers_track_a_direct_calibration(name):
+    # the share at an f-number between grid points against the same calibration run at exactly that
+    # f-number: within 25 % of the share or 0.002 absolute (the estimate itself is good to about 2x)
+    lens = load(name)
+    auto.aberration_table(lens)  # the grid table (cached)
+    design = lens.f_number
+    for n in (design * 1.19, design * 1.6, 9.5, 18.0):
+        direct_grid = auto._GRID_F_NUMBERS
+        try:
+            auto._GRID_F_NUMBERS = (n, n * 1.0001)
+            exact = auto._compute_table(lens)[1][0]
+        finally:
+            auto._GRID_F_NUMBERS = direct_grid
+        for m, share in exact:
+            estimate = auto.aberration_share(lens, n, m)
+            assert estimate == pytest.approx(share, rel=0.25, abs=0.002), (n, m)
+
+
+def test_scalar_and_array_shares_agree():
+    lens = load("dgauss100")
+    n = np.array([2.0, 2.2, 3.3, 5.6, 7.77, 16.0, 100.0])[:, None]
+    m = np.array([0.0, 0.02, 0.2, 0.9, math.inf])[None, :]
+    many = auto.aberration_share(lens, n, m)
+    for i, j in np.ndindex(many.shape):
+        assert many[i, j] == pytest.approx(auto.aberration_share(lens, float(n[i, 0]), float(m[0, j])), rel=1e-12)
