@@ -238,7 +238,7 @@ def check(argv: list[str], result: Any) -> str:
             for line in lines:
                 if re.match(r"camtool( \w+)?: \d+ of \d+ \w+ skipped$", line):
                     continue
-                if line.startswith("camtool") and any(a and a in line for a in argv[1:]):
+                if line.startswith("camtool") and any(a in line for a in argv[1:]):  # "" is named as ""
                     continue
                 if line.startswith("Error: ") and OPTION.search(line):
                     continue

@@ -657,7 +657,8 @@ def _hashable(value: Any) -> Any:
 
 
 def _single(value: Any, name: str) -> Any:
-    flat = [v for group in value or () for v in (group if isinstance(group, list) else [group])]
+    groups = value if isinstance(value, (list, tuple)) else [] if value is None else [value]
+    flat = [v for group in groups for v in (group if isinstance(group, list) else [group])]
     if len(flat) > 1:
         raise click.UsageError(f"with --batch, --{name.replace('_', '-')} takes one value on the command line")
     return flat[0] if flat else None

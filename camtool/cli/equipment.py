@@ -213,7 +213,11 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
         for field, name in _SCENE_FIELDS.items():
             value = getattr(scene, field, None)
             if value is not None and name in params and _empty(params[name]):
-                params[name] = [[value]] if name in _LIST_PARAMS else value
+                option = param_named(ctx, name)
+                if name in _LIST_PARAMS and option is not None and not getattr(option, "multiple", False):
+                    params[name] = [value]  # a list option given once (exposure's --magnification)
+                else:
+                    params[name] = [[value]] if name in _LIST_PARAMS else value
         if scene.camera is not None and camera_name is None and _empty(params.get("sensor")):
             camera_name = scene.camera.id
         elif scene.sensor is not None and "sensor" in params and _empty(params.get("sensor")):
