@@ -114,6 +114,7 @@ def scratch(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, s
     shutil.copy(REPO / "lens_db" / "prescriptions" / "dgauss100.yaml", root / "dgauss100.yaml")
     # photos: the README names them from the repository root, the help of `exif` from a folder of photos
     shutil.copytree(REPO / "tests" / "data" / "exif", root / "tests" / "data" / "exif")
+    (root / "docs" / "charts").mkdir(parents=True)  # where the README's chart examples write
     photos = root / "photos"
     photos.mkdir()
     for name in ("canon_bracket.jpg", "canon_infinity.jpg", "nikon.jpg", "olympus.jpg", "fujifilm_subject.jpg"):
