@@ -45,7 +45,7 @@ from typing import IO, Any
 
 import click
 
-from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType
+from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import ZIP, Output, open_writer
 from camtool.core.units import UnitError
 from camtool.render.columnar import ColumnRows, values_of
@@ -492,6 +492,7 @@ class _Batch:
         import numpy as np
 
         merged = dict(self.params)
+        zipped = False
         for name, column in values.items():
             param = self.columns.params[name]
             if isinstance(column, list):  # settings, and an -N column holding T-stops (one value a group)
@@ -505,6 +506,13 @@ class _Batch:
                 if missing.any():
                     chosen = np.where(missing, self.defaults[name], chosen)
                 merged[name] = [chosen.tolist()]
+                zipped = True
+        if not zipped and len(members) > 1:  # no row gives a value: one row per member from the options alone
+            for name, param in self.columns.params.items():
+                given = flatten(merged.get(name)) if isinstance(param.type, _ListType) else []
+                if len(given) == 1:
+                    merged[name] = [given * len(members)]
+                    break
         self.ctx.meta[ZIP] = True
         try:
             return self.compute(self.ctx, **merged)
@@ -663,7 +671,8 @@ def _hashable(value: Any) -> Any:
 
 
 def _single(value: Any, name: str) -> Any:
-    flat = [v for group in value or () for v in (group if isinstance(group, list) else [group])]
+    groups = value if isinstance(value, (list, tuple)) else [] if value is None else [value]
+    flat = [v for group in groups for v in (group if isinstance(group, list) else [group])]
     if len(flat) > 1:
         raise click.UsageError(f"with --batch, --{name.replace('_', '-')} takes one value on the command line")
     return flat[0] if flat else None
