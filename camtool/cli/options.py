@@ -23,6 +23,7 @@ from camtool.core.planes import FOCUS_PLANES
 F = TypeVar("F", bound=Callable[..., Any])
 
 LENGTH_MM = LengthType("mm")
+EXTENSION_MM = LengthType("mm", bounds=ranges.EXTENSION_MM)
 FOCAL_MM = LengthType("mm", bounds=ranges.FOCAL_LENGTH_MM)
 COC_MM = LengthType("mm", bounds=ranges.COC_MM)
 DISTANCE_M = LengthType("m", allow_inf=True, bounds=ranges.DISTANCE_MM)

@@ -42,6 +42,9 @@ HIATUS_FOCAL_LENGTHS = 10.0
 MAGNIFICATION = (1.0e-9, 1000.0)
 """Magnification for close-up work."""
 
+EXTENSION_MM = (0.0, 10_000.0)
+"""Extension tubes or bellows behind a lens: up to 10 m, beyond any bellows made (and any magnification above)."""
+
 
 def in_range(value: float, bounds: tuple[float, float], allow_inf: bool = False) -> bool:
     """Whether ``value`` lies in the closed interval ``bounds`` (infinity only if ``allow_inf``; NaN never)."""
