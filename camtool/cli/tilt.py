@@ -292,15 +292,6 @@ def _tilt_limit(ctx: click.Context) -> float | None:
     if lens is None:
         return None
     value = getattr(lens, "tilt_max_deg", None)
-    if value is None:  # the preset object does not carry the key: read it from the record
-        try:
-            from camtool.presets.schema import normalize
-
-            db = ctx.obj["db"]
-            entry = db._index("lens").find(normalize(lens.id))
-            value = entry.record.get("tilt_max_deg") if entry is not None else None
-        except (KeyError, AttributeError, TypeError):
-            value = None
     return None if value is None else float(value)
 
 

@@ -768,6 +768,7 @@ class Lens:
     min_magnification: float | None = None
     close_focus: tuple[tuple[float, float, float | None], ...] = ()  # (focal length, closest focus, magnification)
     t_number_min: float | None = None  # widest T-stop (cinema lenses)
+    tilt_max_deg: float | None = None  # tilt range, ± degrees (tilt-shift lenses)
 
     kind = "lens"
 
