@@ -32,6 +32,7 @@ COMMANDS = {
     "presets": "camtool.cli.presets",
     "completion": "camtool.cli.completion",
     "exif": "camtool.cli.exif",
+    "stack": "camtool.cli.stack",
 }
 
 
