@@ -221,7 +221,7 @@ def _check_closest_focus(ctx: click.Context, first: float, f: float, plane: str,
         return
     sensor = first if plane == "sensor" else first + f * first / (first - f) + delta
     if sensor < closest * (1.0 - 1e-9):
-        near = ctx.params.get("near")
+        near = float(ctx.params.get("near") or first)
         raise click.BadParameter(f"{near / 1000:.4g} m is outside the valid range: frame 1 would focus at "
                                  f"{sensor / 1000:.4g} m from the sensor, closer than the lens's closest focus "
                                  f"({closest / 1000:.4g} m); give a farther --near", ctx=ctx,

@@ -257,7 +257,7 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
     wanted = float(near_mm)
     u = hyper
     while True:
-        u = hyper if wanted >= near_at_hyper else focus_for_near(wanted, u)
+        u = hyper if wanted >= near_at_hyper * (1.0 - 1e-12) else focus_for_near(wanted, u)
         lo, hi = limits(u)
         if u >= hyper:
             hi = math.inf  # focused at the hyperfocal distance: sharp to infinity
