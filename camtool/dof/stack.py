@@ -234,8 +234,10 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
     if limits is None:
         limits = _closed_limits(f, k, model)
         lens_focus = _closed_inverse(f, k, model)
+        tol = 1e-13
     else:
         lens_focus = _numeric_inverse(limits, f, hyper)
+        tol = 1e-10
 
     def offset(u: float) -> float:
         return f * u / (u - f) + hiatus_mm if sensor else 0.0
@@ -246,7 +248,7 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
             target = wanted - offset(u)
             require("near_mm", near_mm, target > f, "more than {limit} " + where, limit=closest)
             new = lens_focus(target)
-            if abs(new - u) <= 1e-13 * u:
+            if abs(new - u) <= tol * u:
                 return new
             u = new
         return u
@@ -291,19 +293,29 @@ def _closed_inverse(f: float, k: float, model: str) -> Callable[[float], float]:
 
 
 def _numeric_inverse(limits: Limits, f: float, hyper: float) -> Callable[[float], float]:
-    """The focus u in (f, H] whose near limit is ``near``, by bisection on 1/u (near rises with u)."""
+    """The focus u in (f, H] whose near limit is ``near``: regula falsi (Illinois) on 1/u, near rising with u."""
 
     def solve(near: float) -> float:
-        lo_x, hi_x = 1.0 / hyper, 1.0 / (near * (1.0 + 1e-12))  # near(u = near) < near < near(H)
+        a, b = 1.0 / hyper, 1.0 / (near * (1.0 + 1e-12))  # near(u = near) < near ≤ near(H)
+        ga, gb = limits(1.0 / a)[0] - near, limits(1.0 / b)[0] - near
+        side = 0
         for _ in range(200):
-            mid = 0.5 * (lo_x + hi_x)
-            if limits(1.0 / mid)[0] < near:
-                hi_x = mid  # u too close: move out (smaller 1/u)
+            x = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
+            if not a < x < b:
+                x = 0.5 * (a + b)
+            gx = limits(1.0 / x)[0] - near
+            if gx >= 0.0:  # near limit at or beyond the one wanted: keep as the outer end
+                a, ga = x, gx
+                if side == 1:
+                    gb *= 0.5
+                side = 1
             else:
-                lo_x = mid
-            if hi_x - lo_x <= 1e-15 * hi_x:
+                b, gb = x, gx
+                if side == -1:
+                    ga *= 0.5
+                side = -1
+            if b - a <= 1e-12 * b or ga == 0.0:
                 break
-        u = 1.0 / lo_x  # the near limit at u is at least the one wanted: no gap
-        return max(u, f * (1.0 + 1e-12))
+        return max(1.0 / a, f * (1.0 + 1e-12))  # the near limit at u is at least the one wanted: no gap
 
     return solve
