@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
-
 from cli_helpers import run, run_json
 
 BRACKET_TABLE = """\
@@ -48,7 +48,7 @@ def test_json_keys_and_bracketing_rows() -> None:
     assert rows[0]["near_mm"] == pytest.approx(1000.0, rel=1e-12)
     assert rows[-1]["far_mm"] is None or math.isinf(rows[-1]["far_mm"]) or rows[-1]["far_mm"] == "inf"
     assert {r["criterion"] for r in rows} == {"classic"} and {r["mode"] for r in rows} == {"bracket"}
-    for a, b in zip(rows, rows[1:-1]):  # the last frame may be clamped at H (more overlap)
+    for a, b in itertools.pairwise(rows[:-1]):  # the last frame may be clamped at H (more overlap)
         assert a["far_mm"] - b["near_mm"] == pytest.approx(0.5 * (a["far_mm"] - a["near_mm"]), rel=1e-9)
         assert b["step_mm"] == pytest.approx(b["distance_mm"] - a["distance_mm"], rel=1e-12)
 
