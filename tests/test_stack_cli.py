@@ -94,6 +94,12 @@ def test_field_gives_the_focus_distances() -> None:
         (["--lens", "mp-e-65", "-N", "2.8", "-m", "6", "--depth", "1mm"],
          "Error: Invalid value for '-m' / '--magnification': 6 is outside the valid range: 0 to 5 (the lens's "
          "largest magnification)"),
+        (["--lens", "rf-50-1.8", "-N", "8", "--near", "0.25", "--far", "inf"],
+         "Error: Invalid value for '--near': 0.25 m is outside the valid range: frame 1 would focus at 0.2522 m from "
+         "the sensor, closer than the lens's closest focus (0.3 m); give a farther --near"),
+        (["-m", "1", "-N", "8", "--depth", "1mm", "--model", "raytrace"],
+         "Error: Invalid value for '--model': raytrace is not available in rail mode: the frames use the close-up "
+         "closed form (thin, or thick with the pupil magnification); it applies to --near/--far"),
         (["-f", "50", "-N", "8", "--near", "1", "--far", "2", "-m", "1"],
          "Error: give -m and --depth (rail) or --near and --far (bracketing), not both"),
     ],
@@ -103,3 +109,15 @@ def test_errors_are_one_line_exit_2(args: list[str], message: str) -> None:
     assert result.exit_code == 2
     assert result.stdout == ""
     assert result.stderr.strip() == message
+
+
+def test_a_thick_lens_moves_the_frames_and_keeps_the_chain() -> None:
+    # through the ladder's thick rung (P = 0.6): the frames differ from the thin lens's, and each frame's
+    # near limit still sits on the previous far limit less the overlap
+    thin = run_json("stack", "-f", "50", "-N", "8", "--near", "1", "--far", "inf")
+    thick = run_json("stack", "-f", "50", "-N", "8", "--near", "1", "--far", "inf", "--model", "thick",
+                     "--pupil-mag", "0.6")
+    assert abs(thick[1]["distance_mm"] / thin[1]["distance_mm"] - 1) > 1e-3
+    for a, b in itertools.pairwise(thick[:-1]):
+        assert a["far_mm"] - b["near_mm"] == pytest.approx(0.2 * (a["far_mm"] - a["near_mm"]), rel=1e-6)
+    assert thick[0]["near_mm"] == pytest.approx(1000.0, rel=1e-9)

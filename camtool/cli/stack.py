@@ -100,7 +100,8 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     D·(1 − overlap) at the subject, ⌈depth/step⌉ frames cover the depth
     and frame 1's near limit is the subject's nearest point; focus, near and far are positions along the subject from its
     nearest point, and extension_step_mm is the same step made by the lens
-    focusing instead (m²·step). Bracketing mode (-f, --near, --far; the
+    focusing instead (m²·step); the depth is the close-up closed form
+    (thin, or thick with --pupil-mag). Bracketing mode (-f, --near, --far; the
     focus ring moves): each frame's near limit sits at the previous far
     limit less overlap × that frame's depth; with --far inf the last frame
     is focused at the hyperfocal distance. Distances are in the
@@ -126,6 +127,10 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
             raise click.UsageError("Missing option '-m' (the magnification for rail mode).", ctx)
         m = _one(ctx, wanted_m, "-m", "magnification")
         _check_magnification(ctx, m)
+        if model in ("paraxial", "raytrace"):
+            raise click.BadParameter(f"{model} is not available in rail mode: the frames use the close-up closed "
+                                     "form (thin, or thick with the pupil magnification); it applies to --near/--far",
+                                     ctx=ctx, param=param_named(ctx, "model"))
         focal = flatten(focal_length)
         f = float(focal[0]) if focal else None
         chosen_criterion = criterion or ("wave" if m >= WAVE_FROM else "classic")
