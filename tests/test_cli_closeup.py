@@ -232,3 +232,23 @@ def test_a_magnification_beyond_the_ray_traces_closest_focus_blames_dash_m() -> 
     assert len(lines) == 1
     assert "'-m' / '--magnification': 2 is outside the valid range" in lines[0]
     assert "200 mm from the lens here, m ≤ 1" in lines[0]
+
+
+def test_diffraction_answers_each_row_of_a_prescription_too() -> None:
+    # dgauss100 at 1 m: f/8 is sharp; at f/64 the Airy disc 2.44·λ·N_w (0.095 mm at 550 nm) fills the
+    # full-frame CoC (0.0288 mm), so that row has null limits and a reason while the f/8 row prints
+    prescription = str(Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml")
+    result = CliRunner().invoke(cli, ["dof", "--prescription", prescription, "-N", "8,64", "-s", "1m",
+                                      "--diffraction", "--format", "json"])
+    assert result.exit_code == 0
+    sharp, blurred = json.loads(result.output)
+    assert sharp["distance_mm"] == 1000.0 and sharp["near_mm"] < 1000.0 < sharp["far_mm"]
+    assert blurred["near_mm"] is None and blurred["far_mm"] is None and "Airy disc" in blurred["reason"]
+    assert sharp["model"].endswith("+diffraction")
+
+
+def test_the_other_branch_is_named_once_per_magnification() -> None:
+    result = CliRunner().invoke(cli, ["dof", "-f", "100", "-N", "8,11", "-s", "1m", "--diffraction"])
+    assert result.exit_code == 0
+    footer = result.output.strip().splitlines()[-1]
+    assert footer.count("7.87") == 1

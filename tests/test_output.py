@@ -122,13 +122,12 @@ def test_imperial_table_uses_one_notation_for_every_distance() -> None:
     assert f"{front / 25.4:.2f}\"" in cells
 
 
-def test_a_grid_above_the_limit_is_refused_with_a_hint() -> None:
+def test_a_table_above_the_limit_is_refused_with_a_hint() -> None:
     many = ",".join(str(1 + i / 100) for i in range(1000))
     result = run("dof", "-f", "50", "-N", many, "-s", many.replace(",", "m,") + "m")
     assert result.exit_code == 2
-    assert result.stderr == ("Error: the list options ask for 1000 × 1000 = 1,000,000 combinations; the limit is "
-                             "100,000 (write the scenes to a file, one per row, and use --batch, which streams "
-                             "any number)\n")
+    assert result.stderr == ("Error: the list options ask for 1000 × 1000 = 1,000,000 combinations; a table holds "
+                             "at most 100,000 rows (use --format csv or --format json, which stream any number)\n")
 
 
 @pytest.mark.parametrize("output", [["--format", "json"], ["--format", "csv"], ["--field", "near_mm",

@@ -24,6 +24,7 @@ COMMANDS = {
     "focus": "camtool.cli.focus",
     "dof": "camtool.cli.dof",
     "hyperfocal": "camtool.cli.hyperfocal",
+    "tilt": "camtool.cli.tilt",
     "compose": "camtool.cli.compose",
     "exposure": "camtool.cli.exposure",
     "stars": "camtool.cli.stars",

@@ -163,7 +163,11 @@ def _row(model: Any, f0: float, n: float, wanted: float, by_m: bool, plane: str,
     u = focal + focal / m
     if model is not None:
         delta = model.hiatus_mm  # the preset's, or the effective hiatus of its focus model
-    return focal, k * n, m, u, u + focal + focal * m + delta, other
+    sensor = u + focal + focal * m + delta
+    if not by_m and model is None and not extension and k == 1.0:
+        # a typed distance, nothing changed it: keep it to the last digit in its own plane
+        sensor, u = (wanted, u) if plane == "sensor" else (sensor, wanted)
+    return focal, k * n, m, u, sensor, other
 
 
 def _array(values: list[float]) -> Any:
@@ -297,7 +301,7 @@ def branch_note(rows: Sequence[dict[str, Any]]) -> str:
               and r["other_magnification"] > r["magnification"] * 1.0001]
     if not others:
         return ""
-    shown = ", ".join(f"{m:.3g}" for _, m in others[:3])
+    shown = ", ".join(list(dict.fromkeys(f"{m:.3g}" for _, m in others))[:3])
     return f"the same distance is also reached at m = {shown} (give -m for that branch)"
 
 

@@ -9,7 +9,10 @@ adds the shared output options (``--format``, ``--units``, ``--presets``,
 never prints.
 
 In a batch, rows of the input file are zipped into the list options instead
-of combined: :func:`combine_params` does either, as the context says.
+of combined: :func:`combine_params` does either, as the context says. A grid
+of combinations larger than one chunk is streamed: the command is called once
+per chunk of :data:`camtool.cli.grid.CHUNK` combinations, each chunk written
+as it comes, as ``--batch`` does with its input rows.
 """
 
 from __future__ import annotations
@@ -21,29 +24,44 @@ from typing import Any
 
 import click
 
-from camtool.cli.grid import combine
+from camtool.cli.grid import Grid
 from camtool.cli.options import preset_completion, stack
 from camtool.cli.rows import ZIP, Output, open_writer
 from camtool.render.output import FORMATS
 
-MAX_COMBINATIONS = 100_000
-"""The most rows list options may ask for on the command line; ``--batch`` streams any number."""
+MAX_TABLE_ROWS = 100_000
+"""The most combinations list options may ask for in a table, which holds every row until it is drawn.
+
+JSON, CSV and ``--field`` output stream any number, a chunk at a time.
+"""
+MAX_COMBINATIONS = 2**63 - 1
+"""The most combinations of any grid: row numbers are 64-bit integers."""
+
+GRID = "camtool.grid"
+"""The ``ctx.meta`` key of the :class:`~camtool.cli.grid.Grid` a command run on the command line walks."""
 
 
 def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
-    """Rows from list options: every combination on the command line, row by row in a batch.
+    """Rows from list options: the combinations on the command line (a chunk of them), row by row in a batch.
 
-    More than :data:`MAX_COMBINATIONS` combinations is a usage error that
-    points to ``--batch``, rather than gigabytes of rows held at once.
+    A table of more than :data:`MAX_TABLE_ROWS` combinations is a usage
+    error that points to ``--format csv``/``json``, which stream.
     """
     if not ctx.meta.get(ZIP):
+        grid = ctx.meta.get(GRID)
+        if grid is None:
+            grid = ctx.meta[GRID] = Grid(whole=True)
         count = math.prod(len(values) for values in lists)
-        if count > MAX_COMBINATIONS:
+        limit = MAX_TABLE_ROWS if grid.whole else MAX_COMBINATIONS
+        if count > limit:
             sizes = " × ".join(str(len(values)) for values in lists if len(values) > 1)
-            raise click.UsageError(f"the list options ask for {sizes} = {count:,} combinations; the limit is "
-                                   f"{MAX_COMBINATIONS:,} (write the scenes to a file, one per row, and use --batch, "
-                                   "which streams any number)", ctx)
-        return combine(*lists)
+            if grid.whole:
+                raise click.UsageError(f"the list options ask for {sizes} = {count:,} combinations; a table holds "
+                                       f"at most {MAX_TABLE_ROWS:,} rows (use --format csv or --format json, "
+                                       "which stream any number)", ctx)
+            raise click.UsageError(f"the list options ask for {sizes} = {count:,} combinations; the most is "
+                                   f"{MAX_COMBINATIONS:,}", ctx)
+        return grid.columns(lists)
     import numpy as np
 
     count = max(len(values) for values in lists)
@@ -115,13 +133,20 @@ def camtool_command(
             fields = params.pop("fields")
             source = params.pop("batch", None)
             on_error = params.pop("on_error", "stop")
+            if fields:  # --field prints JSON keys' values: nothing drawn for a table is needed
+                params["fmt"] = "json"
             fmt, units = params["fmt"], params["units"]
             if source is not None:
                 from camtool.cli.batch import run_batch
 
                 run_batch(ctx, equipped, params, source, on_error, fields)
                 return
-            emit(equipped(ctx, **params), fmt, units, fields)
+            grid = ctx.meta[GRID] = Grid(whole=fmt == "table")
+            out = equipped(ctx, **params)
+            if grid.done:
+                emit(out, fmt, units, fields)
+                return
+            stream_grid(ctx, grid, out, lambda: equipped(ctx, **params), fmt, units, fields)
 
         wrapped: Callable[..., Any] = equipment_options(output_options(run))
         if batch:
@@ -132,6 +157,28 @@ def camtool_command(
         return command
 
     return decorate
+
+
+def stream_grid(ctx: click.Context, grid: Grid, first: Output, compute: Callable[[], Output], fmt: str,
+                units: str, fields: Sequence[str]) -> None:
+    """Write a grid chunk by chunk through one writer: ``first``, then ``compute()`` for each next chunk.
+
+    An error in a later chunk ends the run after the chunks before it are
+    written (JSON still a complete array), as a bad row ends ``--batch``.
+    """
+    writer = open_writer(fmt, units, fields)
+    out = first
+    try:
+        while True:
+            writer.write(out.rows, out.columns, out.keys, out.footer)
+            if grid.done:
+                break
+            grid.advance()
+            out = compute()
+    except click.ClickException:
+        writer.close()
+        raise
+    writer.close()
 
 
 def emit(out: Output, fmt: str, units: str, fields: Sequence[str] = ()) -> None:

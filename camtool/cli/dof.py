@@ -119,7 +119,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
     count, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
     closeup = bool(wanted_m or extension or teleconverter or diffraction) or has_focus_model(ctx)
     by_rays = lens is not None and lens.prescription is not None
-    if model != "all" and closeup and not (by_rays and not (wanted_m or extension or teleconverter)):
+    if model != "all" and closeup and not (by_rays and not (wanted_m or extension or teleconverter or diffraction)):
         return _closeup(ctx, model, f, n, s, c, bool(wanted_m), extension, teleconverter, distance_from, lens,
                         diffraction, wavelength, tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, chosen.label)
     if wanted_m or extension or teleconverter:

@@ -1,18 +1,28 @@
-"""Combinations of option values: one row per combination, computed in one vectorised call.
+"""Combinations of option values: one row per combination, computed vectorised, chunk by chunk.
 
 ``-f 24,35 -N 2.8,4`` asks for four scenes. :func:`combine` turns the lists
 into equally long columns (the first list varies slowest, like nested
 loops), as plain floats when there is a single scene -- so a single command
 never imports numpy -- and as numpy arrays otherwise.
+
+A grid of more than :data:`CHUNK` combinations is not built whole: a
+:class:`Grid` walks it in slices, and :func:`combine_slice` makes the
+columns of one slice from the row numbers alone (index arithmetic, the same
+order as :func:`combine`), so memory stays flat however many combinations
+the lists ask for (docs/design.md §3.4).
 """
 
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Sequence
 from typing import Any
 
 from camtool.render.columnar import values_of
+
+CHUNK = 20_000
+"""Combinations computed and written at a time (the chunk of ``--batch`` too)."""
 
 
 def combine(*lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
@@ -31,6 +41,74 @@ def combine(*lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
     rows = list(itertools.product(*lists))
     table = np.array(rows, dtype=float).reshape(len(rows), len(lists))
     return len(rows), tuple(table[:, i].copy() for i in range(len(lists)))
+
+
+def combine_slice(lists: Sequence[Sequence[float]], start: int, stop: int) -> tuple[int, tuple[Any, ...]]:
+    """Combinations ``start`` to ``stop`` (0-based, ``stop`` excluded) of :func:`combine`'s order, as arrays.
+
+    Row ``i`` takes, from each list, the item ``(i // stride) % len(list)``,
+    the stride being the product of the lengths of the lists after it: the
+    first list varies slowest, exactly as in :func:`itertools.product`.
+
+    >>> n, (f, N) = combine_slice([[24.0, 35.0, 50.0], [2.8, 4.0]], 1, 4)
+    >>> n, f.tolist(), N.tolist()
+    (3, [24.0, 35.0, 35.0], [4.0, 2.8, 4.0])
+    """
+    import numpy as np
+
+    index = np.arange(start, stop, dtype=np.int64)
+    columns = []
+    stride = math.prod(len(values) for values in lists)
+    for values in lists:
+        stride //= len(values)
+        items = np.asarray(values, dtype=float)
+        columns.append(items[(index // stride) % len(values)] if len(values) > 1
+                       else np.full(len(index), items[0]))
+    return len(index), tuple(columns)
+
+
+class Grid:
+    """Which slice of the combinations the current call of a command computes.
+
+    A command run with :attr:`whole` set computes every combination at once
+    (a table, which needs every row anyway); otherwise it computes
+    combinations :attr:`start` to :attr:`stop`, and the caller calls it again
+    after :meth:`advance` until :attr:`done`. :attr:`count` is the number of
+    combinations, known once the command has combined its lists.
+    """
+
+    def __init__(self, whole: bool = False, chunk: int | None = None) -> None:
+        self.whole = whole
+        self.chunk = max(2, chunk if chunk is not None else CHUNK)
+        self.start = 0
+        self.count: int | None = None
+
+    @property
+    def stop(self) -> int:
+        """The end of the current slice; a lone last combination joins the slice before it."""
+        assert self.count is not None
+        stop = min(self.start + self.chunk, self.count)
+        return self.count if self.count - stop == 1 else stop
+
+    @property
+    def done(self) -> bool:
+        """Whether the current slice is the last (or the command combined no lists)."""
+        return self.whole or self.count is None or self.stop >= self.count
+
+    def advance(self) -> None:
+        """Move on to the next slice."""
+        self.start = self.stop
+
+    def columns(self, lists: Sequence[Sequence[float]]) -> tuple[int, tuple[Any, ...]]:
+        """The current slice of the combinations of ``lists`` (all of them when they fit in one)."""
+        count = math.prod(len(values) for values in lists)
+        if self.count is None:
+            self.count = count
+        elif count != self.count:
+            raise RuntimeError("the list options changed between the chunks of one grid")
+        if count == 1:
+            return combine(*lists)
+        return combine_slice(lists, 0, count) if self.whole else combine_slice(lists, self.start, self.stop)
 
 
 def column(values: Any, count: int) -> list[Any]:

@@ -390,6 +390,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "equivalent_focal_length_mm": positive_mm,
         "pupil_magnification": positive,
         "hiatus_mm": finite,
+        "tilt_max_deg": positive,
         "prescription": reference,
         "sensor": reference,
         "mount": text,

@@ -140,16 +140,14 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
             array = array.astype(float, copy=False)
             if len(array) == 1 and count > 1:
                 return texts(float(array[0]), count, style, skipped)
-            out = list(map(float.__repr__, array.tolist()))
-            bad = ~np.isfinite(array)
-            if bad.any():
+            items = array.tolist()
+            out = list(map(float.__repr__, items))
+            bad = np.flatnonzero(~np.isfinite(array)).tolist()
+            if bad:
                 skip = set(skipped)
-                for index in np.flatnonzero(bad).tolist():
-                    if index in skip:
-                        continue
-                    if np.isnan(array[index]):
-                        raise ValueError("internal error: a NaN reached the output")
-                    out[index] = _float(float(array[index]), style)
+                for index in bad:  # Python floats: an infinity costs a list lookup, not a numpy scalar
+                    if index not in skip:
+                        out[index] = _float(items[index], style)
     if skipped:
         out = list(out)
         for index in skipped:
