@@ -100,6 +100,8 @@ def test_field_gives_the_focus_distances() -> None:
         (["-m", "1", "-N", "8", "--depth", "1mm", "--model", "raytrace"],
          "Error: Invalid value for '--model': raytrace is not available in rail mode: the frames use the close-up "
          "closed form (thin, or thick with the pupil magnification); it applies to --near/--far"),
+        (["-m", "1", "-N", "8,11", "--depth", "1mm"],
+         "Error: Invalid value for '-N' / '--f-number': takes one value here"),
         (["-f", "50", "-N", "8", "--near", "1", "--far", "2", "-m", "1"],
          "Error: give -m and --depth (rail) or --near and --far (bracketing), not both"),
     ],

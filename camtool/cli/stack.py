@@ -7,7 +7,7 @@ from typing import Any
 
 import click
 
-from camtool.cli.closeup import magnification_option
+from camtool.cli.closeup import MAGNIFICATION
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.common import f_numbers, flatten, footer, required
 from camtool.cli.equipment import resolve_coc, resolve_sensor
@@ -15,15 +15,13 @@ from camtool.cli.lensdata import ladder_errors, lens_data, model_options, pupil_
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
-    aperture_options,
     coc_options,
     distance_plane_option,
-    focal_option,
     library_errors,
     param_named,
     sensor_options,
 )
-from camtool.cli.params import NumberType
+from camtool.cli.params import FNumberType, NumberType
 from camtool.dof.ladder import focal_lengths, model_choices, model_help
 from camtool.render.columns import NUMBER, TEXT, Column
 
@@ -62,9 +60,15 @@ def _one(ctx: click.Context, values: list[float], option: str, name: str) -> flo
 
 
 @camtool_command("stack", keys=KEYS, batch=False)
-@focal_option
-@aperture_options
-@magnification_option
+@click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
+              help="Focal length, e.g. 24 or 24mm (bare numbers are mm); one value. Bracketing mode needs it; "
+                   "in rail mode it makes the classic depth exact.")
+@click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
+              help="f-number: 8, f/8 or f8; one value.")
+@click.option("--exact-stops", is_flag=True,
+              help="Read the nominal f-number as the exact 2^(k/6) stop it labels (5.6 -> 5.657).")
+@click.option("-m", "--magnification", type=MAGNIFICATION, multiple=True,
+              help="Rail mode: the magnification, e.g. 0.5 (1:2), 1 (life size), 5 (5:1); one value.")
 @click.option("--depth", type=LENGTH_MM, callback=_single, metavar="LENGTH",
               help="Rail mode: subject depth to cover at magnification -m, e.g. 10mm (bare numbers are mm).")
 @click.option("--near", type=DISTANCE_M, callback=_single, metavar="DISTANCE",
