@@ -33,6 +33,7 @@ COMMANDS = {
     "presets": "camtool.cli.presets",
     "completion": "camtool.cli.completion",
     "exif": "camtool.cli.exif",
+    "chart": "camtool.cli.chart",
     "stack": "camtool.cli.stack",
 }
 
