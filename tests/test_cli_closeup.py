@@ -252,3 +252,10 @@ def test_the_other_branch_is_named_once_per_magnification() -> None:
     assert result.exit_code == 0
     footer = result.output.strip().splitlines()[-1]
     assert footer.count("7.87") == 1
+
+
+def test_extension_has_a_physical_range() -> None:
+    result = CliRunner().invoke(cli, ["dof", "-f", "50", "-N", "8", "-s", "3m", "--extension", "1e17M"])
+    assert result.exit_code == 2
+    assert result.output.strip().splitlines()[-1] == (
+        "Error: Invalid value for '--extension': 1e17M is outside the valid range: > 0 to 10000 mm")

@@ -87,7 +87,7 @@ def test_table_snapshot() -> None:
          "Error: Invalid value for '--foreground': 3 m is outside the valid range: "
          "less than the distance from the subject to the lens's front focal point"),
         (["--subject-size", "1.8", "--fill", "0.8", "-f", "0"],
-         "Error: Invalid value for '-f' / '--focal-length': 0 is outside the valid range: > 0 mm"),
+         "Error: Invalid value for '-f' / '--focal-length': 0 is outside the valid range: 1 to 5000 mm"),
         (["--subject-size", "1.8", "--fill", "0.8", "-N", "0.5"],
          "Error: Invalid value for '-N' / '--f-number': 0.5 is outside the valid range: 0.7 to 1024 "
          "(written 8, f/8 or f8)"),

@@ -102,8 +102,8 @@ def test_table_snapshot() -> None:
     ("args", "message"),
     [
         (["-N", "0"], "Error: Invalid value for '-N' / '--f-number': 0 is outside the valid range: 0.7 to 1024 (written 8, f/8 or f8)"),
-        (["-f", "-50"], "Error: Invalid value for '-f' / '--focal-length': -50 is outside the valid range: > 0 mm"),
-        (["--coc", "0"], "Error: Invalid value for '--coc': 0 is outside the valid range: > 0 mm"),
+        (["-f", "-50"], "Error: Invalid value for '-f' / '--focal-length': -50 is outside the valid range: 1 to 5000 mm"),
+        (["--coc", "0"], "Error: Invalid value for '--coc': 0 is outside the valid range: 0.0005 to 1 mm"),
         (["-s", "0.1"], "Error: Invalid value for '-s' / '--distance': 100 mm is outside the valid range: at least 200 mm from the sensor (the closest focus, 1:1: 4 × focal length)"),
         (["-s", "0.05", "--distance-from", "lens"], "Error: Invalid value for '-s' / '--distance': 50 mm is outside the valid range: more than 50 mm from the lens (the focal length; between f and 2f the magnification is above 1)"),
         (["-s", "3parsecs"], "Error: Invalid value for '-s' / '--distance': '3parsecs' has an unknown unit 'parsecs' (use mm, cm, m, km, in or ft)"),
@@ -111,7 +111,7 @@ def test_table_snapshot() -> None:
         (["-N", "f/x"], "Error: Invalid value for '-N' / '--f-number': 'f/x' is not an f-number (examples: 8, f/8, f8)"),
         (["--coc-rule", "px:2"], "Error: Invalid value for '--coc-rule': 'px:2' needs the pixel pitch: give --camera or --pixel-pitch"),
         (["--crop", "0"], "Error: Invalid value for '--crop': 0 is outside the valid range: 0.1 to 100"),
-        (["--sensor", "0x24"], "Error: Invalid value for '--sensor': 0x24 is outside the valid range: both sides > 0 mm"),
+        (["--sensor", "0x24"], "Error: Invalid value for '--sensor': 0x24 is outside the valid range: each side 0.5 to 2000 mm"),
     ],
 )
 def test_errors_are_one_line_exit_2(args: list[str], message: str) -> None:

@@ -94,8 +94,6 @@ def test_lens_data_helper_takes_a_preset() -> None:
      "(exit over entrance pupil diameter)"),
     (["--hiatus", "2parsecs"], "Error: Invalid value for '--hiatus': '2parsecs' has an unknown unit 'parsecs' "
      "(use mm, cm, m, km, in or ft)"),
-    (["--prescription", "/nonexistent.yaml"], "Error: Invalid value for '--prescription': /nonexistent.yaml: "
-     "No such file or directory"),
 ])
 def test_errors_are_one_line_exit_2(args: list[str], message: str) -> None:
     base = {"-f": "50", "-N": "8", "-s": "3"}
@@ -103,3 +101,10 @@ def test_errors_are_one_line_exit_2(args: list[str], message: str) -> None:
         base.pop(args[i], None)
     result = run("dof", *[x for kv in base.items() for x in kv], *args)
     assert (result.exit_code, result.stdout, result.stderr) == (2, "", message + "\n")
+
+
+def test_unreadable_prescription_is_exit_1_naming_option_and_file() -> None:
+    result = run("dof", "-f", "50", "-N", "8", "-s", "3", "--prescription", "/nonexistent.yaml")
+    assert (result.exit_code, result.stdout, result.stderr) == (
+        1, "", "Error: Invalid value for '--prescription': /nonexistent.yaml: cannot read the file: "
+               "No such file or directory\n")

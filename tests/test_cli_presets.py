@@ -86,7 +86,7 @@ def test_user_preset_file_and_broken_file(tmp_path: Path) -> None:
     broken.write_text("sensors:\n  - id: x\n    width_mm: [1\n")
     result = run("dof", "-f", "50", "-N", "8", "-s", "3", "--sensor", "x", "--presets", str(broken))
     assert result.exit_code == 1
-    assert result.stderr.startswith(f"Error: {broken}:") and result.stderr.count("\n") == 1
+    assert result.stderr.startswith(f"Error: Invalid value for '--presets': {broken}:") and result.stderr.count("\n") == 1
 
 
 def test_presets_list_show_validate(tmp_path: Path) -> None:

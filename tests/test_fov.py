@@ -76,7 +76,7 @@ def test_focal_length_for_angle_domain(angle: float) -> None:
         (lambda: angle_of_view_deg(36.0, math.nan), "focal_length_mm"),
         (lambda: angle_of_view_deg(0.0, 50.0), "sensor_mm"),
         (lambda: angle_of_view_deg(36.0, 50.0, magnification=-0.1), "magnification"),
-        (lambda: field_size_mm(36.0, 0.0), "magnification"),
+        (lambda: field_size_mm(36.0, -1.0), "magnification"),
         (lambda: focal_length_for_angle_mm(-24.0, 27.0), "sensor_mm"),
     ],
 )

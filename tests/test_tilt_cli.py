@@ -164,7 +164,7 @@ def test_retrofocus_model_all_shows_the_difference() -> None:
     (["--tilt", "abc"], "--tilt", "not an angle"),
     (["--point", "2m"], "--point", "DIST@HEIGHT"),
     (["--tilt", "3", "--image-distance", "20"], "--image-distance", "at least the focal length"),
-    (["--tilt", "3", "-s", "3", "--coc", "5"], "--coc", "smaller than the exit pupil"),
+    (["--tilt", "3", "-s", "3", "--pupil-mag", "0.1", "--coc", "0.5"], "--coc", "smaller than the exit pupil"),
     (["--tilt", "3", "-s", "3", "--at", "0.01"], "--at", "beyond the lens"),
     (["--tilt", "0", "-s", "3", "--at", "5", "--half-depth", "0.1"], "--half-depth", "needs a tilt"),
 ])

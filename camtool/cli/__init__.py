@@ -18,6 +18,7 @@ from typing import Any
 import click
 
 from camtool import __version__
+from camtool.core.errors import FileError
 
 COMMANDS = {
     "fov": "camtool.cli.fov",
@@ -92,6 +93,9 @@ class CamtoolGroup(click.Group):
             _flush_stdout()
             click.echo(f"Error: {error.format_message()}", err=True)
             sys.exit(error.exit_code)
+        except FileError as error:  # a file found wrong only when a preset is used
+            click.echo(f"Error: {error}", err=True)
+            sys.exit(1)
         except _WriteFailed as failure:
             _output_failed(failure.error)
         except OSError as error:
@@ -182,11 +186,14 @@ def _degrade_to_ascii() -> None:
 def cli() -> None:
     """Depth of field, field of view, focusing and exposure for photographers and shell scripts.
 
-    Lengths take units (50mm, 3.5cm, 3m, 10ft, 6in, inf); a bare number is
-    millimetres for focal lengths, CoC and sensor sizes, and metres for
-    subject distances. Distances are measured from the sensor plane unless
-    --distance-from lens is given. Every command prints a table, or JSON/CSV
-    with --format (or CAMTOOL_FORMAT).
+    Every command prints a table, or JSON/CSV with --format (or
+    CAMTOOL_FORMAT). Run camtool COMMAND --help for a command's options and
+    examples; man camtool describes units, exit codes and the environment.
+
+    \b
+    Examples:
+      camtool dof -f 50 -N 8 -s 3m
+      camtool hyperfocal -f 24 -N 8,11,16
     """
 
 

@@ -45,7 +45,7 @@ from typing import IO, Any
 
 import click
 
-from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType
+from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import ZIP, Output, open_writer
 from camtool.core.units import UnitError
 from camtool.render.columnar import ColumnRows, values_of
@@ -348,7 +348,7 @@ class _Batch:
                 continue
             name, unit = target
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType):
+            if isinstance(param.type, _ListType) and not _t_stops(self.ctx, param, cells):
                 values[name] = self._numbers(param, unit, column, cells, numbers, errors)
             else:
                 values[name] = self._settings(param, unit, column, cells, numbers, errors)
@@ -440,14 +440,14 @@ class _Batch:
         values, passed = self._parse(header, numbers, records, errors)
         for name, column in values.items():
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType) and self.defaults[name] is None:
+            if isinstance(param.type, _ListType) and self.defaults[name] is None and not isinstance(column, list):
                 missing = np.isnan(column)
                 if missing.all():
                     continue  # not this chunk's column at all: the command says what it needs
                 for index in np.flatnonzero(missing).tolist():
                     if errors[index] is None:
                         errors[index] = f"--batch row {numbers[index]}: no value for {param.opts[-1]}"
-        settings = [name for name in values if not isinstance(self.columns.params[name].type, _ListType)]
+        settings = [name for name in values if isinstance(values[name], list)]
         groups: dict[tuple[Any, ...], list[int]] = {}
         for index in range(len(numbers)):
             if errors[index] is None:
@@ -492,9 +492,13 @@ class _Batch:
         import numpy as np
 
         merged = dict(self.params)
+        zipped = False
         for name, column in values.items():
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType):
+            if isinstance(column, list):  # settings, and an -N column holding T-stops (one value a group)
+                if column[members[0]] is not None:
+                    merged[name] = [[column[members[0]]]] if isinstance(param.type, _ListType) else column[members[0]]
+            elif isinstance(param.type, _ListType):
                 chosen = column[members]
                 missing = np.isnan(chosen)
                 if missing.all():
@@ -502,8 +506,13 @@ class _Batch:
                 if missing.any():
                     chosen = np.where(missing, self.defaults[name], chosen)
                 merged[name] = [chosen.tolist()]
-            elif column[members[0]] is not None:
-                merged[name] = column[members[0]]
+                zipped = True
+        if not zipped and len(members) > 1:  # no row gives a value: one row per member from the options alone
+            for name, param in self.columns.params.items():
+                given = flatten(merged.get(name)) if isinstance(param.type, _ListType) else []
+                if len(given) == 1:
+                    merged[name] = [given * len(members)]
+                    break
         self.ctx.meta[ZIP] = True
         try:
             return self.compute(self.ctx, **merged)
@@ -599,6 +608,19 @@ class _Batch:
 _BAD = object()
 
 
+def _t_stops(ctx: click.Context, param: click.Parameter, cells: Sequence[Any]) -> bool:
+    """Whether an -N column holds T-stops (T2): then each cell is parsed alone, keeping what it is."""
+    if not getattr(param.type, "t_stops", False):
+        return False
+    from camtool.cli.common import T_STOP_COLUMN
+    from camtool.core.units import parse_t_stop
+
+    found = any(isinstance(cell, str) and parse_t_stop(cell) is not None for cell in cells)
+    if found:
+        ctx.meta[T_STOP_COLUMN] = True
+    return found
+
+
 def _numeric(value: Any) -> bool:
     if isinstance(value, (int, float)):
         return True
@@ -649,7 +671,8 @@ def _hashable(value: Any) -> Any:
 
 
 def _single(value: Any, name: str) -> Any:
-    flat = [v for group in value or () for v in (group if isinstance(group, list) else [group])]
+    groups = value if isinstance(value, (list, tuple)) else [] if value is None else [value]
+    flat = [v for group in groups for v in (group if isinstance(group, list) else [group])]
     if len(flat) > 1:
         raise click.UsageError(f"with --batch, --{name.replace('_', '-')} takes one value on the command line")
     return flat[0] if flat else None

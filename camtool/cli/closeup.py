@@ -20,7 +20,7 @@ from typing import Any, NamedTuple
 import click
 
 from camtool.cli.equipment import LENS
-from camtool.cli.options import LENGTH_MM, library_errors, param_named, stack
+from camtool.cli.options import EXTENSION_MM, library_errors, param_named, stack
 from camtool.cli.params import NumberType
 from camtool.core.errors import DomainError, require
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, TEXT, Column
@@ -47,7 +47,7 @@ teleconverter_option = click.option(
     help="Teleconverter factor, e.g. 1.4 or 2: focal length and f-number × K.")
 
 closeup_options = stack(
-    click.option("--extension", type=LENGTH_MM, metavar="LENGTH", callback=_one_value,
+    click.option("--extension", type=EXTENSION_MM, metavar="LENGTH", callback=_one_value,
                  help="Extension tubes or bellows added behind the lens, e.g. 25mm: adds E/f to the magnification."),
     teleconverter_option,
 )
@@ -193,7 +193,8 @@ def _derived_distance_errors(ctx: click.Context, direct: bool, setting: Setting,
         f = min(setting.focal_length_mm[i] for i in rows)
         largest = f / (float(error.limit) - f) if float(error.limit) > f else math.inf
         typed = "magnification" if ctx.params.get("magnification") else None
-        where = f"the lens focuses no closer than {float(error.limit):.4g} mm from the lens here, m ≤ {largest:.3g}"
+        where = f"the lens focuses no closer than {float(error.limit):.4g} mm from the lens here" + (
+            f", m ≤ {largest:.3g}" if math.isfinite(largest) else "")
         if typed is None:
             raise click.UsageError(f"the focus this lens setting needs is outside the model's range: {where}", ctx) from None
         beyond = [setting.magnification[i] for i in rows if setting.magnification[i] > largest * (1 + 1e-9)]

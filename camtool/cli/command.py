@@ -124,9 +124,11 @@ def camtool_command(
 
     def decorate(compute: Callable[..., Output]) -> click.Command:
         def equipped(ctx: click.Context, /, **params: Any) -> Output:
+            from camtool.cli.common import CHOICES, t_stop_output
             from camtool.cli.equipment import apply_equipment
 
-            return compute(ctx, **apply_equipment(ctx, params))
+            ctx.meta.pop(CHOICES, None)  # nothing left over from a batch group that failed
+            return t_stop_output(ctx, compute(ctx, **apply_equipment(ctx, params)))
 
         @functools.wraps(compute)
         def run(ctx: click.Context, /, **params: Any) -> None:

@@ -14,11 +14,12 @@ import click
 
 from camtool.cli.options import param_named
 from camtool.cli.params import flatten
-from camtool.core.units import UnitError
+from camtool.core.units import TStop, UnitError
 from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
-_INLINE = re.compile(r"^\s*(\d+(?:\.\d*)?)\s*(?:mm)?\s*[x×X*]\s*(\d+(?:\.\d*)?)\s*(?:mm)?\s*$")
+_SIDE = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)\s*([a-zA-Zµ\"]*)"
+_INLINE = re.compile(rf"^\s*{_SIDE}\s*[x×X*]\s*{_SIDE}\s*$")
 
 
 class SensorChoice(NamedTuple):
@@ -48,7 +49,15 @@ def open_presets(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:
     try:
         db = load_db(extra_files=tuple(preset_files))
     except PresetFileError as error:
-        raise click.ClickException(str(error)) from None
+        raise _preset_file_error(ctx, error, preset_files) from None
+    if preset_files:  # ids and aliases that clash within the user's files: an error even when no preset is used
+        from camtool.presets.schema import KINDS
+
+        try:
+            for kind in KINDS:
+                db.names(kind)
+        except PresetFileError as error:
+            raise _preset_file_error(ctx, error, preset_files) from None
     ctx.ensure_object(dict)["db"] = db
     return db
 
@@ -63,7 +72,16 @@ def lookup(ctx: click.Context, kind: str, name: str, option: str, preset_files: 
     except PresetNotFound as error:
         raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, option)) from None
     except PresetFileError as error:
-        raise click.ClickException(str(error)) from None
+        raise _preset_file_error(ctx, error, preset_files) from None
+
+
+def _preset_file_error(ctx: click.Context, error: Exception, preset_files: tuple[str, ...]) -> click.ClickException:
+    """A broken preset file, exit 1: on ``--presets`` when it is one of the user's, else naming the file alone."""
+    from camtool.cli.options import file_error
+
+    if getattr(error, "path", None) in preset_files and param_named(ctx, "preset_files") is not None:
+        return file_error(ctx, "preset_files", error)
+    return click.ClickException(str(error))
 
 
 def resolve_sensor(
@@ -73,8 +91,10 @@ def resolve_sensor(
     if sensor is not None and crop is not None:
         raise click.UsageError("give --sensor or --crop, not both", ctx)
     if crop is not None:
-        if not (0.1 <= crop <= 100 and math.isfinite(crop)):
-            raise click.BadParameter(f"{crop:g} is outside the valid range: 0.1 to 100", ctx=ctx,
+        from camtool.core.ranges import CROP_FACTOR, describe
+
+        if not CROP_FACTOR[0] <= crop <= CROP_FACTOR[1]:
+            raise click.BadParameter(f"{crop:g} is outside the valid range: {describe(CROP_FACTOR)}", ctx=ctx,
                                      param=param_named(ctx, "crop"))
         w, h = 36.0 / crop, 24.0 / crop
         return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
@@ -86,16 +106,49 @@ def resolve_sensor(
     if sensor is None:
         return FULL_FRAME
     match = _INLINE.match(sensor)
-    if match:
-        w, h = float(match.group(1)), float(match.group(2))
-        if w <= 0 or h <= 0:
-            raise click.BadParameter(f"{sensor} is outside the valid range: both sides > 0 mm", ctx=ctx,
-                                     param=param_named(ctx, "sensor"))
-        return SensorChoice(max(w, h), min(w, h), f"{max(w, h):g} × {min(w, h):g} mm")
-    preset = lookup(ctx, "sensor", sensor, "sensor", preset_files)
-    pitch = camera.pixel_pitch_mm if camera is not None else None
-    return SensorChoice(preset.width_mm, preset.height_mm,
-                        f"{preset.name} {preset.width_mm:g} × {preset.height_mm:g} mm", preset.coc_mm, pitch)
+    unitless = match is not None and not match.group(2) and not match.group(4)
+    preset = _sensor_preset(ctx, sensor, preset_files, quiet=match is not None)
+    if preset is not None:
+        pitch = camera.pixel_pitch_mm if camera is not None else None
+        label = f"{preset.name} {preset.width_mm:g} × {preset.height_mm:g} mm"
+        sides = sorted((float(match.group(1)), float(match.group(3)))) if unitless and match else []
+        if sides and sides != sorted((preset.width_mm, preset.height_mm)):
+            label += f" (--sensor {sensor.strip()} is the preset; write {sensor.strip()}mm for a size in mm)"
+        return SensorChoice(preset.width_mm, preset.height_mm, label, preset.coc_mm, pitch)
+    if match is None:
+        lookup(ctx, "sensor", sensor, "sensor", preset_files)  # raises the error with its suggestions
+        raise AssertionError("unreachable")
+    w, h = _side(ctx, sensor, match.group(1), match.group(2) or match.group(4)), \
+        _side(ctx, sensor, match.group(3), match.group(4) or match.group(2))
+    return SensorChoice(max(w, h), min(w, h), f"{max(w, h):g} × {min(w, h):g} mm")
+
+
+def _sensor_preset(ctx: click.Context, name: str, preset_files: tuple[str, ...], quiet: bool) -> Any:
+    """The sensor preset called ``name``, or None when there is none and ``quiet`` (an inline size)."""
+    from camtool.presets import PresetNotFound
+
+    if not quiet:
+        return lookup(ctx, "sensor", name, "sensor", preset_files)
+    db = open_presets(ctx, preset_files)
+    try:
+        return db.get("sensor", name)
+    except PresetNotFound:
+        return None
+
+
+def _side(ctx: click.Context, sensor: str, number: str, unit: str) -> float:
+    """One side of an inline sensor size in mm (a bare number is mm), checked against its range."""
+    from camtool.core.ranges import SENSOR_SIDE_MM, describe
+    from camtool.core.units import parse_length
+
+    try:
+        mm = parse_length(number + (unit or ""), "mm")
+    except UnitError as error:
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "sensor")) from None
+    if not SENSOR_SIDE_MM[0] <= mm <= SENSOR_SIDE_MM[1]:
+        raise click.BadParameter(f"{sensor} is outside the valid range: each side {describe(SENSOR_SIDE_MM, 'mm')}",
+                                 ctx=ctx, param=param_named(ctx, "sensor"))
+    return mm
 
 
 def resolve_coc(
@@ -114,6 +167,13 @@ def resolve_coc(
         choice = coc_from_rule(rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
     except UnitError as error:
         raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "coc_rule")) from None
+    from camtool.core.ranges import COC_MM, describe
+
+    if not COC_MM[0] <= choice.coc_mm <= COC_MM[1]:
+        shown = rule or DEFAULT_RULE
+        option = "coc_rule" if rule is not None else ("pixel_pitch" if pixel_pitch else "sensor")
+        raise click.BadParameter(f"{shown} gives a CoC of {choice.coc_mm:.4g} mm, outside the valid range: "
+                                 f"{describe(COC_MM, 'mm')}", ctx=ctx, param=param_named(ctx, option))
     return [choice.coc_mm], choice.origin
 
 
@@ -146,12 +206,18 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
     scene_name, camera_name, lens_name = params.pop("scene", None), params.pop("camera", None), params.pop("lens", None)
     files = tuple(params.get("preset_files") or ())
     ctx.meta[CAMERA] = ctx.meta[LENS] = None
+    if files:
+        open_presets(ctx, files)  # a --presets file that cannot be read is an error even when no preset is used
     if scene_name:
         scene = lookup(ctx, "scene", scene_name, "scene", files)
         for field, name in _SCENE_FIELDS.items():
             value = getattr(scene, field, None)
             if value is not None and name in params and _empty(params[name]):
-                params[name] = [[value]] if name in _LIST_PARAMS else value
+                option = param_named(ctx, name)
+                if name in _LIST_PARAMS and option is not None and not getattr(option, "multiple", False):
+                    params[name] = [value]  # a list option given once (exposure's --magnification)
+                else:
+                    params[name] = [[value]] if name in _LIST_PARAMS else value
         if scene.camera is not None and camera_name is None and _empty(params.get("sensor")):
             camera_name = scene.camera.id
         elif scene.sensor is not None and "sensor" in params and _empty(params.get("sensor")):
@@ -164,7 +230,31 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
         lens = lookup(ctx, "lens", lens_name, "lens", files)
         ctx.meta[LENS] = lens
         _check_lens(ctx, lens, params)
+    _check_hiatus(ctx, params)
     return params
+
+
+def _check_hiatus(ctx: click.Context, params: dict[str, Any]) -> None:
+    """A typed --hiatus must keep every distance positive, whichever model uses it.
+
+    From the sensor the entrance pupil lies δ + v + f(1 − 1/P) in front of
+    it; the smallest image distance v is f (focus at infinity), so δ must
+    exceed −f(2 − 1/P). Retrofocus and telephoto designs reach several focal
+    lengths, so |δ| is allowed up to :data:`camtool.core.ranges.HIATUS_FOCAL_LENGTHS` × f.
+    """
+    hiatus = params.get("hiatus")
+    if hiatus is None or "focal_length" not in params:
+        return
+    from camtool.core.ranges import HIATUS_FOCAL_LENGTHS
+
+    p = params.get("pupil_mag") or 1.0
+    for f in flatten(params.get("focal_length")):
+        low, high = -f * (2.0 - 1.0 / p), HIATUS_FOCAL_LENGTHS * f
+        if not low < hiatus <= high:
+            raise click.BadParameter(
+                f"{hiatus:g} mm is outside the valid range: more than {low:.4g} mm (the entrance pupil in front of "
+                f"the sensor) and at most {high:.4g} mm ({HIATUS_FOCAL_LENGTHS:g} × focal length) for f = {f:g} mm",
+                ctx=ctx, param=param_named(ctx, "hiatus"))
 
 
 def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
@@ -186,6 +276,9 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
     else:
         focal = [lens.focal_min_mm]
     for n in flatten(params.get("f_number")):
+        if isinstance(n, TStop):
+            _check_t_stop(ctx, lens, n)
+            continue
         for f in focal:
             widest = lens.widest_f_number(f) or n
             slowest = lens.f_number_max or n
@@ -199,3 +292,12 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
                 raise click.BadParameter(
                     f"{d / 1000:.4g} m is outside the valid range of --lens {lens.id}: at least its closest focus, "
                     f"{lens.min_focus_mm / 1000:.4g} m from the sensor", ctx=ctx, param=param_named(ctx, "distance"))
+
+
+def _check_t_stop(ctx: click.Context, lens: Any, t: float) -> None:
+    """Refuse a T-stop below the lens's widest T-stop (or its widest f-number: T is never below N)."""
+    widest = lens.t_number_min or lens.f_number_min
+    if widest is not None and t < widest * 0.99:
+        span = f"T{widest:g}" if lens.t_number_min else f"f/{widest:g} (a T-stop is never below the f-number)"
+        raise click.BadParameter(f"T{t:g} is outside the valid range of --lens {lens.id}: from {span}",
+                                 ctx=ctx, param=param_named(ctx, "f_number"))

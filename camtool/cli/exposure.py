@@ -12,7 +12,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
 from camtool.cli.options import library_errors, param_named
 from camtool.cli.params import NumberType, TimeType, _ListType, flatten
-from camtool.core.units import UnitError, exact_f_number, parse_f_number, parse_t_stop
+from camtool.core.units import TStop, UnitError, exact_f_number, parse_f_number, parse_t_stop
 from camtool.render.columns import NUMBER, TEXT, Column
 
 LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
@@ -48,10 +48,6 @@ METERED_COLUMNS = [
 LOSS_COLUMNS = [Column("nd_stops", "ND stops", NUMBER), Column("bellows_stops", "bellows stops", NUMBER)]
 RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
 SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
-
-
-class TStop(float):
-    """A T-stop read from -N T2: a float (exposure uses it as the f-number) that remembers it was a T-stop."""
 
 
 class ApertureType(_ListType):
@@ -126,7 +122,8 @@ def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
 @camtool_command("exposure", batch=False)
 @click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
               help="f-number (8, f/8, f8) or T-stop (T2; exposure uses it as is); a list 2.8,4 gives a row each. "
-                   "Without a light level: the metered f-number.")
+                   "Without a light level: the metered f-number. Left out with --lens of a cinema lens: its "
+                   "widest T-stop.")
 @click.option("--exact-stops", is_flag=True,
               help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627).")
 @click.option("-t", "--shutter", "shutter_s", type=TimeType(), multiple=True,
@@ -197,11 +194,19 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
       camtool exposure --ev100 12 -N 8 --nd ND1000 --film hp5
       camtool exposure --ev100 12 --iso 100 --equivalents
       camtool exposure --illuminance 37fc -N 4 --iso 400
+      camtool exposure --lens cooke-s4i-50mm-t2 --ev100 12
     """
     from camtool.exposure.calculator import KEYS, SettingsError, work_out
     from camtool.exposure.timefmt import format_time
 
     apertures = flatten(f_number)
+    lens_note = ""
+    lens = ctx.meta.get("camtool.lens")
+    light_given = any((ev100, ev, light, luminance, illuminance))
+    if not apertures and lens is not None and lens.t_number_min and not equivalents and not (
+            light_given and shutter_s and iso):
+        apertures = [TStop(lens.t_number_min)]  # the lens wide open, as a cinematographer reads it
+        lens_note = f" · T{lens.t_number_min:g}: the widest T-stop of --lens {lens.id}"
     t_stop = any(isinstance(n, TStop) for n in apertures)
     if t_stop and not all(isinstance(n, TStop) for n in apertures):
         raise click.BadParameter("give all f-numbers or all T-stops, not a mix", ctx=ctx,
@@ -245,7 +250,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
         if answer.mode == "metered":
             row["metered"] = (f"{mark}{row['metered_f_number']:.3g} {format_time(row['metered_shutter_s'])} "
                               f"ISO {row['metered_iso']:.4g}")
-    footer = _footer(answer, step, film_data, t_stop)
+    footer = _footer(answer, step, film_data, t_stop) + lens_note
     return Output(rows, _columns(answer, rows), KEYS, footer if fmt == "table" else "")
 
 

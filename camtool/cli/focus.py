@@ -20,7 +20,8 @@ from camtool.cli.options import (
     sensor_options,
 )
 from camtool.cli.params import NumberType, flatten
-from camtool.dof.inverse import focus_for_limits
+from camtool.core import ranges
+from camtool.dof.inverse import focus_for_limits, focus_for_limits_at
 from camtool.geometry.thinlens import focus_setting
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
 
@@ -36,6 +37,7 @@ FORWARD_COLUMNS = [
     Column("working_f_number", "working N", FNUMBER),
 ]
 INVERSE_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "f_number", "coc_mm", "distance_from"]
+FIXED_KEYS = ["wanted_near_mm", "wanted_far_mm", "needed_f_number"]
 OPTIMUM_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "magnification", "focus_spread_mm",
                 "f_number", "working_f_number", "blur_mm", "blur_sum_mm", "distance_from"]
 OPTIMUM_COLUMNS = [
@@ -66,11 +68,11 @@ INVERSE_COLUMNS = [
 ]
 
 
-@camtool_command("focus", keys=list(dict.fromkeys(FORWARD_KEYS + INVERSE_KEYS + OPTIMUM_KEYS + DEPTH_KEYS)))
+@camtool_command("focus", keys=list(dict.fromkeys(FORWARD_KEYS + INVERSE_KEYS + FIXED_KEYS + OPTIMUM_KEYS + DEPTH_KEYS)))
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres).")
-@click.option("-m", "--magnification", type=NumberType(1e-9, 1000.0), multiple=True,
+@click.option("-m", "--magnification", type=NumberType(*ranges.MAGNIFICATION), multiple=True,
               help="Wanted magnification (0.5 = 1:2) instead of -s.")
 @aperture_options
 @click.option("--near", type=DISTANCE_M, multiple=True, help="Inverse: wanted near limit (bare numbers are metres).")
@@ -99,7 +101,10 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     is N(1 + m/P) and distances from the sensor include the hiatus.
 
     With --near and --far it answers the inverse question: where to focus and
-    which f-number make exactly that range acceptably sharp.
+    which f-number make exactly that range acceptably sharp. With -N as well
+    the f-number is kept: it answers the focus that centres the range (equal
+    blur at both ends) and the near and far limits that f-number gives there,
+    or says which f-number the range needs.
 
     A lens preset with a published closest focus focuses internally
     (docs/closeup.md §2): its focal length at the focus is shown, and a
@@ -117,6 +122,7 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
       camtool focus -f 100 -s 0.5m -N 8
       camtool focus -f 100 -m 0.5
       camtool focus -f 35 --near 2m --far 10m
+      camtool focus -f 24 -N 11 --near 1m --far inf
       camtool focus --lens mp-e-65 -m 1,5 -N 2.8
       camtool focus -f 150 --near 2m --far inf --optimum
       camtool focus --focus-spread 3mm --optimum
@@ -133,7 +139,7 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
         return _optimum(ctx, focal, near, far, distance_from, pupil_mag, hiatus, wavelength, fmt)
     if near or far:
         return _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
-                        preset_files)
+                        preset_files, f_numbers(f_number, exact_stops))
     if bool(distance) == bool(magnification):
         raise click.UsageError("give either -s/--distance or -m/--magnification (or --near and --far)", ctx)
     p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
@@ -275,11 +281,23 @@ def _depth(ctx, magnification, depth, f_number, exact_stops, coc, pupil_mag, hia
 
 
 def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
-             preset_files) -> Output:
+             preset_files, apertures=()) -> Output:
     nears = required(ctx, near, "--near")
     fars = required(ctx, far, "--far")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
+    if apertures:  # a fixed f-number: the focus that best uses it, and the limits it gives
+        count, (f, a, b, c, n) = combine_params(ctx, focal, nears, fars, cocs, apertures)
+        with library_errors(ctx):
+            fixed = focus_for_limits_at(f, n, c, a, b, distance_from)
+        rows = rows_from(count, {
+            "focal_length_mm": f, "near_mm": fixed.near_mm, "far_mm": fixed.far_mm, "distance_mm": fixed.distance_mm,
+            "f_number": n, "coc_mm": c, "distance_from": distance_from, "wanted_near_mm": a, "wanted_far_mm": b,
+            "needed_f_number": fixed.needed_f_number,
+        })
+        note = footer("thin", cocs, coc_origin, chosen.label, distance_from,
+                      "near/far: the limits at this f-number") if fmt == "table" else ""
+        return Output(rows, INVERSE_COLUMNS, INVERSE_KEYS + FIXED_KEYS, note)
     count, (f, a, b, c) = combine_params(ctx, focal, nears, fars, cocs)
     with library_errors(ctx):
         solution = focus_for_limits(f, c, a, b, distance_from)

@@ -49,12 +49,62 @@ def escape(text: str) -> str:
 
 
 def _split_help(help_text: str) -> tuple[str, str, list[str]]:
-    """(summary, description, example lines) from a command docstring."""
-    text = help_text.replace("\b\n", "").replace("\b", "")
+    """(summary, description, example lines) from a command docstring.
+
+    The description's paragraphs are dedented and each joined into one line
+    (roff fills them); paragraphs are separated by a blank line.
+    """
+    import inspect
+
+    text = inspect.cleandoc(help_text.replace("\b\n", "").replace("\b", ""))
     summary, _, rest = text.strip().partition("\n")
     description, _, examples = rest.partition("Examples:")
-    lines = [line.strip() for line in examples.strip().splitlines() if line.strip()]
-    return summary.strip(), description.strip(), lines
+    block, _, after = examples.strip("\n").partition("\n\n")  # the examples end at the first blank line
+    description = description.strip() + ("\n\n" + after.strip() if after.strip() else "")
+    paragraphs = [" ".join(p.split()) for p in description.strip().split("\n\n") if p.strip()]
+    lines = [line.strip() for line in block.splitlines() if line.strip()]
+    return summary.strip(), "\n\n".join(paragraphs), lines
+
+
+KEY_UNITS = {
+    "_mm": "millimetres", "_deg": "degrees", "_s": "seconds", "_pct": "percent", "_nm": "nanometres",
+}
+PLAIN_KEYS = {
+    "f_number": "f-number", "working_f_number": "f-number", "needed_f_number": "f-number",
+    "f_number_nominal": "f-number (the nominal value printed on the lens)", "magnification": "ratio (1 = 1:1)",
+    "crop_factor": "ratio to 36 × 24 mm", "error_estimate": "relative error (0.01 = 1 %)",
+    "model": "text: the model that computed the row", "distance_from": "text: sensor or lens",
+    "iso": "ISO speed", "ev": "exposure value at the ISO given", "ev100": "exposure value at ISO 100",
+    "solved": "text: the setting that was solved for", "kind": "text", "id": "text", "name": "text",
+    "summary": "text", "tier": "text", "origin": "text: the file",
+}
+
+
+def key_unit(key: str) -> str:
+    """The unit of an output key, from its suffix (``near_mm``: millimetres) or the table of plain keys."""
+    if key in PLAIN_KEYS:
+        return PLAIN_KEYS[key]
+    for suffix, unit in KEY_UNITS.items():
+        if key.endswith(suffix):
+            return unit
+    return "number"
+
+
+def output_keys(command: click.Command) -> list[str]:
+    """Every key the command can output: its declared keys, else the KEYS lists of its module, in order."""
+    import sys as _sys
+
+    module = _sys.modules.get(getattr(command.callback, "__module__", "") or "")
+    keys: list[str] = []
+    for name in ("KEYS", "DISTANCE_KEYS", "FORWARD_KEYS", "INVERSE_KEYS", "FIXED_KEYS", "EQUIVALENT_KEYS",
+                 "LIST_KEYS", "COMPARE_KEYS", "MODEL_KEYS"):
+        for key in getattr(module, name, None) or ():
+            if key not in keys:
+                keys.append(key)
+    for key in sorted(getattr(command, "output_keys", ()) or ()):
+        if key not in keys:
+            keys.append(key)
+    return keys
 
 
 def _option_lines(command: click.Command, ctx: click.Context) -> list[str]:
@@ -68,7 +118,16 @@ def _option_lines(command: click.Command, ctx: click.Context) -> list[str]:
     return out
 
 
+def _paragraphs(text: str) -> list[str]:
+    out: list[str] = []
+    for paragraph in text.split("\n\n"):
+        out += ([".PP"] if out else []) + [escape(paragraph)]
+    return out
+
+
 def _arguments(command: click.Command) -> str:
+    if isinstance(command, click.Group):
+        return "\\fICOMMAND\\fR [\\fIARGS\\fR]..."
     args = [p for p in command.params if isinstance(p, click.Argument)]
     return " ".join(f"\\fI{escape(p.human_readable_name)}\\fR" + ("..." if p.nargs == -1 else "") for p in args)
 
@@ -82,7 +141,8 @@ def render(command: click.Command, name: str, parent: click.Context | None = Non
         f'.TH {page.upper()} 1 "{MAN_DATE}" "camtool {__version__}" "camtool manual"',
         ".SH NAME", f"{escape(page)} \\- {escape(summary)}",
         ".SH SYNOPSIS", f"\\fB{escape(name)}\\fR [\\fIOPTIONS\\fR] {_arguments(command)}".rstrip(),
-        ".SH DESCRIPTION", escape(description or summary), ".PP", escape(UNITS),
+        ".SH DESCRIPTION", *_paragraphs(description or summary),
+        ".SH UNITS", escape(UNITS),
     ]
     if isinstance(command, click.Group):
         lines += [".SH COMMANDS"]
@@ -100,6 +160,12 @@ def render(command: click.Command, name: str, parent: click.Context | None = Non
     options = _option_lines(command, ctx)
     if options:
         lines += [".SH OPTIONS", *options]
+    keys = output_keys(command)
+    if keys:
+        lines += [".SH OUTPUT KEYS", "The keys of each row in JSON and CSV output (and for \\-\\-field), with their "
+                  "units; an infinite value is null in JSON, an empty cell in CSV and inf with \\-\\-field."]
+        for key in keys:
+            lines += [".TP", f"\\fB{escape(key)}\\fR", escape(key_unit(key))]
     if examples:
         lines += [".SH EXAMPLES", ".nf", *(escape(e) for e in examples), ".fi"]
     lines += [".SH ENVIRONMENT"]

@@ -16,13 +16,18 @@ from typing import Any, TypeVar
 import click
 
 from camtool.cli.params import FNumberType, LengthType
+from camtool.core import ranges
 from camtool.core.errors import DomainError
 from camtool.core.planes import FOCUS_PLANES
 
 F = TypeVar("F", bound=Callable[..., Any])
 
 LENGTH_MM = LengthType("mm")
-DISTANCE_M = LengthType("m", allow_inf=True)
+EXTENSION_MM = LengthType("mm", bounds=ranges.EXTENSION_MM)
+FOCAL_MM = LengthType("mm", bounds=ranges.FOCAL_LENGTH_MM)
+COC_MM = LengthType("mm", bounds=ranges.COC_MM)
+DISTANCE_M = LengthType("m", allow_inf=True, bounds=ranges.DISTANCE_MM)
+PIXEL_PITCH_UM = LengthType("um", bounds=(ranges.PIXEL_PITCH_UM[0] / 1000, ranges.PIXEL_PITCH_UM[1] / 1000))
 
 # Library parameter name -> click parameter name, for error messages.
 PARAM_FOR = {
@@ -34,6 +39,7 @@ PARAM_FOR = {
     "far_mm": "far",
     "magnification": "magnification",
     "sensor_mm": "sensor",
+    "nd_factor": "nd",
 }
 SHOWN_IN_METRES = {"distance", "near", "far"}
 
@@ -49,12 +55,13 @@ def stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
     return apply
 
 
-focal_option = click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
+focal_option = click.option("-f", "--focal-length", "focal_length", type=FOCAL_MM, multiple=True,
                             help="Focal length, e.g. 50 or 50mm (bare numbers are mm); a list 24,35,50 gives a row each.")
 
 aperture_options = stack(
-    click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
-                 help="f-number: 8, f/8 or f8; a list 2.8,4,5.6 gives a row each."),
+    click.option("-N", "--f-number", "f_number", type=FNumberType(t_stops=True), multiple=True,
+                 help="f-number: 8, f/8 or f8, or a T-stop T2 (depth of field uses the f-number: from the --lens "
+                      "transmittance, else the T-stop stands in); a list 2.8,4,5.6 gives a row each."),
     click.option("--exact-stops", is_flag=True,
                  help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627)."),
 )
@@ -88,11 +95,12 @@ sensor_options = stack(
 )
 
 coc_options = stack(
-    click.option("--coc", type=LENGTH_MM, multiple=True,
+    click.option("--coc", type=COC_MM, multiple=True,
                  help="Circle of confusion, e.g. 0.03 or 0.03mm (overrides --coc-rule)."),
     click.option("--coc-rule", default=None, metavar="RULE",
                  help="CoC from the sensor: d/1500 (default), d/1730, d/1442, px:2 (pixel pitches), print:8x10in@25cm."),
-    click.option("--pixel-pitch", type=LENGTH_MM, help="Pixel pitch for --coc-rule px:K, e.g. 4.3um."),
+    click.option("--pixel-pitch", type=PIXEL_PITCH_UM,
+                 help="Pixel pitch for --coc-rule px:K, e.g. 4.3 or 4.3um (bare numbers are µm, as spec sheets give it)."),
 )
 
 
@@ -103,7 +111,57 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
         yield
     except DomainError as error:
         name = PARAM_FOR.get(error.param, error.param)
-        raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param_named(ctx, name)) from None
+        param = param_named(ctx, name)
+        if param is not None:
+            raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param) from None
+        # A value the library derived (a hyperfocal distance, an object distance from a magnification):
+        # blame the option the user typed that drives it, with the value typed.
+        blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _given(ctx, p)),
+                      None)
+        message = domain_message(error, name)
+        listed = error.value.split(",") if isinstance(error.value, str) else []
+        named = [p for p in (param_named(ctx, PARAM_FOR.get(n.strip(), n.strip())) for n in listed)
+                 if isinstance(p, click.Option)]
+        if named:  # options left out together ("exactly one of f_number, shutter_s, iso left to solve")
+            options = " and ".join("/".join(p.opts) for p in named)
+            raise click.UsageError(f"missing {options}: {error.valid}", ctx) from None
+        if blamed is not None:
+            message = (f"{_typed(ctx, blamed)} gives {_DERIVED.get(error.param, error.param)} of "
+                       + message.replace(" is outside the valid range", ", outside the valid range", 1))
+        raise click.BadParameter(message, ctx=ctx, param=blamed) from None
+
+
+BLAME_ORDER = ("magnification", "fill", "subject_size", "f_number", "focal_length", "coc", "coc_rule", "distance",
+               "near", "far", "distance_from", "model")
+"""Options blamed, in this order, for a value the library derived from several of them."""
+
+_DERIVED = {"distance_mm": "a distance", "near_mm": "a near limit", "far_mm": "a far limit",
+            "magnification": "a magnification", "coc_mm": "a CoC", "focal_length_mm": "a focal length",
+            "f_number": "an f-number"}
+
+
+def _given(ctx: click.Context, param: click.Parameter) -> bool:
+    value = ctx.params.get(param.name or "")
+    return value not in (None, (), []) and (param.name != "distance_from" or value == "lens")
+
+
+def _typed(ctx: click.Context, param: click.Parameter) -> str:
+    value = ctx.params.get(param.name or "")
+    if isinstance(value, (list, tuple)):
+        flat = [v for group in value for v in (group if isinstance(group, list) else [group])]
+        return ",".join(f"{v:g}" if isinstance(v, float) else str(v) for v in flat)
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+class FileParameterError(click.BadParameter):
+    """A file given to an option cannot be read or is invalid: a runtime failure, exit status 1."""
+
+    exit_code = 1
+
+
+def file_error(ctx: click.Context, name: str, error: Exception) -> click.BadParameter:
+    """An unreadable or invalid file given to option ``name``: one line naming the option and the file, exit 1."""
+    return FileParameterError(str(error), ctx=ctx, param=param_named(ctx, name))
 
 
 def param_named(ctx: click.Context, name: str) -> click.Parameter | None:

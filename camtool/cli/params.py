@@ -14,7 +14,8 @@ from typing import Any
 
 import click
 
-from camtool.core.units import UnitError, parse_f_number, parse_length, parse_time
+from camtool.core.ranges import F_NUMBER
+from camtool.core.units import MM_PER_UNIT, TStop, UnitError, parse_f_number, parse_length, parse_t_stop, parse_time
 
 
 class _ListType(click.ParamType):
@@ -46,33 +47,51 @@ class _ListType(click.ParamType):
 
 
 class LengthType(_ListType):
-    """Lengths; a bare number is in ``default_unit`` (mm for focal lengths and sizes)."""
+    """Lengths; a bare number is in ``default_unit`` (mm for focal lengths and sizes).
+
+    ``bounds`` is the valid range in millimetres (a lower bound of 0 is
+    exclusive); the error message shows it in ``default_unit``.
+    """
 
     name = "length"
 
-    def __init__(self, default_unit: str = "mm", allow_inf: bool = False) -> None:
+    def __init__(self, default_unit: str = "mm", allow_inf: bool = False,
+                 bounds: tuple[float, float] = (0.0, math.inf)) -> None:
         self.default_unit = default_unit
         self.allow_inf = allow_inf
-        self.valid = f"> 0 {default_unit}" + (" (or inf)" if allow_inf else "")
+        self.bounds = bounds
+        scale = MM_PER_UNIT[default_unit]
+        shown = "µm" if default_unit == "um" else default_unit
+        low, high = bounds[0] / scale, bounds[1] / scale
+        low_text = f"> {low:g}" if low == 0 else f"{low:g}"
+        self.valid = (f"{low_text} {shown}" if high == math.inf else f"{low_text} to {high:g} {shown}") + (
+            ", or inf" if allow_inf else "")
 
     def parse(self, text: str) -> float:
         return parse_length(text, self.default_unit)
 
     def check(self, value: float) -> bool:
-        return value > 0 and (self.allow_inf or math.isfinite(value))
+        if value == math.inf:
+            return self.allow_inf
+        low, high = self.bounds
+        return (value > 0 if low == 0 else value >= low * (1 - 1e-12)) and value <= high * (1 + 1e-12)
 
 
 class FNumberType(_ListType):
     """f-numbers written 8, f/8 or f8; valid 0.7 to 1024 (pinholes)."""
 
     name = "f-number"
-    valid = "0.7 to 1024 (written 8, f/8 or f8)"
+    valid = f"{F_NUMBER[0]:g} to {F_NUMBER[1]:g} (written 8, f/8 or f8)"
+
+    def __init__(self, t_stops: bool = False) -> None:
+        self.t_stops = t_stops  # also T-stops (T2), returned as TStop
 
     def parse(self, text: str) -> float:
-        return parse_f_number(text)
+        t_stop = parse_t_stop(text) if self.t_stops else None
+        return parse_f_number(text) if t_stop is None else TStop(t_stop)
 
     def check(self, value: float) -> bool:
-        return 0.7 <= value <= 1024
+        return F_NUMBER[0] <= value <= F_NUMBER[1]
 
 
 class TimeType(_ListType):

@@ -29,6 +29,15 @@ class DomainError(ValueError):
         super().__init__(text)
 
 
+class FileError(Exception):
+    """A file camtool was asked to read cannot be read or is invalid: exit status 1, one line naming the file.
+
+    The guarded reader's ``FileProblem`` and the preset database's
+    ``PresetFileError`` derive from it, so the command line reports either
+    the same way wherever it surfaces.
+    """
+
+
 def _show(value: Any) -> str:
     if isinstance(value, float) and value.is_integer() and abs(value) < 1e15:
         return str(int(value))

@@ -96,6 +96,10 @@ def parse_f_number(text: str | float) -> float:
     return float(match.group(1))
 
 
+class TStop(float):
+    """A T-stop read from ``-N T2``: a float that remembers it was a T-stop (exposure uses it as is)."""
+
+
 _T_STOP = rf"^\s*[tT]\s*/?\s*({_NUMBER})\s*$"
 
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops, quiet
-from camtool.core.errors import DomainError, require, require_positive
+from camtool.core.errors import DomainError, first_bad, require, require_positive
 from camtool.core.planes import FOCUS_PLANES, check_plane
 
 _BISECTIONS = 120
@@ -105,3 +105,75 @@ def _split(xp: Any, f: Any, distance: Any) -> tuple[Any, Any]:
 def _residual(xp: Any, f: Any, distance: Any, near: Any, far: Any) -> Any:
     u, v = _split(xp, f, distance)
     return u - _harmonic(xp, near - v, far - v)
+
+
+class FixedApertureFocus(NamedTuple):
+    """Where to focus at a given f-number for a wanted range, and the limits that focus gives (mm).
+
+    ``near_mm`` ≤ the wanted near limit and ``far_mm`` ≥ the wanted far limit;
+    ``needed_f_number`` is the f-number that would make the range exact.
+    """
+
+    distance_mm: Any
+    near_mm: Any
+    far_mm: Any
+    needed_f_number: Any
+
+
+def focus_for_limits_at(
+    focal_length_mm: Any, f_number: Any, coc_mm: Any, near_mm: Any, far_mm: Any, distance_from: str = "sensor"
+) -> FixedApertureFocus:
+    """Focus distance in mm that best uses a fixed f-number to cover near..far, and the limits it gives.
+
+    The focus is the one of :func:`focus_for_limits`: it centres the wanted
+    range in the reciprocal distances that the thin-lens blur is linear in
+    (1/near + 1/far = 2/u from the lens), so the blur at the wanted near and
+    far limits is the same and at most c. Stopped down beyond the f-number
+    that range needs, the depth of field is then wider than asked on both
+    sides by the same blur margin. An f-number wider than needed cannot
+    cover the range at any focus (the reciprocal span 2·N·c·(1 − f/u)/f²
+    grows with N); that is a :class:`DomainError` on ``f_number`` naming the
+    f-number needed and the limits the given one reaches at that focus.
+
+    Parameters
+    ----------
+    focal_length_mm, f_number, coc_mm : float or array, all > 0
+    near_mm, far_mm : float or array
+        Wanted near (at least the closest focus) and far limit (> near, ``inf`` allowed).
+    distance_from : ``"sensor"`` or ``"lens"``
+
+    References
+    ----------
+    Merklinger, *The INs and OUTs of FOCUS* (1992): the focus at the harmonic
+    mean of the limits; the limits themselves from :func:`camtool.dof.closed.thin_dof`.
+
+    Examples
+    --------
+    >>> s = focus_for_limits_at(50.0, 16.0, 0.03, 2000.0, 4000.0, distance_from="lens")
+    >>> round(s.distance_mm, 1), round(s.near_mm, 1), round(s.far_mm, 1), round(s.needed_f_number, 3)
+    (2666.7, 1774.9, 5359.1, 10.616)
+    """
+    from camtool.dof.closed import thin_dof
+
+    require_positive("f_number", f_number, unit="")
+    solution = focus_for_limits(focal_length_mm, coc_mm, near_mm, far_mm, distance_from)
+    needed = solution.f_number
+    xp = ops(focal_length_mm, f_number, coc_mm, near_mm, far_mm)
+    ok = f_number >= needed * (1.0 - 1e-9)
+    if not bool(xp.all(ok)):
+        bad = first_bad(f_number, ok) if not isinstance(ok, bool) else f_number
+        reached = thin_dof(focal_length_mm, f_number, coc_mm, solution.distance_mm, distance_from)
+        near_reached = first_bad(reached.near_mm, ok) if not isinstance(ok, bool) else reached.near_mm
+        far_reached = first_bad(reached.far_mm, ok) if not isinstance(ok, bool) else reached.far_mm
+        need = first_bad(needed, ok) if not isinstance(ok, bool) else needed
+        raise DomainError("f_number", bad, f"f/{float(need):.3g} or more to cover the wanted near and far limits",
+                          detail=f"at f/{float(bad):g} the best focus gives {_mm(near_reached)} to {_mm(far_reached)}")
+    limits = thin_dof(focal_length_mm, f_number, coc_mm, solution.distance_mm, distance_from)
+    return FixedApertureFocus(solution.distance_mm, limits.near_mm, limits.far_mm, needed)
+
+
+def _mm(value: Any) -> str:
+    value = float(value)
+    if value == float("inf"):
+        return "infinity"
+    return f"{value / 1000:.4g} m" if value >= 1000 else f"{value:.4g} mm"

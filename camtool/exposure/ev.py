@@ -235,3 +235,79 @@ def f_number_from_t_stop(t: Any, transmittance: Any) -> Any:
 
     require("transmittance", transmittance, (transmittance > 0) & (transmittance <= 1), "0 to 1")
     return t * ops(t, transmittance).sqrt(transmittance)
+
+
+def transmittance_from_stops(f_number: Any, t_stop: Any) -> Any:
+    """Transmittance of a lens from its f-number and T-stop at the same aperture: τ = (N/T)².
+
+    Parameters
+    ----------
+    f_number : float or array, > 0 (the geometric f-number, f/D)
+    t_stop : float or array, ≥ ``f_number`` (a T-stop is never below the f-number)
+
+    References
+    ----------
+    Wikipedia, "F-number", T-stop: T = N/√τ (an f/2.0 lens of 75 % transmittance is T2.3).
+
+    Examples
+    --------
+    >>> round(transmittance_from_stops(2.0, 2.309401), 4)
+    0.75
+    """
+    from camtool.core.errors import require
+
+    require("t_stop", t_stop, t_stop >= f_number * (1 - 1e-9), "at least the f-number (a T-stop is never below it)")
+    return (f_number / t_stop) ** 2
+
+
+T_STOP_ERROR_LOW, T_STOP_ERROR_HIGH = 1 - 0.9 ** 0.5, 1 - 0.7 ** 0.5
+"""How far the f-number lies below a T-stop for the transmittance typical of cine lenses, τ = 0.9 to 0.7:
+N = T·√τ is 5.1 % to 16.3 % below T (docs/design.md §2)."""
+
+
+class FNumberChoice(NamedTuple):
+    """The f-number that depth of field uses for one typed aperture, and where it came from."""
+
+    f_number: float
+    """The f-number used (f/D)."""
+    t_stop: float | None
+    """The T-stop typed, or None for an f-number."""
+    source: str
+    """``"typed"`` (an f-number), ``"transmittance"`` (N = T·√τ), or ``"t-stop"`` (T stands in for N)."""
+    transmittance: float | None
+    """The lens's transmittance τ used, or None."""
+
+
+def resolve_f_number(value: float, t_stop: bool, transmittance: float | None = None) -> FNumberChoice:
+    """The f-number for depth of field and diffraction from a typed f-number or T-stop.
+
+    A T-stop with the lens's transmittance τ gives N = T·√τ (τ taken as at full
+    aperture: it is assumed not to change as the lens stops down). Without τ the
+    T-stop stands in for the f-number: since T ≥ N, that overstates N (and the
+    depth of field) by up to 1/√τ, 5 % to 16 % below T for τ = 0.9 to 0.7.
+
+    Parameters
+    ----------
+    value : float, 0.7 to 1024 (the typed f-number or T-stop)
+    t_stop : bool, whether ``value`` is a T-stop
+    transmittance : float or None, 0 < τ ≤ 1
+
+    References
+    ----------
+    Wikipedia, "F-number", T-stop: T = N/√τ.
+
+    Examples
+    --------
+    >>> resolve_f_number(2.0, False)
+    FNumberChoice(f_number=2.0, t_stop=None, source='typed', transmittance=None)
+    >>> round(resolve_f_number(2.309401, True, 0.75).f_number, 4)
+    2.0
+    >>> resolve_f_number(2.0, True).source
+    't-stop'
+    """
+    if not t_stop:
+        return FNumberChoice(float(value), None, "typed", None)
+    if transmittance is None:
+        return FNumberChoice(float(value), float(value), "t-stop", None)
+    return FNumberChoice(float(f_number_from_t_stop(float(value), transmittance)), float(value), "transmittance",
+                         float(transmittance))

@@ -8,9 +8,10 @@ Lengths in millimetres, angles in degrees.
 
 from __future__ import annotations
 
+import math
 from typing import Any, NamedTuple
 
-from camtool.core.arrays import ops
+from camtool.core.arrays import is_scalar, ops
 from camtool.core.errors import require, require_positive
 
 
@@ -92,10 +93,18 @@ def field_size_mm(size_mm: Any, magnification: Any) -> Any:
     --------
     >>> field_size_mm(36.0, 0.01)
     3600.0
+    >>> field_size_mm(36.0, 0.0)  # focused at infinity: the field is unbounded
+    inf
     """
     require_positive("sensor_mm", size_mm)
-    require_positive("magnification", magnification, unit="", allow_inf=False)
-    return size_mm / magnification
+    require("magnification", magnification, (magnification >= 0) & (magnification < math.inf),
+            ">= 0 and finite (0 for a focus at infinity)")
+    if is_scalar(size_mm) and is_scalar(magnification):
+        return math.inf if magnification == 0 else size_mm / magnification
+    import numpy as np
+
+    with np.errstate(divide="ignore"):
+        return np.asarray(size_mm, dtype=float) / np.asarray(magnification, dtype=float)
 
 
 def focal_length_for_angle_mm(size_mm: Any, angle_deg: Any) -> Any:

@@ -303,7 +303,7 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
         approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
-                          for row in r.get("close_focus", ())), **_common(entry))
+                          for row in r.get("close_focus", ())), t_number_min=r.get("t_number_min"), **_common(entry))
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:

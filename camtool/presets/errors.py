@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from camtool.core.errors import FileError
+
 
 class PresetNotFound(LookupError):
     """No preset of ``kind`` answers to ``name``.
@@ -30,7 +32,7 @@ class PresetNotFound(LookupError):
         return text
 
 
-class PresetFileError(Exception):
+class PresetFileError(FileError):
     """A preset file cannot be read or holds an invalid preset.
 
     Every part that is known is kept as an attribute and appears in the

@@ -8,7 +8,7 @@ presets. A file whose top level has ``surfaces`` is a single prescription
 Parsing YAML is the slow part of a command that names a preset (PyYAML's
 import alone costs about 20 ms), so the validated records of every file are
 cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, keyed by the file's
-path, size and modification time. A warm start reads only the JSON files and
+path and a digest of its content. A warm start reads only the JSON files and
 never imports yaml.
 """
 
@@ -20,6 +20,7 @@ import os
 import zlib
 from typing import Any
 
+from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
 from camtool.presets.schema import (
     REFERENCES,
@@ -30,11 +31,8 @@ from camtool.presets.schema import (
     suggest,
 )
 
-CACHE_FORMAT = 5
+CACHE_FORMAT = 6
 """Bumped whenever the record layout changes, so old cache files are ignored."""
-
-MAX_NODES = 2_000_000
-"""Largest number of YAML nodes a file may expand to through aliases (an alias bomb is refused)."""
 
 MAX_BYTES = 64 * 1024 * 1024
 """Largest preset file read."""
@@ -140,20 +138,25 @@ class FileData:
 def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     """Read and validate one preset file, raising :class:`PresetFileError` on the first problem.
 
-    With ``cache_dir``, a cached copy is used when the file's size and
-    modification time match, and a fresh parse is written back.
+    With ``cache_dir``, a cached copy is used when the file's content (a
+    BLAKE2 digest of its bytes) matches the one cached, and a fresh parse is
+    written back; a file rewritten with the same size and modification time
+    is therefore never served stale.
     """
     try:
-        stat = os.stat(path)
-    except OSError as error:
-        raise PresetFileError(path, f"cannot read the file: {error.strerror or error}") from None
-    stamp = [CACHE_FORMAT, os.path.abspath(path), stat.st_size, stat.st_mtime_ns]
+        raw = read_bytes(path, MAX_BYTES)
+    except FileProblem as problem:
+        raise PresetFileError(path, problem.problem, line=problem.line) from None
     cache_path = _cache_path(cache_dir, os.path.abspath(path)) if cache_dir else None
+    stamp: list[Any] = []
     if cache_path:
+        import hashlib
+
+        stamp = [CACHE_FORMAT, os.path.abspath(path), len(raw), hashlib.blake2b(raw, digest_size=20).hexdigest()]
         cached = _read_cache(cache_path, stamp)
         if cached is not None:
             return FileData(path, cached=cached)
-    data = parse_file(path)
+    data = parse_file(path, raw)
     if data.problems:
         first = data.problems[0]
         extra = len(data.problems) - 1
@@ -167,101 +170,23 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     return data
 
 
-def parse_file(path: str) -> FileData:
-    """Parse and validate ``path`` without the cache, collecting every problem."""
+def parse_file(path: str, raw: bytes | None = None) -> FileData:
+    """Parse and validate ``path`` (or its content ``raw``, already read) without the cache, collecting every problem.
+
+    The file goes through the guarded reader of :mod:`camtool.core.files`:
+    regular files only, at most :data:`MAX_BYTES`, UTF-8, and YAML within
+    the node and depth caps, without repeated keys.
+    """
     data = FileData(path)
     try:
-        with open(path, "rb") as handle:
-            raw = handle.read(MAX_BYTES + 1)
-    except OSError as error:
-        data.problems.append(Problem(f"cannot read the file: {error.strerror or error}"))
-        return data
-    if len(raw) > MAX_BYTES:
-        data.problems.append(Problem(f"the file is larger than {MAX_BYTES // 2**20} MiB"))
-        return data
-    try:
-        source = raw.decode("utf-8")
-    except UnicodeDecodeError as error:
-        data.problems.append(Problem(f"not UTF-8 text (byte {error.start})"))
-        return data
-    try:
-        document, node = load_yaml(source)
-    except _YamlProblem as problem:
-        data.problems.append(Problem(problem.message, problem.line))
+        if raw is None:
+            raw = read_bytes(path, MAX_BYTES)
+        document, node = load_yaml(decode(raw, path), path)
+    except FileProblem as problem:
+        data.problems.append(Problem(problem.problem, problem.line))
         return data
     _collect(document, node, data)
     return data
-
-
-class _YamlProblem(Exception):
-    def __init__(self, message: str, line: int | None = None) -> None:
-        super().__init__(message)
-        self.message = message
-        self.line = line
-
-
-def load_yaml(source: str) -> tuple[Any, Any]:
-    """Safely load one YAML document; return the Python value and its node tree (for line numbers).
-
-    Only the safe subset is constructed (no ``!!python/...`` tags). A document
-    whose aliases would expand to more than :data:`MAX_NODES` nodes, or that
-    refers to itself, is refused before it is constructed.
-    """
-    import yaml
-
-    loader_class = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-    loader = loader_class(source)
-    try:
-        try:
-            node = loader.get_single_node()
-            if node is None:
-                return None, None
-            _check_size(node)
-            return loader.construct_document(node), node
-        except yaml.MarkedYAMLError as error:
-            mark = error.problem_mark or error.context_mark
-            line = mark.line + 1 if mark is not None else None
-            text = " ".join(str(error.problem or error).split())
-            if error.context and "constructor" not in str(error.context):
-                text = " ".join(str(error.context).split()) + ": " + text
-            raise _YamlProblem(f"YAML error: {text}", line) from None
-        except yaml.YAMLError as error:
-            raise _YamlProblem(f"YAML error: {' '.join(str(error).split())}") from None
-        except RecursionError:
-            raise _YamlProblem("YAML error: the document is nested too deeply") from None
-    finally:
-        loader.dispose()
-
-
-def _check_size(root: Any) -> None:
-    """Count the nodes the document expands to, refusing alias bombs and self-reference."""
-    sizes: dict[int, int] = {}
-    active: set[int] = set()
-
-    def size(node: Any) -> int:
-        key = id(node)
-        if key in sizes:
-            return sizes[key]
-        if key in active:
-            raise _YamlProblem("YAML error: an alias refers to the node that contains it", node.start_mark.line + 1)
-        active.add(key)
-        total = 1
-        value = node.value
-        if isinstance(value, list):
-            for item in value:
-                if isinstance(item, tuple):
-                    total += size(item[0]) + size(item[1])
-                else:
-                    total += size(item)
-                if total > MAX_NODES:
-                    raise _YamlProblem(
-                        f"YAML error: the document expands to more than {MAX_NODES:,} nodes "
-                        "(too many nested aliases)", node.start_mark.line + 1)
-        active.discard(key)
-        sizes[key] = total
-        return total
-
-    size(root)
 
 
 def _line(node: Any) -> int | None:

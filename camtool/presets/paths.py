@@ -13,7 +13,10 @@ Search order (docs/design.md §5), later tiers win by id:
 5. each ``--presets FILE``, in order.
 
 In a configuration directory every ``*.yaml`` and ``*.yml`` file directly in
-it and in its ``presets/`` subdirectory is read, in name order.
+it and in its ``presets/`` subdirectory is read, in name order. Entries that
+are not regular files (a FIFO, a dangling symbolic link, a loop of symbolic
+links) are skipped, so that one stray entry cannot break every lookup; a
+configuration directory that is itself a loop counts as empty.
 """
 
 from __future__ import annotations
@@ -92,7 +95,11 @@ def yaml_files(directory: str, recurse_into: tuple[str, ...] = ("presets",)) -> 
     except OSError:
         return out
     for entry in entries:
-        if entry.name.endswith(_SUFFIXES) and entry.is_file():
+        try:
+            regular = entry.is_file()
+        except OSError:  # a loop of symbolic links: skipped, like a dangling link
+            regular = False
+        if entry.name.endswith(_SUFFIXES) and regular:
             out.append(entry.path)
     for sub in recurse_into:
         out.extend(yaml_files(os.path.join(directory, sub), ()))

@@ -767,8 +767,16 @@ class Lens:
     tier: str | None = None
     min_magnification: float | None = None
     close_focus: tuple[tuple[float, float, float | None], ...] = ()  # (focal length, closest focus, magnification)
+    t_number_min: float | None = None  # widest T-stop (cinema lenses)
 
     kind = "lens"
+
+    @property
+    def transmittance(self) -> float | None:
+        """τ = (N/T)² from the widest f-number and widest T-stop, when the preset has both (else None)."""
+        if self.t_number_min is None or self.f_number_min is None or (self.is_zoom and self.f_number_min_tele):
+            return None
+        return (self.f_number_min / self.t_number_min) ** 2
 
     @property
     def is_zoom(self) -> bool:

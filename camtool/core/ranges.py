@@ -1,0 +1,66 @@
+"""The physical domain of the optical inputs, in one place (docs/design.md §6.1).
+
+The command line checks every value against these ranges at the edge, with
+the range in the message; the click parameter types read their bounds from
+here. The exposure quantities have their own ranges in
+:mod:`camtool.core.domain`.
+
+>>> FOCAL_LENGTH_MM
+(1.0, 5000.0)
+>>> in_range(0.03, COC_MM), in_range(2.0, COC_MM)
+(True, False)
+"""
+
+from __future__ import annotations
+
+import math
+
+FOCAL_LENGTH_MM = (1.0, 5000.0)
+"""Focal length: a phone's wide camera (about 1.5 mm) to a long telescope (docs/design.md §6.1)."""
+
+F_NUMBER = (0.7, 1024.0)
+"""f-number: the fastest lenses made (f/0.7) to pinholes (f/1024)."""
+
+COC_MM = (0.0005, 1.0)
+"""Circle of confusion: a microscope's sensor pixel to an 8 × 10 in contact print viewed close."""
+
+DISTANCE_MM = (0.0, 1.0e15)
+"""Distances: positive, up to 10¹⁵ mm (a million km), or infinity where a distance may be infinite."""
+
+PIXEL_PITCH_UM = (0.2, 100.0)
+"""Pixel pitch in micrometres (the unit of spec sheets): sub-micron phone pixels to large scientific CCDs."""
+
+SENSOR_SIDE_MM = (0.5, 2000.0)
+"""A side of the sensor or film: a tiny endoscope chip to a 20 × 24 in (508 × 610 mm) view camera plate."""
+
+CROP_FACTOR = (0.1, 100.0)
+"""Crop factor relative to 36 × 24 mm (the sensor sides then lie within :data:`SENSOR_SIDE_MM` or near it)."""
+
+HIATUS_FOCAL_LENGTHS = 10.0
+"""Largest |hiatus| in focal lengths: real retrofocus and telephoto lenses reach several focal lengths."""
+
+MAGNIFICATION = (1.0e-9, 1000.0)
+"""Magnification for close-up work."""
+
+EXTENSION_MM = (0.0, 10_000.0)
+"""Extension tubes or bellows behind a lens: up to 10 m, beyond any bellows made (and any magnification above)."""
+
+
+def in_range(value: float, bounds: tuple[float, float], allow_inf: bool = False) -> bool:
+    """Whether ``value`` lies in the closed interval ``bounds`` (infinity only if ``allow_inf``; NaN never)."""
+    if allow_inf and value == math.inf:
+        return True
+    return bounds[0] <= value <= bounds[1]
+
+
+def describe(bounds: tuple[float, float], unit: str = "", allow_inf: bool = False) -> str:
+    """The range in words for an error message, e.g. ``1 to 5000 mm`` or ``> 0 to 1e+15 mm, or inf``.
+
+    >>> describe(FOCAL_LENGTH_MM, "mm")
+    '1 to 5000 mm'
+    >>> describe(DISTANCE_MM, "mm", allow_inf=True)
+    '> 0 to 1e+15 mm, or inf'
+    """
+    low = f"> {bounds[0]:g}" if bounds[0] == 0 else f"{bounds[0]:g}"
+    text = f"{low} to {bounds[1]:g} {unit}".rstrip()
+    return text + (", or inf" if allow_inf else "")
