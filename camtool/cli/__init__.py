@@ -35,6 +35,7 @@ COMMANDS = {
     "completion": "camtool.cli.completion",
     "exif": "camtool.cli.exif",
     "chart": "camtool.cli.chart",
+    "stack": "camtool.cli.stack",
 }
 
 

@@ -1,0 +1,270 @@
+"""``camtool stack``: the frames of a focus stack, on a macro rail (-m, --depth) or by the focus ring (--near, --far)."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import click
+
+from camtool.cli.closeup import MAGNIFICATION
+from camtool.cli.command import Output, camtool_command
+from camtool.cli.common import f_numbers, flatten, footer, required
+from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.lensdata import ladder_errors, lens_data, model_options, pupil_and_hiatus
+from camtool.cli.options import (
+    DISTANCE_M,
+    LENGTH_MM,
+    coc_options,
+    distance_plane_option,
+    library_errors,
+    param_named,
+    sensor_options,
+)
+from camtool.cli.params import FNumberType, NumberType
+from camtool.dof.ladder import focal_lengths, model_choices, model_help
+from camtool.render.columns import NUMBER, TEXT, Column
+
+KEYS = ["frame", "distance_mm", "near_mm", "far_mm", "magnification", "step_mm", "extension_step_mm",
+        "criterion", "mode", "distance_from"]
+COLUMNS = [
+    Column("frame", "frame", TEXT),
+    Column("distance_mm", "focus"),
+    Column("near_mm", "near"),
+    Column("far_mm", "far"),
+    Column("magnification", "m", NUMBER),
+    Column("step_mm", "step"),
+]
+DEFAULT_OVERLAP = 0.2
+"""A fifth of each frame's depth shared with the next: margin for rail and focus-ring error."""
+MAX_FRAMES = 10_000
+"""The most frames a bracketing plan may have on the command line."""
+WAVE_FROM = 1.0
+"""From this magnification on (life size), the default criterion is the wave-optics depth."""
+
+
+def _single(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
+    """The single value of a list-typed option, or a usage error for a list."""
+    if value is None:
+        return None
+    values = value if isinstance(value, list) else [value]
+    if len(values) != 1:
+        raise click.BadParameter("takes one value", ctx=ctx, param=param)
+    return float(values[0])
+
+
+def _one(ctx: click.Context, values: list[float], option: str, name: str) -> float:
+    if len(values) != 1:
+        raise click.BadParameter("takes one value here", ctx=ctx, param=param_named(ctx, name))
+    return float(values[0])
+
+
+@camtool_command("stack", keys=KEYS, batch=False)
+@click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
+              help="Focal length, e.g. 24 or 24mm (bare numbers are mm); one value. Bracketing mode needs it; "
+                   "in rail mode it makes the classic depth exact.")
+@click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
+              help="f-number: 8, f/8 or f8; one value.")
+@click.option("--exact-stops", is_flag=True,
+              help="Read the nominal f-number as the exact 2^(k/6) stop it labels (5.6 -> 5.657).")
+@click.option("-m", "--magnification", type=MAGNIFICATION, multiple=True,
+              help="Rail mode: the magnification, e.g. 0.5 (1:2), 1 (life size), 5 (5:1); one value.")
+@click.option("--depth", type=LENGTH_MM, callback=_single, metavar="LENGTH",
+              help="Rail mode: subject depth to cover at magnification -m, e.g. 10mm (bare numbers are mm).")
+@click.option("--near", type=DISTANCE_M, callback=_single, metavar="DISTANCE",
+              help="Bracketing mode: nearest point to cover, e.g. 0.5 (bare numbers are metres), 50cm.")
+@click.option("--far", type=DISTANCE_M, callback=_single, metavar="DISTANCE",
+              help="Bracketing mode: farthest point to cover, e.g. 10m or inf.")
+@click.option("--overlap", type=NumberType(0.0, 0.99), default=DEFAULT_OVERLAP, show_default=True, callback=_single,
+              help="Fraction of each frame's depth shared with the next (0 to 0.99).")
+@click.option("--criterion", type=click.Choice(["classic", "wave"]), default=None,
+              help="Depth per frame: classic (the CoC) or wave (quarter-wave λ/NA², what macro stackers use). "
+                   "Default: wave from 1:1 (-m 1) up, classic below and for bracketing.")
+@sensor_options
+@coc_options
+@distance_plane_option
+@click.option("--model", type=click.Choice([c for c in model_choices() if c != "all"]), default="auto",
+              show_default=True, help=model_help().replace("; all: every model the inputs allow, side by side, "
+                                                           "with the time each took", ""))
+@model_options
+def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification, depth, near, far, overlap,
+          criterion, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, model, tolerance, diffraction,
+          wavelength, pupil_mag, hiatus, prescription_file, fmt, units, preset_files) -> Output:
+    """Plan a focus stack: the frames that cover a depth, with a stated overlap.
+
+    \b
+    Examples:
+      camtool stack -m 1 -N 8 --depth 10mm
+      camtool stack -m 2 -N 5.6 --depth 3mm --criterion classic --overlap 0
+      camtool stack -f 24 -N 11 --near 0.5 --far inf
+      camtool stack -f 50 -N 8 --near 1m --far 3m --overlap 0.5 --format json
+
+    Rail mode (-m and --depth; the camera or subject moves at constant
+    magnification): every frame has the same depth D, the step is
+    D·(1 − overlap) at the subject, ⌈depth/step⌉ frames cover the depth
+    and frame 1's near limit is the subject's nearest point; focus, near and far are positions along the subject from its
+    nearest point, and extension_step_mm is the same step made by the lens
+    focusing instead (m²·step); the depth is the close-up closed form
+    (thin, or thick with --pupil-mag). Bracketing mode (-f, --near, --far; the
+    focus ring moves): each frame's near limit sits at the previous far
+    limit less overlap × that frame's depth; with --far inf the last frame
+    is focused at the hyperfocal distance. Distances are in the
+    --distance-from plane (the sensor stays put while the lens moves); the
+    frames are solved by the --model chosen. More than 10000 frames is an
+    error on --near.
+    """
+    apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
+    n = _one(ctx, apertures, "-N", "f_number")
+    wanted_m = flatten(magnification)
+    rail = bool(wanted_m) or depth is not None
+    if rail and (near is not None or far is not None):
+        raise click.UsageError("give -m and --depth (rail) or --near and --far (bracketing), not both", ctx)
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
+    c = float(cocs[0])
+    lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
+    p = pupil_and_hiatus(ctx, pupil_mag, hiatus)[0]
+    if rail:
+        if depth is None:
+            raise click.UsageError("Missing option '--depth' (the subject depth for rail mode).", ctx)
+        if not wanted_m:
+            raise click.UsageError("Missing option '-m' (the magnification for rail mode).", ctx)
+        m = _one(ctx, wanted_m, "-m", "magnification")
+        _check_magnification(ctx, m)
+        if model in ("paraxial", "raytrace"):
+            raise click.BadParameter(f"{model} is not available in rail mode: the frames use the close-up closed "
+                                     "form (thin, or thick with the pupil magnification); it applies to --near/--far",
+                                     ctx=ctx, param=param_named(ctx, "model"))
+        focal = flatten(focal_length)
+        f = float(focal[0]) if focal else None
+        chosen_criterion = criterion or ("wave" if m >= WAVE_FROM else "classic")
+        return _rail(ctx, float(depth), n, m, chosen_criterion, c, float(overlap), p, wavelength, f, diffraction,
+                     fmt, cocs, coc_origin, chosen.label, distance_from)
+    if near is None or far is None:
+        raise click.UsageError("give -m and --depth (rail mode) or --near and --far (bracketing mode)", ctx)
+    with library_errors(ctx):
+        focal = required(ctx, focal_lengths(lens, flatten(focal_length)), "-f")
+    f = _one(ctx, focal, "-f", "focal_length")
+    chosen_criterion = criterion or "classic"
+    return _bracket(ctx, f, n, c, float(near), float(far), float(overlap), chosen_criterion, model, lens, p,
+                    wavelength, diffraction, tolerance, distance_from, fmt, cocs, coc_origin, chosen.label)
+
+
+def _usable(ctx: click.Context, n: float, c: float, m: float, p: float, wavelength: float) -> float:
+    """The CoC left for defocus by the Airy disc, or a one-line error on -N when nothing is sharp."""
+    from camtool.dof.closeup import diffraction_row
+
+    d = diffraction_row(n, c, m, p, wavelength)
+    if not d.sharp:
+        raise click.BadParameter(f"f/{n:g} is outside the valid range: below f/{d.limit_f_number:.3g} (the Airy disc, "
+                                 f"{d.airy_mm:.3g} mm, fills the CoC {c:.3g} mm: nothing is sharp)",
+                                 ctx=ctx, param=param_named(ctx, "f_number"))
+    return float(d.usable_coc_mm)
+
+
+def _rail(ctx, depth, n, m, criterion, c, overlap, p, wavelength, f, diffraction, fmt, cocs, coc_origin,
+          sensor_label, distance_from) -> Output:
+    from camtool.dof.stack import rail_plan
+
+    if diffraction and criterion == "classic":
+        c = _usable(ctx, n, c, m, p, wavelength)
+    with library_errors(ctx):
+        plan = rail_plan(depth, n, m, criterion, c, overlap, p, wavelength, f)
+    frame_depth = plan.front_mm + plan.rear_mm
+    rows = []
+    for k in range(1, plan.frames + 1):
+        near = (k - 1) * plan.step_mm
+        rows.append({"frame": k, "distance_mm": near + plan.front_mm, "near_mm": near, "far_mm": near + frame_depth,
+                     "magnification": m, "step_mm": plan.step_mm if k > 1 else 0.0,
+                     "extension_step_mm": plan.extension_step_mm if k > 1 else 0.0, "criterion": criterion,
+                     "mode": "rail", "distance_from": "subject"})
+    note = ""
+    if fmt == "table":
+        what = (f"{criterion} depth " + ("λ/NA²" if criterion == "wave" else f"(CoC {c:.3g} mm, {coc_origin})"))
+        note = (f"{plan.frames} frames · step {plan.step_mm:.4g} mm at the subject ({plan.extension_step_mm:.4g} mm "
+                f"of lens extension) · total depth {depth:.4g} mm · {what} · frame depth {frame_depth:.4g} mm, "
+                f"overlap {overlap:g} · positions along the subject from its nearest point")
+    return Output(rows, COLUMNS, KEYS, note)
+
+
+def _bracket(ctx, f, n, c, near, far, overlap, criterion, model, lens, p, wavelength, diffraction, tolerance,
+             distance_from, fmt, cocs, coc_origin, sensor_label) -> Output:
+    from camtool.dof.stack import bracket_plan, wave_coc_mm
+
+    if criterion == "wave":
+        c = float(wave_coc_mm(n, 0.0, p, wavelength))
+    elif diffraction:
+        c = _usable(ctx, n, c, 0.0, p, wavelength)
+    delta = float(lens.hiatus_mm) if lens is not None and lens.hiatus_mm is not None else 0.0
+    rung = _rung(model, lens)
+    limits = hyper = None
+    if rung not in ("thin", "approx"):
+        limits, hyper = _ladder_limits(ctx, rung, f, n, c, lens, tolerance)
+    with library_errors(ctx):
+        plan = bracket_plan(f, n, c, near, far, overlap, rung, MAX_FRAMES, limits, hyper, distance_from, delta)
+    _check_closest_focus(ctx, plan.frames[0].distance_mm, f, distance_from, delta)
+    rows = []
+    previous = None
+    for k, frame in enumerate(plan.frames, 1):
+        rows.append({"frame": k, "distance_mm": frame.distance_mm, "near_mm": frame.near_mm,
+                     "far_mm": frame.far_mm, "magnification": frame.magnification,
+                     "step_mm": 0.0 if previous is None else frame.distance_mm - previous, "extension_step_mm": None,
+                     "criterion": criterion, "mode": "bracket", "distance_from": distance_from})
+        previous = frame.distance_mm
+    note = ""
+    if fmt == "table":
+        what = f"{criterion} depth" + (" (λ/NA², as a CoC of 2λN)" if criterion == "wave" else "")
+        end = "∞" if math.isinf(far) else f"{far / 1000:.4g} m"
+        note = (f"{len(rows)} frames · {near / 1000:.4g} m to {end} · {what} · {rung} model · overlap {overlap:g} · "
+                + footer(None, cocs if criterion == "classic" else None, coc_origin, sensor_label, distance_from))
+    return Output(rows, COLUMNS, KEYS, note)
+
+
+def _check_closest_focus(ctx: click.Context, first: float, f: float, plane: str, delta: float) -> None:
+    """A one-line error on --near when frame 1 would focus closer than the --lens preset's closest focus."""
+    from camtool.cli.equipment import LENS
+
+    preset = ctx.meta.get(LENS)
+    closest = getattr(preset, "min_focus_mm", None)
+    if not closest or getattr(preset, "is_zoom", False):
+        return
+    sensor = first if plane == "sensor" else first + f * first / (first - f) + delta
+    if sensor < closest * (1.0 - 1e-9):
+        near = float(ctx.params.get("near") or first)
+        raise click.BadParameter(f"{near / 1000:.4g} m is outside the valid range: frame 1 would focus at "
+                                 f"{sensor / 1000:.4g} m from the sensor, closer than the lens's closest focus "
+                                 f"({closest / 1000:.4g} m); give a farther --near", ctx=ctx,
+                                 param=param_named(ctx, "near"))
+
+
+def _check_magnification(ctx: click.Context, m: float) -> None:
+    """A one-line error on -m beyond the --lens preset's published largest magnification."""
+    from camtool.cli.equipment import LENS
+
+    largest = getattr(ctx.meta.get(LENS), "max_magnification", None)
+    if largest and m > largest * (1.0 + 1e-9):
+        raise click.BadParameter(f"{m:g} is outside the valid range: 0 to {largest:g} (the lens's largest "
+                                 "magnification)", ctx=ctx, param=param_named(ctx, "magnification"))
+
+
+def _rung(model: str, lens: Any) -> str:
+    if model != "auto":
+        return model
+    if lens is None:
+        return "thin"
+    return "raytrace" if lens.prescription is not None else "thick"
+
+
+def _ladder_limits(ctx: click.Context, rung: str, f: float, n: float, c: float, lens: Any,
+                   tolerance: float) -> tuple[Any, float]:
+    """u -> (near, far) from the lens by one rung of the ladder, and that rung's hyperfocal distance."""
+    from camtool.dof.ladder import depth_of_field
+
+    def limits(u: float) -> tuple[float, float]:
+        with library_errors(ctx), ladder_errors(ctx):
+            r = depth_of_field(rung, f, n, c, u, "lens", lens, False, 550.0, tolerance).limits
+        return float(r.near_mm), float(r.far_mm)
+
+    with library_errors(ctx), ladder_errors(ctx):
+        first = depth_of_field(rung, f, n, c, 10.0 * f, "lens", lens, False, 550.0, tolerance).limits
+    return limits, float(first.hyperfocal_mm)

@@ -1,0 +1,321 @@
+"""Focus-stacking plans: the frames that cover a depth, on a rail or by the focus ring (docs/stack.md).
+
+Two ways to stack:
+
+* **Rail** (constant magnification m): every frame has the same depth D, so
+  the step between frames at the subject is ``s = D·(1 − o)`` for an overlap
+  o, and ``n = ⌈depth/s⌉`` frames cover the depth (n·s ≥ depth). The same
+  step made by the lens focusing instead of the rail moving is m²·s on the
+  image side (Newton's longitudinal magnification, first order).
+* **Focus bracketing** (the focus ring moves, distances from the lens): each
+  frame's near limit is set at the previous frame's far limit minus o times
+  that frame's depth, and the focus distance giving that near limit is solved
+  for. In the exact thin lens, with K = f²/(N·c) (the hyperfocal distance
+  from the lens is H = K + f) and w = u − f,
+
+      near = u·K/(K + w),   far = u·K/(K − w)   (∞ for w ≥ K),
+      u = near·(K − f)/(K − near)   (the focus with a given near limit).
+
+  With overlap 0 the image distances v = f·u/(u − f) of consecutive frames
+  are in the constant ratio (1 − a)/(1 + a), a = N·c/f: 1/u is evenly spaced
+  only to first order in a. The ``approx`` rule (near = u·H₀/(H₀ + u),
+  far = u·H₀/(H₀ − u), H₀ = f²/(N·c)) makes 1/u step by exactly 2/H₀.
+
+Other rungs of the model ladder (thick, paraxial, raytrace) are planned by
+solving each frame's focus numerically from the ladder's near limit.
+
+All lengths in millimetres.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any, NamedTuple
+
+from camtool.core.errors import require, require_positive
+
+__all__ = [
+    "CRITERIA",
+    "BracketFrame",
+    "BracketPlan",
+    "RailPlan",
+    "bracket_plan",
+    "frame_depth_mm",
+    "rail_plan",
+    "wave_coc_mm",
+]
+
+CRITERIA = ("classic", "wave")
+"""``classic``: the circle-of-confusion depth; ``wave``: the quarter-wave depth λ/NA²."""
+
+_MM_PER_NM = 1e-6
+
+
+def wave_coc_mm(f_number: Any, magnification: Any = 0.0, pupil_magnification: Any = 1.0,
+                wavelength_nm: Any = 550.0) -> Any:
+    """The CoC in mm whose classic depth equals the wave-optics depth λ/NA²: c = 2·λ·N_w.
+
+    The close-up rule 2·N_w·c/m² equals 4·λ·N_w²/m² exactly when c = 2·λ·N_w,
+    N_w = N·(1 + m/P) the working f-number.
+
+    Examples
+    --------
+    >>> round(wave_coc_mm(8.0), 6)
+    0.0088
+    """
+    return 2.0 * wavelength_nm * _MM_PER_NM * f_number * (1.0 + magnification / pupil_magnification)
+
+
+def frame_depth_mm(f_number: float, magnification: float, criterion: str, coc_mm: float = 0.03,
+                   pupil_magnification: float = 1.0, wavelength_nm: float = 550.0,
+                   focal_length_mm: float | None = None) -> tuple[float, float]:
+    """(front, rear) depth in mm of one frame at magnification m, by the criterion named.
+
+    ``wave``: λ/NA² split evenly. ``classic``: the exact close-up depth of
+    :func:`camtool.dof.closeup.closeup_dof` when the focal length is known,
+    else the rule N·c·(1 + m/P)/m² each side.
+
+    Examples
+    --------
+    >>> [round(x, 4) for x in frame_depth_mm(16.0, 1.0, "classic")]
+    [0.96, 0.96]
+    """
+    from camtool.dof.closeup import closeup_dof, macro_depth_mm, wave_depth_mm
+
+    require("criterion", criterion, criterion in CRITERIA, " or ".join(CRITERIA))
+    if criterion == "wave":
+        half = 0.5 * float(wave_depth_mm(f_number, magnification, pupil_magnification, wavelength_nm))
+        return half, half
+    if focal_length_mm is None:
+        half = 0.5 * float(macro_depth_mm(f_number, coc_mm, magnification, pupil_magnification))
+        return half, half
+    r = closeup_dof(focal_length_mm, f_number, coc_mm, magnification, pupil_magnification, "lens")
+    return float(r.front_mm), float(r.rear_mm)
+
+
+class RailPlan(NamedTuple):
+    """A constant-magnification (rail) plan; lengths in mm at the subject unless named otherwise."""
+
+    frames: int
+    step_mm: float  # rail step between frames at the subject
+    extension_step_mm: float  # the same step made by the lens focusing: m²·step, image side
+    front_mm: float  # each frame's depth in front of its focus
+    rear_mm: float  # and behind it
+    covered_mm: float  # (frames − 1)·step + frame depth
+    criterion: str
+
+
+def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion: str = "wave",
+              coc_mm: float = 0.03, overlap: float = 0.2, pupil_magnification: float = 1.0,
+              wavelength_nm: float = 550.0, focal_length_mm: float | None = None) -> RailPlan:
+    """Frames and rail step in mm that cover a subject depth at constant magnification.
+
+    step = D·(1 − o), D the frame depth (:func:`frame_depth_mm`), and
+    frames = ⌈depth/step⌉, so that frames·step ≥ depth: frame k (1-based)
+    has its sharp zone centred on [(k − 1)·s, k·s] along the subject.
+
+    Parameters
+    ----------
+    depth_mm : float, subject depth > 0
+    f_number : float, nominal N > 0
+    magnification : float, m > 0
+    criterion : ``"wave"`` or ``"classic"``
+    coc_mm : float, c > 0 (classic only)
+    overlap : float, 0 ≤ o < 1, the fraction of each frame's depth shared with the next
+    pupil_magnification : float, P > 0
+    wavelength_nm : float, λ > 0
+    focal_length_mm : float or None (classic: exact close-up depth when given)
+
+    References
+    ----------
+    Zerene Stacker, "DOF Estimates For Macro/Micro" (step size = λ/NA² at overlap 0);
+    docs/stack.md.
+
+    Examples
+    --------
+    >>> p = rail_plan(10.0, 8.0, 1.0, "wave", overlap=0.0)
+    >>> p.frames, round(p.step_mm, 4)
+    (18, 0.5632)
+    """
+    require_positive("depth_mm", depth_mm)
+    require("overlap", overlap, 0.0 <= overlap < 1.0, "0 to below 1")
+    front, rear = frame_depth_mm(f_number, magnification, criterion, coc_mm, pupil_magnification, wavelength_nm,
+                                 focal_length_mm)
+    depth = front + rear
+    step = depth * (1.0 - overlap)
+    frames = max(1, math.ceil(depth_mm / step * (1.0 - 1e-12)))
+    return RailPlan(frames, step, magnification * magnification * step, front, rear, (frames - 1) * step + depth,
+                    criterion)
+
+
+class BracketFrame(NamedTuple):
+    """One frame of a bracketing plan (mm from the lens)."""
+
+    distance_mm: float
+    near_mm: float
+    far_mm: float
+    magnification: float
+
+
+class BracketPlan(NamedTuple):
+    """A focus-bracketing plan: the frames, nearest first (mm from the lens)."""
+
+    frames: list[BracketFrame]
+    hyperfocal_mm: float
+
+
+Limits = Callable[[float], tuple[float, float]]
+"""focus distance u from the lens -> (near, far) from the lens."""
+
+
+def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
+                 overlap: float = 0.0, model: str = "thin", max_frames: int = 10_000,
+                 limits: Limits | None = None, hyperfocal_mm: float | None = None,
+                 distance_from: str = "lens", hiatus_mm: float = 0.0) -> BracketPlan:
+    """Focus distances in mm whose depths of field chain from a near to a far limit.
+
+    Frame 1 has its near limit at ``near_mm``; each next frame's near limit is
+    the previous far limit minus ``overlap`` times the previous frame's depth;
+    the plan ends at the first frame whose far limit reaches ``far_mm`` (∞:
+    the last frame is focused at or beyond the hyperfocal distance, and a
+    frame that would focus beyond it is focused at H instead).
+
+    From the lens the chain is solved in closed form (module docstring). From
+    the sensor, which stays put while a unit-focusing lens moves, a distance
+    S is u + v + δ with v = f·u/(u − f) the image distance of the frame's
+    focus u, so frame k's limits are its lens-plane limits plus v_k + δ, and
+    the focus that puts a near limit at S is the fixed point of
+    u = u_near(S − v(u) − δ) (a contraction with factor about m²).
+
+    Parameters
+    ----------
+    focal_length_mm : float, f > 0
+    f_number : float, N > 0
+    coc_mm : float, c > 0
+    near_mm : float, nearest point to cover: > f from the lens, > 4f + δ from the sensor
+    far_mm : float, farthest point (may be ∞), > near
+    overlap : float, 0 ≤ o < 1
+    model : ``"thin"`` (exact thin lens) or ``"approx"`` (the H₀ = f²/(N·c) rule), in closed form
+    max_frames : int, more frames than this is a DomainError on ``near_mm``
+    limits : optional function u -> (near, far) from the lens of another model; the focus of
+        each frame is then found by bisection on 1/u
+    hyperfocal_mm : that model's hyperfocal distance from the lens (with ``limits``)
+    distance_from : ``"lens"`` or ``"sensor"``, the plane of ``near_mm``, ``far_mm`` and the results
+    hiatus_mm : δ, the separation of the principal planes (sensor plane only)
+
+    References
+    ----------
+    Wikipedia, "Depth of field", §"Derivation of the DOF formulae" (D_N = s(H − f)/(H + s − 2f),
+    D_F = s(H − f)/(H − s)); docs/stack.md.
+
+    Examples
+    --------
+    >>> p = bracket_plan(24.0, 11.0, 0.03, 500.0, float("inf"))
+    >>> len(p.frames), round(p.frames[0].distance_mm, 1), p.frames[-1].far_mm
+    (2, 691.1, inf)
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    require_positive("f_number", f_number, unit="")
+    require_positive("coc_mm", coc_mm)
+    require("overlap", overlap, 0.0 <= overlap < 1.0, "0 to below 1")
+    require("distance_from", distance_from, distance_from in ("lens", "sensor"), "lens or sensor")
+    f = float(focal_length_mm)
+    k = f * f / (f_number * coc_mm)
+    hyper = k if model == "approx" else k + f
+    if limits is not None and hyperfocal_mm is not None:
+        hyper = float(hyperfocal_mm)
+    sensor = distance_from == "sensor"
+    closest = 4.0 * f + hiatus_mm if sensor else f
+    where = "from the sensor (4f + hiatus: the closest a lens focuses at m ≤ 1)" if sensor else \
+        "from the lens (the focal length)"
+    require("near_mm", near_mm, near_mm > closest, "more than {limit} " + where, limit=closest)
+    require("far_mm", far_mm, far_mm > near_mm, "beyond --near")
+    if limits is None:
+        limits = _closed_limits(f, k, model)
+        lens_focus = _closed_inverse(f, k, model)
+        tol = 1e-13
+    else:
+        lens_focus = _numeric_inverse(limits, f, hyper)
+        tol = 1e-10
+
+    def offset(u: float) -> float:
+        return f * u / (u - f) + hiatus_mm if sensor else 0.0
+
+    def focus_for_near(wanted: float, guess: float) -> float:
+        u = guess
+        for _ in range(100):
+            target = wanted - offset(u)
+            require("near_mm", near_mm, target > f, "more than {limit} " + where, limit=closest)
+            new = lens_focus(target)
+            if abs(new - u) <= tol * u:
+                return new
+            u = new
+        return u
+
+    # the near limit when focused at H: any wanted near limit beyond it is met by focusing at H
+    near_at_hyper = limits(hyper)[0] + offset(hyper)
+    frames: list[BracketFrame] = []
+    wanted = float(near_mm)
+    u = hyper
+    while True:
+        u = hyper if wanted >= near_at_hyper * (1.0 - 1e-12) else focus_for_near(wanted, u)
+        lo, hi = limits(u)
+        if u >= hyper:
+            hi = math.inf  # focused at the hyperfocal distance: sharp to infinity
+        shift = offset(u)
+        frames.append(BracketFrame(u + shift, lo + shift, hi + shift, f / (u - f)))
+        if hi + shift >= far_mm:
+            break
+        if len(frames) >= max_frames:
+            require("near_mm", near_mm, False, f"far enough that at most {max_frames} frames reach --far",
+                    detail=f"more than {max_frames} frames: a larger f-number, CoC or --near needs fewer")
+        wanted = hi + shift - overlap * (hi - lo)
+    return BracketPlan(frames, hyper + offset(hyper))
+
+
+def _closed_limits(f: float, k: float, model: str) -> Limits:
+    if model == "approx":
+        def approx(u: float) -> tuple[float, float]:
+            return u * k / (k + u), (u * k / (k - u) if u < k else math.inf)
+        return approx
+
+    def thin(u: float) -> tuple[float, float]:
+        w = u - f
+        return u * k / (k + w), (u * k / (k - w) if w < k else math.inf)
+    return thin
+
+
+def _closed_inverse(f: float, k: float, model: str) -> Callable[[float], float]:
+    if model == "approx":
+        return lambda near: near * k / (k - near)
+    return lambda near: near * (k - f) / (k - near)
+
+
+def _numeric_inverse(limits: Limits, f: float, hyper: float) -> Callable[[float], float]:
+    """The focus u in (f, H] whose near limit is ``near``: regula falsi (Illinois) on 1/u, near rising with u."""
+
+    def solve(near: float) -> float:
+        a, b = 1.0 / hyper, 1.0 / (near * (1.0 + 1e-12))  # near(u = near) < near ≤ near(H)
+        ga, gb = limits(1.0 / a)[0] - near, limits(1.0 / b)[0] - near
+        side = 0
+        for _ in range(200):
+            x = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
+            if not a < x < b:
+                x = 0.5 * (a + b)
+            gx = limits(1.0 / x)[0] - near
+            if gx >= 0.0:  # near limit at or beyond the one wanted: keep as the outer end
+                a, ga = x, gx
+                if side == 1:
+                    gb *= 0.5
+                side = 1
+            else:
+                b, gb = x, gx
+                if side == -1:
+                    ga *= 0.5
+                side = -1
+            if b - a <= 1e-12 * b or ga == 0.0:
+                break
+        return max(1.0 / a, f * (1.0 + 1e-12))  # the near limit at u is at least the one wanted: no gap
+
+    return solve
