@@ -259,3 +259,15 @@ def test_extension_has_a_physical_range() -> None:
     assert result.exit_code == 2
     assert result.output.strip().splitlines()[-1] == (
         "Error: Invalid value for '--extension': 1e17M is outside the valid range: > 0 to 10000 mm")
+
+
+def test_a_focusing_lens_preset_answers_a_list_with_infinity_row_by_row() -> None:
+    # the EF 100 L focuses internally; at infinity it is its own 100 mm at m = 0, 2·atan(18/100) = 20.41°
+    rows = json.loads(CliRunner().invoke(cli, ["fov", "--lens", "ef-100-macro-l", "-s", "1m,inf",
+                                               "--format", "json"]).output)
+    assert [r["distance_mm"] for r in rows] == [1000.0, None]
+    assert rows[1]["magnification"] == 0.0
+    assert math.isclose(rows[1]["horizontal_deg"], 2 * math.degrees(math.atan(18 / 100)), rel_tol=1e-12)
+    assert 0 < rows[0]["magnification"] < 1
+    scene = CliRunner().invoke(cli, ["fov", "--scene", "landscape-24", "-s", "inf", "--format", "json"])
+    assert scene.exit_code == 0 and json.loads(scene.output)[0]["magnification"] == 0.0

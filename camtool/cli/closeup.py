@@ -164,8 +164,8 @@ def _row(model: Any, f0: float, n: float, wanted: float, by_m: bool, plane: str,
     if model is not None:
         delta = model.hiatus_mm  # the preset's, or the effective hiatus of its focus model
     sensor = u + focal + focal * m + delta
-    if not by_m and model is None and not extension and k == 1.0:
-        # a typed distance, nothing changed it: keep it to the last digit in its own plane
+    if not by_m and not extension and k == 1.0 and (model is None or plane == "sensor"):
+        # a typed distance that the lens was focused on: keep it to the last digit in its own plane
         sensor, u = (wanted, u) if plane == "sensor" else (sensor, wanted)
     return focal, k * n, m, u, sensor, other
 

@@ -114,7 +114,8 @@ def _planned(ctx, focal, wanted, by_m, extension, teleconverter, sensor, crop, d
     count, (f, w) = combine_params(ctx, focal, wanted)
     with library_errors(ctx):
         # a lens preset with a published closest focus focuses internally: its focal length at m (docs/closeup.md §2)
-        setting = plan_focus(ctx, f, 1.0, w, by_m, distance_from, delta, extension, teleconverter)
+        ones = 1.0 if count == 1 else np.ones(count)  # no f-number here: one placeholder per row
+        setting = plan_focus(ctx, f, ones, w, by_m, distance_from, delta, extension, teleconverter)
         pick = (lambda values: values[0]) if count == 1 else np.asarray
         fe, m, u = pick(setting.focal_length_mm), pick(setting.magnification), pick(setting.lens_distance_mm)
         seen = view(chosen.width_mm, chosen.height_mm, fe, u, "lens", p, delta, chosen.crop_factor)

@@ -205,10 +205,14 @@ def internal_focus_at_distance(lens: InternalFocus, sensor_distance_mm: Any) -> 
     require("distance_mm", sensor_distance_mm, sensor_distance_mm >= lens.min_focus_mm * 0.999,
             "at least {limit} from the sensor (this lens's closest focus; " + where + ")",
             limit=lens.min_focus_mm)
-    span = sensor_distance_mm - delta
+    at_infinity = xp.isinf(sensor_distance_mm)
+    # infinity focus is m = 0 at the lens's own focal length; a large finite span keeps the algebra finite there
+    span = xp.where(at_infinity, 1e100, sensor_distance_mm - delta) if not isinstance(at_infinity, bool) else (
+        1e100 if at_infinity else sensor_distance_mm - delta)
     a = f0 - kappa * span
     b = 2.0 * f0 - span
     disc = b * b - 4.0 * a * f0
+    disc = xp.where(at_infinity, b * b, disc) if not isinstance(at_infinity, bool) else (b * b if at_infinity else disc)
     require("distance_mm", sensor_distance_mm, disc >= 0.0,
             f"a distance this lens can focus on ({where})")
     with quiet(xp):
@@ -220,6 +224,10 @@ def internal_focus_at_distance(lens: InternalFocus, sensor_distance_mm: Any) -> 
     require("distance_mm", sensor_distance_mm, (pick >= low) & (pick <= high),
             f"a distance this lens can focus on ({where})")
     m = xp.maximum(xp.minimum(pick, lens.max_magnification), lens.min_magnification)
+    if isinstance(at_infinity, bool):
+        m = 0.0 if at_infinity and lens.min_magnification <= 0.0 else m
+    else:
+        m = xp.where(at_infinity & (lens.min_magnification <= 0.0), 0.0, m)
     return m, f0 / (1.0 + kappa * m)
 
 
