@@ -313,7 +313,7 @@ def test_bad_input_is_one_line_exit_2(tmp_path: Path, monkeypatch: pytest.Monkey
 
 def test_unwritable_output_is_exit_1(tmp_path: Path) -> None:
     result = chart("dof", *SCENES["dof"], *SMALL, "-o", str(tmp_path / "missing" / "dof.png"))
-    assert (result.exit_code, result.stderr) == (1, f"Error: cannot write {tmp_path}/missing/dof.png: No such directory\n")
+    assert (result.exit_code, result.stderr) == (1, f"Error: -o/--output {tmp_path}/missing/dof.png: cannot write there: no such directory\n")
 
 
 def _drift_free(data: dict[str, Any]) -> dict[str, Any]:

@@ -147,9 +147,9 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
             fmt = _image_format(ctx, output, given)
             if output == "-" and data_file == "-":
                 raise click.UsageError("-o - and --data - would both write to standard output.", ctx)
-            for target in (output, data_file):
+            for target, option in ((output, "-o/--output"), (data_file, "--data")):
                 if target is not None and target != "-" and not Path(target).resolve().parent.is_dir():
-                    raise click.ClickException(f"cannot write {target}: No such directory")
+                    raise click.ClickException(f"{option} {target}: cannot write there: no such directory")
             plot = plotting(ctx)
             params = apply_equipment(ctx, params)
             data = compute(ctx, **params)
