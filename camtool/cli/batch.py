@@ -476,6 +476,8 @@ class _Batch:
         """Compute a group in one call; if it fails, halve it until the bad rows are found."""
         try:
             out = self._compute_group(members, values)
+            if len(out.rows) != len(members):  # one row a member, or the group is split until it is
+                raise click.ClickException(f"{len(out.rows)} results for {len(members)} rows")
         except click.ClickException as error:
             if len(members) > 1:
                 half = len(members) // 2
