@@ -21,11 +21,12 @@ import argparse
 import os
 import random
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
 import time
+
+from timing import interleaved_medians
 
 PY = sys.executable
 CAMTOOL = shutil.which("camtool") or ""
@@ -41,15 +42,8 @@ STOPS = (2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0, 22.0)
 
 
 def startup(repeat: int, env: dict[str, str]) -> dict[str, float]:
-    for argv in CASES.values():  # byte-code and the prescription's aberration table, written once
-        subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, env=env)
-    times: dict[str, list[float]] = {name: [] for name in CASES}
-    for _ in range(repeat):
-        for name, argv in CASES.items():
-            start = time.perf_counter()
-            subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, env=env)
-            times[name].append(time.perf_counter() - start)
-    return {name: statistics.median(values) for name, values in times.items()}
+    # the warm-up run writes byte-code and the prescription's aberration table once
+    return interleaved_medians(CASES, repeat, env)
 
 
 def write_batch(path: str, rows: int, continuous: bool) -> None:

@@ -15,23 +15,14 @@ from __future__ import annotations
 
 import argparse
 import math
-import time
-from collections.abc import Callable
+
+from timing import best
 
 from camtool.dof.ladder import depth_of_field
 from camtool.dof.stack import bracket_plan
 
 # 100 mm at f/1.4 with a 1 µm CoC from 0.38 m (lens plane) or 0.53 m (sensor plane) to infinity: about 10⁴ frames
 SCENE = {"focal_length_mm": 100.0, "f_number": 1.4, "coc_mm": 0.001}
-
-
-def best(fn: Callable[[], object], repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def main() -> None:

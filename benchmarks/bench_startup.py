@@ -13,10 +13,9 @@ from __future__ import annotations
 import argparse
 import os
 import shutil
-import statistics
-import subprocess
 import sys
-import time
+
+from timing import interleaved_medians
 
 PY = sys.executable
 CAMTOOL = shutil.which("camtool") or ""
@@ -41,15 +40,7 @@ def measure(repeat: int) -> dict[str, float]:
     # run write the byte-code first.
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     env["COLUMNS"] = "120"
-    for argv in CASES.values():
-        subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, env=env)
-    times: dict[str, list[float]] = {name: [] for name in CASES}
-    for _ in range(repeat):
-        for name, argv in CASES.items():
-            start = time.perf_counter()
-            subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, env=env)
-            times[name].append(time.perf_counter() - start)
-    return {name: statistics.median(values) for name, values in times.items()}
+    return interleaved_medians(CASES, repeat, env)
 
 
 def main() -> None:

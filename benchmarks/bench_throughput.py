@@ -12,21 +12,11 @@ Run: ``python benchmarks/bench_throughput.py [--n 1000000] [--repeat 7]``
 from __future__ import annotations
 
 import argparse
-import time
-from collections.abc import Callable
 
 import numpy as np
+from timing import best
 
 from camtool.dof.closed import approx_dof, thin_dof
-
-
-def best(fn: Callable[[], object], repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def scenes(n: int) -> tuple[np.ndarray, ...]:
