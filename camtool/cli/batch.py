@@ -45,6 +45,7 @@ from typing import IO, Any
 
 import click
 
+from camtool.cli.grid import CHUNK as GRID_CHUNK
 from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import ZIP, Output, open_writer
 from camtool.core.units import UnitError
@@ -52,7 +53,7 @@ from camtool.render.columnar import ColumnRows, values_of
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
 
-CHUNK = 20_000
+CHUNK = GRID_CHUNK  # one chunk size for batch files and option grids
 CONTROL = {"fmt", "units", "preset_files", "fields", "batch", "on_error"}
 CELL_LIMIT = 128 * 1024
 """Longest cell, in characters (the csv module's limit); a longer one is a bad row."""

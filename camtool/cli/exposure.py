@@ -11,8 +11,8 @@ import click
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
 from camtool.cli.options import library_errors, param_named
-from camtool.cli.params import NumberType, TimeType, _ListType, flatten
-from camtool.core.units import TStop, UnitError, exact_f_number, parse_f_number, parse_t_stop
+from camtool.cli.params import FNumberType, NumberType, TimeType, _ListType, flatten
+from camtool.core.units import TStop, UnitError, exact_f_number
 from camtool.render.columns import NUMBER, TEXT, Column
 
 LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
@@ -50,23 +50,19 @@ RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
 SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
 
 
-class ApertureType(_ListType):
-    """f-numbers (8, f/8, f8) or T-stops (T2, T/2.8, returned as :class:`TStop`)."""
+class ApertureType(FNumberType):
+    """f-numbers (8, f/8, f8) or T-stops (T2, T/2.8, returned as :class:`TStop`), named so in its messages."""
 
-    name = "f-number"
-    valid = "0.7 to 1024 (written 8, f/8, f8, or a T-stop T2)"
+    valid = f"{FNumberType.valid.split(' (')[0]} (written 8, f/8, f8, or a T-stop T2)"
+
+    def __init__(self) -> None:
+        super().__init__(t_stops=True)
 
     def parse(self, text: str) -> float:
-        t_stop = parse_t_stop(text)
-        if t_stop is not None:
-            return TStop(t_stop)
         try:
-            return parse_f_number(text)
+            return super().parse(text)
         except UnitError:
             raise UnitError(f"{text!r} is not an f-number or T-stop (examples: 8, f/8, f8, T2)") from None
-
-    def check(self, value: float) -> bool:
-        return 0.7 <= value <= 1024
 
 
 class IlluminanceType(_ListType):
