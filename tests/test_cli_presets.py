@@ -123,3 +123,30 @@ def test_preset_names_complete() -> None:
     assert "full-frame" in names
     lenses = [item.value for item in completer.get_completions(["dof", "--lens"], "sony-fe-8")]
     assert "sony-fe-85mm-f1.8" in lenses
+
+
+def test_presets_list_and_show_films(tmp_path: Path) -> None:
+    # the films `camtool exposure --film` knows, as camtool/exposure/films.yaml lists them (read here
+    # with yaml, not through camtool), then a user's own films: section
+    import yaml
+
+    shipped = yaml.safe_load((Path(__file__).parents[1] / "camtool" / "exposure" / "films.yaml").read_text())["films"]
+    own = tmp_path / "films.yaml"
+    own.write_text("films:\n  - {id: my-film, name: My film, p: 1.4}\n"
+                   "  - {id: ilford-hp5-plus, name: Not HP5, p: 2.0}\n")
+    rows = run_json("presets", "list", "--kind", "film", "--presets", str(own))
+    assert [r["id"] for r in rows] == [f["id"] for f in shipped] + ["my-film"]  # --film finds a shipped film first
+    hp5 = rows[0]
+    assert hp5["summary"] == "Ilford HP5 Plus, reciprocity p = 1.31 beyond 1 s"  # Ilford's sheet: t_c = t_m^1.31
+    assert hp5["tier"] == "shipped" and hp5["origin"] == "camtool/exposure/films.yaml"
+    assert rows[-1]["summary"] == "My film, reciprocity p = 1.4 beyond 1 s" and rows[-1]["tier"].startswith("--presets")
+    assert [r["kind"] for r in run_json("presets", "list", "--search", "ektar")] == ["film"]
+    (shown,) = run_json("presets", "show", "HP5+")
+    assert shown["id"] == "ilford-hp5-plus" and shown["p"] == 1.31 and "hp5" in shown["aliases"]
+    (tmax,) = run_json("presets", "show", "tmax100", "--kind", "film")
+    # Kodak F-4016: 100 s metered -> +1 stop
+    assert tmax["p"] is None and tmax["points"][-1] == [100.0, 1.0]
+    table = run("presets", "show", "tmax100")
+    assert table.exit_code == 0 and "100 s +1 EV" in table.stdout
+    assert run("presets", "list", "--kind", "film").stdout.splitlines()[-1] == f"{len(shipped)} presets"
+    assert run("presets", "list", "--search", "ektar").stdout.splitlines()[-1] == "1 preset"

@@ -152,7 +152,7 @@ def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
               help="Pupil magnification P of the lens (exit/entrance pupil) for the bellows factor (1 + m/P)².")
 @click.option("--film", metavar="NAME",
               help="Film for reciprocity failure, from its maker's data (hp5, tmax100, tri-x, velvia50, acros, "
-                   "800t, ...; camtool presets lists them) or a films preset.")
+                   "800t, ...; `camtool presets list --kind film` lists them) or a films preset.")
 @click.option("--reciprocity-p", "reciprocity_p", type=NumberType(1, 3),
               help="Schwarzschild exponent p for a film not in the list: t_c = t_m^p beyond 1 s.")
 @click.option("--to-iso", "new_iso", type=NumberType(1, 1e7),

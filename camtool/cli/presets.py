@@ -11,7 +11,8 @@ from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
 from camtool.render.columns import TEXT, Column
 
-KIND_CHOICE = click.Choice(["sensor", "camera", "lens", "prescription", "scene"])
+KINDS = ["sensor", "camera", "lens", "prescription", "scene", "film"]
+KIND_CHOICE = click.Choice(KINDS)
 LIST_KEYS = ["kind", "id", "name", "summary", "tier", "origin"]
 LIST_COLUMNS = [Column("kind", "kind", TEXT), Column("id", "id", TEXT), Column("summary", "summary", TEXT),
                 Column("tier", "from", TEXT)]
@@ -20,7 +21,7 @@ SHOW_COLUMNS = [Column("key", "key", TEXT), Column("value", "value", TEXT)]
 
 @click.group("presets")
 def presets() -> None:
-    """List, show, validate and import presets of sensors, cameras, lenses, prescriptions and scenes.
+    """List, show, validate and import presets of sensors, cameras, lenses, prescriptions, scenes and films.
 
     Presets are read from the shipped database, a lensfun import, then
     $XDG_CONFIG_DIRS/camtool and $XDG_CONFIG_HOME/camtool (~/.config/camtool),
@@ -31,6 +32,7 @@ def presets() -> None:
       camtool presets list --kind lens --search macro
       camtool presets show full-frame
       camtool presets show dgauss100-lens
+      camtool presets list --kind film
       camtool presets validate my-lenses.yaml
       camtool presets import-lensfun
     """
@@ -57,7 +59,22 @@ def summary(preset: Any) -> str:
         return focal + stops + (" (prescription)" if preset.prescription is not None else "")
     if kind == "prescription":
         return f"{len(preset.surfaces)} surfaces, f = {preset.focal_length_mm or 0:g} mm"
+    if kind == "film":
+        film = preset.reciprocity() if hasattr(preset, "reciprocity") else preset
+        model = (f"p = {film.p:g} beyond {film.threshold_s:g} s" if film.p is not None
+                 else f"published table to {film.points[-1][0]:g} s")
+        return f"{film.name}, reciprocity {model}"
     return preset.name
+
+
+def shipped_films() -> list[Any]:
+    """The films camtool ships with their makers' reciprocity data (``camtool/exposure/films.yaml``)."""
+    from camtool.exposure.reciprocity import load_films
+
+    return list(load_films().values())
+
+
+FILMS_ORIGIN = "camtool/exposure/films.yaml"
 
 
 @presets.command("list")
@@ -70,23 +87,31 @@ def list_presets(ctx: click.Context, kind: str | None, search: str | None, fmt: 
                  preset_files: tuple[str, ...]) -> None:
     """List presets, optionally of one kind or matching a text.
 
+    Films are the ones whose makers publish reciprocity data (what
+    `camtool exposure --film` knows), then any `films:` preset of your own.
+
     \b
     Examples:
       camtool presets list --kind sensor
       camtool presets list --search 50mm --format json
+      camtool presets list --kind film --search ilford
     """
     db = _database(ctx, preset_files)
-    kinds = [kind] if kind else ["sensor", "camera", "lens", "prescription", "scene"]
+    kinds = [kind] if kind else KINDS
     needle = (search or "").lower()
     rows = []
     for each in kinds:
-        for preset in db.all(each):
+        listed: list[tuple[Any, str | None, str | None]] = [(p, p.tier, p.origin) for p in db.all(each)]
+        if each == "film":  # --film looks a shipped film up first, so a preset file cannot replace one
+            ids = {f.id for f in shipped_films()}
+            listed = [(f, "shipped", FILMS_ORIGIN) for f in shipped_films()] + [x for x in listed if x[0].id not in ids]
+        for preset, tier, origin in listed:
             text = " ".join([preset.id, preset.name, *preset.aliases]).lower()
             if needle and needle not in text:
                 continue
             rows.append({"kind": each, "id": preset.id, "name": preset.name, "summary": summary(preset),
-                         "tier": preset.tier, "origin": preset.origin})
-    emit(Output(rows, LIST_COLUMNS, LIST_KEYS, f"{len(rows)} presets"), fmt, "metric")
+                         "tier": tier, "origin": origin})
+    emit(Output(rows, LIST_COLUMNS, LIST_KEYS, f"{len(rows)} preset{'' if len(rows) == 1 else 's'}"), fmt, "metric")
 
 
 def describe(db: Any, preset: Any) -> dict[str, Any]:
@@ -140,30 +165,53 @@ def show(ctx: click.Context, name: str, kind: str | None, fmt: str, preset_files
     Examples:
       camtool presets show nikon-z-8
       camtool presets show dgauss100-lens --format json
+      camtool presets show hp5
     """
     from camtool.presets import PresetNotFound
 
     db = _database(ctx, preset_files)
+    film = _shipped_film(name) if kind in (None, "film") else None
     try:
-        if kind:
+        if film is not None:
+            preset = film
+        elif kind:
             preset = db.get(kind, name)
         else:
             found = db.find(name)
             if not found:
-                close = [c for k in ("sensor", "camera", "lens", "prescription", "scene")
-                         for c in db.suggestions(k, name)][:3]
+                close = [c for k in KINDS for c in db.suggestions(k, name)][:3]
                 hint = f"; did you mean {', '.join(close)}?" if close else ""
                 raise click.BadParameter(f"no preset is named {name!r}{hint}", ctx=ctx, param_hint="'NAME'")
             preset = found[0]
     except PresetNotFound as error:
         raise click.BadParameter(str(error), ctx=ctx, param_hint="'NAME'") from None
-    fields = describe(db, preset)
+    if film is not None:
+        fields: dict[str, Any] = {"kind": "film", **film._asdict(), "tier": "shipped", "origin": FILMS_ORIGIN}
+        fields["points"] = [list(point) for point in film.points] or None  # (metered s, extra stops)
+        fields["aliases"] = list(film.aliases)
+        origin = FILMS_ORIGIN
+    else:
+        fields = describe(db, preset)
+        origin = preset.origin
     if fmt == "table":
+        if fields["kind"] == "film" and fields.get("points"):
+            fields["points"] = ", ".join(f"{t:g} s +{stops:.2g} EV" for t, stops in fields["points"])
         rows = [{"key": key, "value": _show_value(value)} for key, value in fields.items() if value is not None]
-        emit(Output(rows, SHOW_COLUMNS, ["key", "value"], f"{fields['kind']} {preset.id} from {preset.origin}"),
+        emit(Output(rows, SHOW_COLUMNS, ["key", "value"], f"{fields['kind']} {preset.id} from {origin}"),
              fmt, "metric")
     else:
         emit(Output([fields], SHOW_COLUMNS, list(fields)), fmt, "metric")
+
+
+def _shipped_film(name: str) -> Any:
+    """The shipped film of this name (id, name or alias, as --film reads it), or None."""
+    from camtool.core.errors import DomainError
+    from camtool.exposure.reciprocity import find_film
+
+    try:
+        return find_film(name)
+    except DomainError:
+        return None
 
 
 def _show_value(value: Any) -> str:
