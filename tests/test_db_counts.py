@@ -1,0 +1,37 @@
+"""The preset counts the READMEs print are the shipped database's own (read here with yaml, not camtool)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+DB = ROOT / "lens_db"
+
+
+def shipped_counts() -> dict[str, int]:
+    counts = {kind: len(yaml.safe_load((DB / f"{kind}.yaml").read_text(encoding="utf-8"))[kind])
+              for kind in ("sensors", "cameras", "lenses", "scenes")}
+    counts["prescriptions"] = len(list((DB / "prescriptions").glob("*.yaml")))
+    return counts
+
+
+def test_readme_counts_the_shipped_presets():
+    text = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    match = re.search(r"`lens_db/` ships (\d+) sensor and film formats, (\d+) cameras, (\d+) lenses \(.*?\), "
+                      r"(\d+) lens prescriptions and (\d+) scenes", text)
+    assert match, "README.md no longer says what lens_db/ ships"
+    said = dict(zip(("sensors", "cameras", "lenses", "prescriptions", "scenes"), map(int, match.groups()), strict=True))
+    assert said == shipped_counts()
+
+
+def test_lens_db_readme_table_counts_the_shipped_presets():
+    text = (DB / "README.md").read_text(encoding="utf-8")
+    counts = shipped_counts()
+    for kind in ("sensors", "cameras", "lenses", "scenes"):
+        row = re.search(rf"^\| `{kind}\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
+        assert row and int(row.group(1)) == counts[kind], kind
+    row = re.search(r"^\| `prescriptions/\*\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
+    assert row and int(row.group(1)) == counts["prescriptions"]
