@@ -95,8 +95,11 @@ def test_field_gives_the_focus_distances() -> None:
          "Error: Invalid value for '-m' / '--magnification': 6 is outside the valid range: 0 to 5 (the lens's "
          "largest magnification)"),
         (["--lens", "rf-50-1.8", "-N", "8", "--near", "0.25", "--far", "inf"],
-         "Error: Invalid value for '--near': 0.25 m is outside the valid range: frame 1 would focus at 0.2522 m from "
-         "the sensor, closer than the lens's closest focus (0.3 m); give a farther --near"),
+         "Error: Invalid value for '--near': 250 mm is outside the valid range: at least 295.5 mm from the sensor "
+         "(the near limit with the lens at its closest focus)"),
+        (["--lens", "mp-e-65", "-N", "8", "--near", "0.25", "--far", "0.3"],
+         "Error: Invalid value for '--lens': mp-e-65 is outside the valid range: a lens that focuses to infinity "
+         "(this one works from 1× to 5×: stack it on a rail with -m and --depth)"),
         (["-m", "1", "-N", "8", "--depth", "1mm", "--model", "raytrace"],
          "Error: Invalid value for '--model': raytrace is not available in rail mode: the frames use the close-up "
          "closed form (thin, or thick with the pupil magnification); it applies to --near/--far"),
@@ -123,3 +126,42 @@ def test_a_thick_lens_moves_the_frames_and_keeps_the_chain() -> None:
     for a, b in itertools.pairwise(thick[:-1]):
         assert a["far_mm"] - b["near_mm"] == pytest.approx(0.2 * (a["far_mm"] - a["near_mm"]), rel=1e-6)
     assert thick[0]["near_mm"] == pytest.approx(1000.0, rel=1e-9)
+
+
+@pytest.mark.parametrize(("lens", "extra", "plane"), [
+    ("sony-fe-85mm-f1.8", ["--far", "2.5"], "sensor"),
+    ("ef-100-macro-l", [], "sensor"),
+    ("ef-100-macro-l", [], "lens"),
+    ("nikon-z-24-70mm-f4-s", ["-f", "50"], "sensor"),
+    ("ef-100-macro-l", ["--model", "thick", "--pupil-mag", "0.6"], "sensor"),
+])
+def test_an_internally_focusing_lens_brackets_as_dof_sees_it(lens: str, extra: list[str], plane: str) -> None:
+    # A lens preset with a published closest focus shortens its focal length as it focuses (docs/closeup.md §2).
+    # Each frame's limits must be the ones `camtool dof` gives for that lens focused where the frame is
+    # (dof places the subject through its own close-up planner), and the frames must still chain.
+    common = ["--lens", lens, "-N", "8", "--coc", "0.03", "--distance-from", plane, *extra]
+    near, far = (1.0, 2.5) if "--far" in extra else (0.5, 0.8)
+    if "--far" in extra:
+        common = common[:-2]
+    frames = run_json("stack", *common, "--near", str(near), "--far", str(far))
+    assert frames[0]["near_mm"] == pytest.approx(near * 1000, rel=1e-9) and frames[-1]["far_mm"] >= far * 1000
+    for a, b in itertools.pairwise(frames):
+        assert a["far_mm"] - b["near_mm"] == pytest.approx(0.2 * (a["far_mm"] - a["near_mm"]), rel=1e-6)
+    focus = ",".join(repr(frame["distance_mm"] / 1000.0) for frame in frames)
+    rows = run_json("dof", *common, "-s", focus)
+    for frame, row in zip(frames, rows, strict=True):
+        assert frame["near_mm"] == pytest.approx(row["near_mm"], rel=1e-9)
+        assert frame["far_mm"] == pytest.approx(row["far_mm"], rel=1e-9)
+        assert frame["magnification"] == pytest.approx(row["magnification"], rel=1e-9)
+
+
+def test_internal_focus_is_named_and_reaches_the_hyperfocal_distance() -> None:
+    result = run("stack", "--lens", "ef-100-macro-l", "-N", "8", "--coc", "0.03", "--near", "0.3", "--far", "inf")
+    assert result.exit_code == 0 and "the lens focuses internally: f 75.12 to 99.92 mm" in result.stdout
+    frames = run_json("stack", "--lens", "ef-100-macro-l", "-N", "8", "--coc", "0.03", "--near", "0.3", "--far", "inf")
+    last = frames[-1]
+    assert last["far_mm"] is None and frames[-2]["far_mm"] is not None  # JSON writes infinity as null
+    # the thin-lens hyperfocal focus of the lens at that setting: m = N·c/f(m), f(m) = f0/(1 + κm), κ = 1/3
+    # (EF 100 mm f/2.8L Macro: 1:1 at 0.3 m), so m = Nc/(f0 − κNc)
+    m = 8 * 0.03 / (100.0 - 8 * 0.03 / 3)
+    assert last["magnification"] == pytest.approx(m, rel=1e-9)

@@ -7,7 +7,7 @@ from typing import Any
 
 import click
 
-from camtool.cli.closeup import MAGNIFICATION
+from camtool.cli.closeup import MAGNIFICATION, focus_models, has_focus_model
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.common import f_numbers, flatten, footer, required
 from camtool.cli.equipment import resolve_coc, resolve_sensor
@@ -197,12 +197,27 @@ def _bracket(ctx, f, n, c, near, far, overlap, criterion, model, lens, p, wavele
         c = _usable(ctx, n, c, 0.0, p, wavelength)
     delta = float(lens.hiatus_mm) if lens is not None and lens.hiatus_mm is not None else 0.0
     rung = _rung(model, lens)
+    focusing = focus_models(ctx)(f) if has_focus_model(ctx) else None
     limits = hyper = None
-    if rung not in ("thin", "approx"):
-        limits, hyper = _ladder_limits(ctx, rung, f, n, c, lens, tolerance)
-    with library_errors(ctx):
-        plan = bracket_plan(f, n, c, near, far, overlap, rung, MAX_FRAMES, limits, hyper, distance_from, delta)
-    _check_closest_focus(ctx, plan.frames[0].distance_mm, f, distance_from, delta)
+    if focusing is not None:  # the lens focuses internally: each frame at its own focal length, as dof has it
+        from camtool.dof.stack import internal_bracket_plan
+
+        if focusing.min_magnification > 0.0:
+            raise click.BadParameter(
+                f"{ctx.params.get('lens')} is outside the valid range: a lens that focuses to infinity (this one "
+                f"works from {focusing.min_magnification:g}× to {focusing.max_magnification:g}×: stack it on a rail "
+                "with -m and --depth)", ctx=ctx, param=param_named(ctx, "lens"))
+
+        by_rung = None if rung in ("thin", "approx") else _ladder_limits_at(ctx, rung, n, c, lens, tolerance)
+        with library_errors(ctx):
+            plan = internal_bracket_plan(focusing, n, c, near, far, overlap, rung, MAX_FRAMES, by_rung,
+                                         distance_from)
+    else:
+        if rung not in ("thin", "approx"):
+            limits, hyper = _ladder_limits(ctx, rung, f, n, c, lens, tolerance)
+        with library_errors(ctx):
+            plan = bracket_plan(f, n, c, near, far, overlap, rung, MAX_FRAMES, limits, hyper, distance_from, delta)
+        _check_closest_focus(ctx, plan.frames[0].distance_mm, f, distance_from, delta)
     rows = []
     previous = None
     for k, frame in enumerate(plan.frames, 1):
@@ -215,6 +230,9 @@ def _bracket(ctx, f, n, c, near, far, overlap, criterion, model, lens, p, wavele
     if fmt == "table":
         what = f"{criterion} depth" + (" (λ/NA², as a CoC of 2λN)" if criterion == "wave" else "")
         end = "∞" if math.isinf(far) else f"{far / 1000:.4g} m"
+        if focusing is not None:
+            focal = [focusing.focal_length_mm / (1.0 + focusing.kappa * r["magnification"]) for r in rows]
+            what += f" · the lens focuses internally: f {min(focal):.4g} to {max(focal):.4g} mm"
         note = (f"{len(rows)} frames · {near / 1000:.4g} m to {end} · {what} · {rung} model · overlap {overlap:g} · "
                 + footer(None, cocs if criterion == "classic" else None, coc_origin, sensor_label, distance_from))
     return Output(rows, COLUMNS, KEYS, note)
@@ -253,6 +271,19 @@ def _rung(model: str, lens: Any) -> str:
     if lens is None:
         return "thin"
     return "raytrace" if lens.prescription is not None else "thick"
+
+
+def _ladder_limits_at(ctx: click.Context, rung: str, n: float, c: float, lens: Any,
+                      tolerance: float) -> Any:
+    """(f, u) -> (near, far) from the lens by one rung of the ladder, for a lens whose focal length changes."""
+    from camtool.dof.ladder import depth_of_field
+
+    def limits(f: float, u: float) -> tuple[float, float]:
+        with library_errors(ctx), ladder_errors(ctx):
+            r = depth_of_field(rung, f, n, c, u, "lens", lens, False, 550.0, tolerance).limits
+        return float(r.near_mm), float(r.far_mm)
+
+    return limits
 
 
 def _ladder_limits(ctx: click.Context, rung: str, f: float, n: float, c: float, lens: Any,

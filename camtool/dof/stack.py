@@ -24,6 +24,12 @@ Two ways to stack:
 Other rungs of the model ladder (thick, paraxial, raytrace) are planned by
 solving each frame's focus numerically from the ladder's near limit.
 
+A lens that focuses internally (a lens preset with a published closest focus,
+docs/closeup.md §2) has a focal length f(m) = f₀/(1 + κ·m) that shortens as it
+focuses closer; :func:`internal_bracket_plan` solves each frame for its
+magnification m instead, with that frame's own f(m), u = f(m)·(1 + 1/m) and
+the sensor at u + f(m)·(1 + m) + δ, as ``camtool dof`` places it.
+
 All lengths in millimetres.
 """
 
@@ -34,6 +40,7 @@ from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from camtool.core.errors import require, require_positive
+from camtool.geometry.closeup import InternalFocus
 
 __all__ = [
     "CRITERIA",
@@ -42,6 +49,7 @@ __all__ = [
     "RailPlan",
     "bracket_plan",
     "frame_depth_mm",
+    "internal_bracket_plan",
     "rail_plan",
     "wave_coc_mm",
 ]
@@ -272,6 +280,151 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
                     detail=f"more than {max_frames} frames: a larger f-number, CoC or --near needs fewer")
         wanted = hi + shift - overlap * (hi - lo)
     return BracketPlan(frames, hyper + offset(hyper))
+
+
+FocusLimits = Callable[[float, float], tuple[float, float]]
+"""(focal length f, focus distance u from the lens) -> (near, far) from the lens."""
+
+
+def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
+                          overlap: float = 0.0, model: str = "thin", max_frames: int = 10_000,
+                          limits: FocusLimits | None = None, distance_from: str = "sensor") -> BracketPlan:
+    """Focus bracketing with an internally focusing lens: frames chained as in :func:`bracket_plan`, solved for m.
+
+    A frame at magnification m has the focal length f(m) = f₀/(1 + κm), its
+    subject u = f(m)·(1 + 1/m) from the lens and f(m)·(1 + m)²/m + δ from the
+    sensor; its limits are the chosen model's at f(m) and u (from the lens,
+    moved to the sensor by f(m)·(1 + m) + δ). A frame's near limit falls as m
+    grows, so each frame's m is found by regula falsi (Illinois) between the
+    hyperfocal magnification m_H (the largest m whose far limit is infinite:
+    m_H = N·c/f(m_H) in the thin lens) and the lens's largest magnification.
+
+    Parameters
+    ----------
+    lens : :class:`camtool.geometry.closeup.InternalFocus`, the lens's focusing model
+    f_number, coc_mm, near_mm, far_mm, overlap, max_frames : as :func:`bracket_plan`
+    model : ``"thin"`` or ``"approx"`` in closed form (with ``limits`` None)
+    limits : optional function (f, u) -> (near, far) from the lens of another rung
+    distance_from : ``"sensor"`` (default) or ``"lens"`` (the lens's front principal plane at each frame's focus)
+
+    Examples
+    --------
+    Canon EF 100 mm f/2.8L Macro (1:1 at 300 mm from the sensor, κ = 1/3), f/8, c = 0.03 mm,
+    from 0.5 m to 0.6 m from the sensor:
+
+    >>> from camtool.geometry.closeup import internal_focus
+    >>> p = internal_bracket_plan(internal_focus(100.0, 300.0, 1.0), 8.0, 0.03, 500.0, 600.0)
+    >>> len(p.frames), round(p.frames[0].near_mm, 9), round(p.frames[0].magnification, 4)
+    (13, 500.0, 0.3085)
+    """
+    require_positive("f_number", f_number, unit="")
+    require_positive("coc_mm", coc_mm)
+    require("overlap", overlap, 0.0 <= overlap < 1.0, "0 to below 1")
+    require("distance_from", distance_from, distance_from in ("lens", "sensor"), "lens or sensor")
+    require("far_mm", far_mm, far_mm > near_mm, "beyond --near")
+    sensor = distance_from == "sensor"
+    f0, kappa, delta = lens.focal_length_mm, lens.kappa, lens.hiatus_mm
+
+    def frame(m: float) -> BracketFrame:
+        f = f0 / (1.0 + kappa * m)
+        u = f + f / m
+        if limits is None:
+            lo, hi = _closed_limits(f, f * f / (f_number * coc_mm), model)(u)
+        else:
+            lo, hi = limits(f, u)
+        shift = f + f * m + delta if sensor else 0.0
+        return BracketFrame(u + shift, lo + shift, hi + shift, m)
+
+    require("min_magnification", lens.min_magnification, lens.min_magnification == 0.0,
+            "0: a lens that focuses to infinity (one that works only above a magnification is stacked on a rail)")
+    m_min = 1e-9 * lens.max_magnification
+    m_max = _nearest_limit_magnification(lambda m: frame(m).near_mm, m_min, lens.max_magnification)
+    closest = frame(m_max)
+    plane = "from the sensor" if sensor else "from the lens"
+    why = ("the near limit with the lens at its closest focus" if m_max == lens.max_magnification else
+           f"the nearest limit it reaches, at {m_max:.3g}×: a closer setting moves the subject away again")
+    require("near_mm", near_mm, near_mm >= closest.near_mm * (1.0 - 1e-12),
+            "at least {limit} " + plane + f" ({why})", limit=closest.near_mm)
+    # the hyperfocal magnification: the largest m whose far limit is infinite (bisection in log m)
+    if math.isinf(frame(m_min).far_mm):
+        low, high = m_min, m_max
+        if math.isinf(closest.far_mm):
+            low = m_max
+        while high - low > 1e-13 * high:
+            mid = math.sqrt(low * high)
+            if math.isinf(frame(mid).far_mm):
+                low = mid
+            else:
+                high = mid
+        m_hyper = low
+    else:  # an aperture so wide and a CoC so small that even m = 1e-9·m_max is closer than the hyperfocal focus
+        m_hyper = m_min
+    at_hyper = frame(m_hyper)
+    require("far_mm", far_mm, far_mm <= at_hyper.far_mm,
+            "at most {limit} " + plane + " (the far limit with the lens at its farthest focus)", limit=at_hyper.far_mm)
+
+    def solve(wanted: float) -> float:
+        """The m whose near limit is ``wanted`` (≤ the near limit at m_hyper), by Illinois regula falsi."""
+        a, b = m_hyper, m_max  # near(a) ≥ wanted ≥ near(b)
+        ga, gb = at_hyper.near_mm - wanted, closest.near_mm - wanted
+        side = 0
+        for _ in range(200):
+            x = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
+            if not a < x < b:
+                x = 0.5 * (a + b)
+            gx = frame(x).near_mm - wanted
+            if gx >= 0.0:  # near limit at or beyond the one wanted: x is the new outer (smaller m) end
+                a, ga = x, gx
+                if side == 1:
+                    gb *= 0.5
+                side = 1
+            else:
+                b, gb = x, gx
+                if side == -1:
+                    ga *= 0.5
+                side = -1
+            if b - a <= 1e-14 * b or ga == 0.0:
+                break
+        return a  # the near limit at a is at least the one wanted: no gap
+
+    frames: list[BracketFrame] = []
+    wanted = float(near_mm)
+    while True:
+        if wanted >= at_hyper.near_mm * (1.0 - 1e-12):
+            each = at_hyper
+        else:
+            each = frame(solve(wanted))
+        frames.append(each)
+        if each.far_mm >= far_mm:
+            break
+        if len(frames) >= max_frames:
+            require("near_mm", near_mm, False, f"far enough that at most {max_frames} frames reach --far",
+                    detail=f"more than {max_frames} frames: a larger f-number, CoC or --near needs fewer")
+        wanted = each.far_mm - overlap * (each.far_mm - each.near_mm)
+    return BracketPlan(frames, at_hyper.distance_mm)
+
+
+def _nearest_limit_magnification(near: Callable[[float], float], low: float, high: float) -> float:
+    """The m in [low, high] with the nearest near limit (``high`` unless the lens turns back past about 1:1).
+
+    Up to 1:1 a closer focus setting always brings the subject nearer; beyond
+    it the subject-to-sensor distance f(m)·(1 + m)²/m grows again, so a lens
+    reaching past 1:1 is bracketed only up to the magnification where the near
+    limit is nearest (golden-section search, the near limit being unimodal in m).
+    """
+    if near(high) <= near(high * (1.0 - 1e-6)):
+        return high
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    a, b = low, high
+    for _ in range(200):
+        x1, x2 = b - ratio * (b - a), a + ratio * (b - a)
+        if near(x1) <= near(x2):
+            b = x2
+        else:
+            a = x1
+        if b - a <= 1e-12 * b:
+            break
+    return 0.5 * (a + b)
 
 
 def _closed_limits(f: float, k: float, model: str) -> Limits:
