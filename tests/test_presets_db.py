@@ -105,6 +105,9 @@ def test_every_approximate_preset_says_what_is_unconfirmed():
         ("leica-m11", 36.0, 24.0, (9528, 6328)),  # leica_m11: Full frame (36 x 24 mm), 9528 x 6328
         ("leica-sl2", 36.0, 24.0, (8368, 5584)),  # leica_sl2: Full frame (36 x 24 mm), 8368 x 5584
         ("ricoh-gr-iii", 23.5, 15.6, (6000, 4000)),  # ricoh_griii: APS-C (23.5 x 15.6 mm), 6000 x 4000
+        # "The Fujifilm X-T50 Review" (Live View on Medium), its list of Fujifilm's specifications, kept in
+        # issue-truck/issue-truck.github.io _posts/2024-05-16-TheFujifilmX-T50Review.md.
+        ("fujifilm-x-t50", 23.5, 15.7, (7728, 5152)),  # Sensor Size 23.5mm x 15.7mm; Image Size 7728 x 5152
         # Camera Sensor Database (EmberLightVFX/Camera-Sensor-Database, data/markdown/<maker>/<model>.md).
         ("sony-venice-2-8k", 35.94, 23.96, (8640, 5760)),  # sony/venice28k.md: 8.6K 3:2 FF
         ("red-komodo-6k", 27.03, 14.26, (6144, 3240)),  # red/komodo6kog.md: 6K 17:9
@@ -156,6 +159,8 @@ def test_every_reference_sensor_is_shipped_with_its_size():
         ("m43", 21.6400, 1.9994),  # 17.3 x 13.0 mm
         ("1in", 15.8644, 2.7273),  # 13.2 x 8.8 mm
         ("gfx", 54.7800, 0.7898),  # 43.8 x 32.9 mm
+        # 24 x 16 mm (DPReview, Sigma SD1 Merrill); lensfun slr-sigma.xml gives the SD1 Merrill 1.500.
+        ("foveon-merrill", 28.8444, 1.5000),
     ],
 )
 def test_sensor_diagonal_and_crop(name, diagonal_mm, crop):
