@@ -64,6 +64,10 @@ def test_pixels_are_square_and_of_a_plausible_size():
         ("arri-alexa-mini", 8.25),
         ("arri-alexa-mini-lf", 8.25),
         ("arri-alexa-265", 8.25),
+        # slashcam.de, "Der Sensor der Sony FX3 - Rolling Shutter und Debayering": 8.40 um sensels.
+        ("sony-fx3", 8.40),
+        # NiYien/telemetry-parser src/blackmagic/mod.rs: Pocket Cinema Camera 6K pixel pitch 3.759 um.
+        ("blackmagic-pocket-6k", 3.759),
     ],
 )
 def test_pixel_pitch_against_published_values(camera, pitch_um):
