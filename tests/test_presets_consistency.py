@@ -248,6 +248,23 @@ def test_close_focus_against_the_cited_pages(lens_id, focal, distance, magnifica
     assert row.get("max_magnification") == magnification
 
 
+# (lens, smallest aperture) as the page cited in each entry's source or notes gives it; the figure
+# is checked whether or not the entry's other figures are confirmed.
+CITED_F_NUMBER_MAX = [
+    # Smart Photography review of the Tamron A036 (pressreader.com, April 2020): f/2.8-22 throughout.
+    ("tamron-28-75mm-f2.8-di-iii-rxd", 22),
+    # Leica's description as reproduced by lavidaleica.com: aperture range 1.4 - 16 (1/2 steps).
+    ("leica-summilux-m-50mm-f1.4-asph", 16),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "f_number_max"), CITED_F_NUMBER_MAX)
+def test_smallest_aperture_against_the_cited_pages(lens_id, f_number_max):
+    record = next(r for r in lens_records() if r["id"] == lens_id)
+    assert record["f_number_max"] == f_number_max
+    assert load_db().lens(lens_id).f_number_max == f_number_max
+
+
 # --- crop factor against lensfun's ----------------------------------------------------------
 
 # lensfun's <cropfactor> for shipped bodies, from lensfun's data/db/*.xml (lensfun/lensfun on
