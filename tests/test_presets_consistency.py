@@ -149,6 +149,7 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sony-fe-70-200mm-f2.8-gm-oss-ii", 200.0), ("nikon-z-180-600mm-f5.6-6.3-vr", 600.0),
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 600.0),
     ("canon-rf-24-105mm-f2.8l-is-usm-z", 105.0), ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50.0),
+    ("sony-fe-28-70mm-f2-gm", 70.0), ("tamron-70-180mm-f2.8-di-iii-vxd", 180.0),
 }
 
 
@@ -258,6 +259,10 @@ CITED_CLOSE_FOCUS = [
     # Phototrend: 12.1 cm and 0.36x at 18 mm, 30 cm and 0.2x at 50 mm.
     ("sigma-18-50mm-f2.8-dc-dn-contemporary", 18, 121, 0.36),
     ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50, 300, 0.2),
+    # Shutterbug News / Galaxus: 38 cm, 0.23x.
+    ("sony-fe-28-70mm-f2-gm", 28, 380, None), ("sony-fe-28-70mm-f2-gm", 70, 380, 0.23),
+    # Fstoppers / Photozone: 27 cm and 1:2 at 70 mm (manual focus), 0.85 m and 1:4.6 at 180 mm.
+    ("tamron-70-180mm-f2.8-di-iii-vxd", 70, 270, 0.5), ("tamron-70-180mm-f2.8-di-iii-vxd", 180, 850, 0.217),
 ]
 
 
