@@ -141,6 +141,7 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sony-fe-85mm-f1.8", 85.0), ("fujifilm-xf23mm-f2-r-wr", 23.0), ("fujifilm-xf56mm-f1.2-r-wr", 56.0),
     ("fujifilm-gf110mm-f2-r-lm-wr", 110.0), ("hasselblad-xcd-45mm-f3.5", 45.0),
     ("canon-rf-85mm-f2-macro-is-stm", 85.0),
+    ("nikon-z-28mm-f2.8", 28.0), ("nikon-z-40mm-f2", 40.0), ("sony-fe-50mm-f2.5-g", 50.0),
     # super-telephotos
     ("canon-rf-600mm-f4l-is-usm", 600.0), ("canon-rf-800mm-f11-is-stm", 800.0), ("nikon-z-600mm-f6.3-vr-s", 600.0),
     ("nikon-z-400mm-f2.8-tc-vr-s", 400.0), ("sony-fe-600mm-f4-gm-oss", 600.0), ("sony-fe-400mm-f2.8-gm-oss", 400.0),
@@ -151,6 +152,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-rf-24-105mm-f4l-is-usm", 105.0), ("nikon-z-24-70mm-f2.8-s", 70.0),
     ("sony-fe-70-200mm-f2.8-gm-oss-ii", 200.0), ("nikon-z-180-600mm-f5.6-6.3-vr", 600.0),
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 600.0),
+    ("canon-rf-24-105mm-f2.8l-is-usm-z", 105.0), ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50.0),
+    ("sony-fe-28-70mm-f2-gm", 70.0), ("tamron-70-180mm-f2.8-di-iii-vxd", 180.0),
 }
 
 
@@ -233,6 +236,37 @@ CITED_CLOSE_FOCUS = [
     ("panasonic-lumix-s-24-105mm-f4-macro-ois", 105, 300, 0.5),
     # Photography Life announcement: 0.28 m, 0.21x.
     ("canon-rf-15-35mm-f2.8l-is-usm", 15, 280, None), ("canon-rf-15-35mm-f2.8l-is-usm", 35, 280, 0.21),
+    # The Phoblographer (Canon's table): 0.25 m and 0.11x at 16 mm, 0.2 m and 0.26x at 28 mm.
+    ("canon-rf-16-28mm-f2.8-is-stm", 16, 250, 0.11), ("canon-rf-16-28mm-f2.8-is-stm", 28, 200, 0.26),
+    # Photography Life announcement: 45 cm; 0.08x at 24 mm, 0.29x at 105 mm.
+    ("canon-rf-24-105mm-f2.8l-is-usm-z", 24, 450, 0.08), ("canon-rf-24-105mm-f2.8l-is-usm-z", 105, 450, 0.29),
+    # Camera Jabber: 0.88 m, 0.41x.
+    ("canon-rf-100-400mm-f5.6-8-is-usm", 100, 880, None), ("canon-rf-100-400mm-f5.6-8-is-usm", 400, 880, 0.41),
+    # Photography Life announcement: 0.25 m, 0.15x.
+    ("nikon-z-24mm-f1.8-s", 24, 250, 0.15),
+    # PetaPixel: 0.19 m, 0.2x.
+    ("nikon-z-28mm-f2.8", 28, 190, 0.2),
+    # Photography Life announcement: 0.29 m, 0.17x (1:5.9).
+    ("nikon-z-40mm-f2", 40, 290, 0.17),
+    # Digital Camera World / Photography Life reviews: 0.45 m, 0.15x.
+    ("nikon-z-50mm-f1.2-s", 50, 450, 0.15),
+    # Bright Publishing 'First test': 19 cm at 28 mm (0.34x), 22 cm at 50 mm, 39 cm at 75 mm.
+    ("nikon-z-28-75mm-f2.8", 28, 190, 0.34), ("nikon-z-28-75mm-f2.8", 50, 220, None),
+    ("nikon-z-28-75mm-f2.8", 75, 390, None),
+    # PetaPixel via todayschronic.com / PRONEWS: 0.18 m at 24 mm, 0.29 m at 50 mm (manual focus).
+    ("sony-fe-24-50mm-f2.8-g", 24, 180, None), ("sony-fe-24-50mm-f2.8-g", 50, 290, None),
+    # Alpha Shooters: 350 mm, 0.18x (autofocus).
+    ("sony-fe-50mm-f2.5-g", 50, 350, 0.18),
+    # DPReview field review: 0.83 m over the range, 0.33x at the tele end.
+    ("fujifilm-xf70-300mm-f4-5.6-r-lm-ois-wr", 70, 830, None),
+    ("fujifilm-xf70-300mm-f4-5.6-r-lm-ois-wr", 300, 830, 0.33),
+    # Phototrend: 12.1 cm and 0.36x at 18 mm, 30 cm and 0.2x at 50 mm.
+    ("sigma-18-50mm-f2.8-dc-dn-contemporary", 18, 121, 0.36),
+    ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50, 300, 0.2),
+    # Shutterbug News / Galaxus: 38 cm, 0.23x.
+    ("sony-fe-28-70mm-f2-gm", 28, 380, None), ("sony-fe-28-70mm-f2-gm", 70, 380, 0.23),
+    # Fstoppers / Photozone: 27 cm and 1:2 at 70 mm (manual focus), 0.85 m and 1:4.6 at 180 mm.
+    ("tamron-70-180mm-f2.8-di-iii-vxd", 70, 270, 0.5), ("tamron-70-180mm-f2.8-di-iii-vxd", 180, 850, 0.217),
 ]
 
 
