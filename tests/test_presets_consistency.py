@@ -130,7 +130,13 @@ def test_every_phone_has_every_rear_module():
         # Google Pixel 4 tech specs (MySmartPrice): 12 MP 77 deg, 16 MP telephoto 52 deg.
         ("google-pixel-4-main", 77.0, 0.005),
         ("google-pixel-4-telephoto", 52.0, 0.005),
-        # Google Pixel 8 Pro tech specs: wide 82 deg, ultrawide 125.5 deg, telephoto 21.8 deg.
+        # Google's Pixel 9 Pro list as printed by Livemint: wide 82 deg, ultrawide 123 deg
+        # (1/2.55" sensor), telephoto 22 deg.
+        ("google-pixel-9-pro-main", 82.0, 0.005),
+        ("google-pixel-9-pro-ultrawide", 123.0, 0.005),
+        ("google-pixel-9-pro-telephoto", 22.0, 0.005),
+        # Google Pixel 8 Pro tech specs: wide 82 deg, ultrawide 125.5 deg (also in Neowin's print of
+        # the spec sheet), telephoto 21.8 deg.
         ("google-pixel-8-pro-main", 82.0, 0.005),
         ("google-pixel-8-pro-ultrawide", 125.5, 0.005),
         ("google-pixel-8-pro-telephoto", 21.8, 0.005),
@@ -142,6 +148,13 @@ def test_every_phone_has_every_rear_module():
         # Apple iPhone 15 Pro technical specifications: ultra wide "13 mm ... 120 deg field of view"
         # (focal length from the 13 mm equivalent).
         ("apple-iphone-15-pro-ultra-wide", 120.0, 0.02),
+        # Apple iPhone 16 Pro list: ultra wide 13 mm and 120 deg, telephoto 120 mm and 20 deg; iPhone
+        # 17 Pro: ultra wide 13 mm and 120 deg (focal lengths from the stated equivalents).
+        ("apple-iphone-16-pro-ultra-wide", 120.0, 0.02),
+        ("apple-iphone-16-pro-telephoto", 20.0, 0.03),
+        ("apple-iphone-17-pro-ultra-wide", 120.0, 0.02),
+        # Phonesaaz's Galaxy S24 Ultra list: ultra wide 120 deg.
+        ("samsung-galaxy-s24-ultra-ultra-wide", 120.0, 0.005),
         # GSMArena's Nothing Phone (1) spec list: ultra wide 114 deg.
         ("nothing-phone-1-ultra-wide", 114.0, 0.005),
     ],
