@@ -58,8 +58,15 @@ def test_pixels_are_square_and_of_a_plausible_size():
         ("apple-iphone-16-pro", 1.22),
         ("apple-iphone-17-pro", 1.22),
         # Samsung ISOCELL HP2 (Galaxy S23/S24/S25 Ultra main): 0.6 um.
+        # Samsung's HP2 release as printed by Devdiscourse (2023-01-17): "0.6-micrometer (um) pixels".
+        ("samsung-galaxy-s23-ultra", 0.6),
         ("samsung-galaxy-s24-ultra", 0.6),
         ("samsung-galaxy-s25-ultra", 0.6),
+        # Wikipedia, Pixel 4: rear camera "Sony Exmor IMX363 12.2MP (1.4um)".
+        ("google-pixel-4", 1.4),
+        # Nothing Phone (1): Sony IMX766, 1.0 um (GSMArena's spec list in the LineageOS device tree
+        # README; Sparrows News: IMX766 "1/1.56-inch ... 1.0um").
+        ("nothing-phone-1", 1.0),
         # ARRI ALEV III (ALEXA Mini, Mini LF, LF, 265) photosites are 8.25 um.
         ("arri-alexa-mini", 8.25),
         ("arri-alexa-mini-lf", 8.25),
@@ -94,7 +101,11 @@ def test_phone_equivalent_focal_length_matches_its_sensor():
 
 def test_every_phone_has_every_rear_module():
     names = {record["id"] for record in lens_records()}
-    for phone, modules in {
+    rear_modules = {
+        "google-pixel-3": ("main",),
+        "google-pixel-4": ("main", "telephoto"),
+        "apple-iphone-15-pro": ("main", "ultra-wide", "telephoto"),
+        "nothing-phone-1": ("main", "ultra-wide"),
         "apple-iphone-16-pro": ("main", "ultra-wide", "telephoto"),
         "apple-iphone-17-pro": ("main", "ultra-wide", "telephoto"),
         "google-pixel-8-pro": ("main", "ultrawide", "telephoto"),
@@ -103,9 +114,60 @@ def test_every_phone_has_every_rear_module():
         "samsung-galaxy-s23-ultra": ("main", "ultra-wide", "3x", "10x"),
         "samsung-galaxy-s24-ultra": ("main", "ultra-wide", "3x", "5x"),
         "samsung-galaxy-s25-ultra": ("main", "ultra-wide", "3x", "5x"),
-    }.items():
+    }
+    # Every shipped phone is listed, so a new phone cannot ship without its modules.
+    phones = {camera.id for camera in load_db().all("camera") if camera.category == "phone"}
+    assert phones == set(rear_modules)
+    for phone, modules in rear_modules.items():
         for module in modules:
             assert f"{phone}-{module}" in names, (phone, module)
+
+
+@pytest.mark.parametrize(
+    ("lens_id", "fov_deg", "rel"),
+    [
+        # Diagonal fields of view the makers state. A module whose focal length is derived from it
+        # must give it back exactly; one whose focal length has another origin (image files, a
+        # stated equivalent) is held to the tolerance given.
+        # Google Pixel 3 tech specs: 76 deg (focal length from its image files).
+        ("google-pixel-3-main", 76.0, 0.02),
+        # Google Pixel 4 tech specs (MySmartPrice): 12 MP 77 deg, 16 MP telephoto 52 deg.
+        ("google-pixel-4-main", 77.0, 0.005),
+        ("google-pixel-4-telephoto", 52.0, 0.005),
+        # Google's Pixel 9 Pro list as printed by Livemint: wide 82 deg, ultrawide 123 deg
+        # (1/2.55" sensor), telephoto 22 deg.
+        ("google-pixel-9-pro-main", 82.0, 0.005),
+        ("google-pixel-9-pro-ultrawide", 123.0, 0.005),
+        ("google-pixel-9-pro-telephoto", 22.0, 0.005),
+        # Google Pixel 8 Pro tech specs: wide 82 deg, ultrawide 125.5 deg (also in Neowin's print of
+        # the spec sheet), telephoto 21.8 deg.
+        ("google-pixel-8-pro-main", 82.0, 0.005),
+        ("google-pixel-8-pro-ultrawide", 125.5, 0.005),
+        ("google-pixel-8-pro-telephoto", 21.8, 0.005),
+        # Samsung Galaxy S23 Ultra specifications: 85, 120, 36 and 11 deg.
+        ("samsung-galaxy-s23-ultra-main", 85.0, 0.005),
+        ("samsung-galaxy-s23-ultra-ultra-wide", 120.0, 0.005),
+        ("samsung-galaxy-s23-ultra-3x", 36.0, 0.005),
+        ("samsung-galaxy-s23-ultra-10x", 11.0, 0.005),
+        # Apple iPhone 15 Pro technical specifications: ultra wide "13 mm ... 120 deg field of view"
+        # (focal length from the 13 mm equivalent).
+        ("apple-iphone-15-pro-ultra-wide", 120.0, 0.02),
+        # Apple iPhone 16 Pro list: ultra wide 13 mm and 120 deg, telephoto 120 mm and 20 deg; iPhone
+        # 17 Pro: ultra wide 13 mm and 120 deg (focal lengths from the stated equivalents).
+        ("apple-iphone-16-pro-ultra-wide", 120.0, 0.02),
+        ("apple-iphone-16-pro-telephoto", 20.0, 0.03),
+        ("apple-iphone-17-pro-ultra-wide", 120.0, 0.02),
+        # Phonesaaz's Galaxy S24 Ultra list: ultra wide 120 deg.
+        ("samsung-galaxy-s24-ultra-ultra-wide", 120.0, 0.005),
+        # GSMArena's Nothing Phone (1) spec list: ultra wide 114 deg.
+        ("nothing-phone-1-ultra-wide", 114.0, 0.005),
+    ],
+)
+def test_phone_field_of_view_against_the_stated_figure(lens_id, fov_deg, rel):
+    record = next(r for r in lens_records() if r["id"] == lens_id)
+    diagonal = load_db().sensor(record["sensor"]).diagonal_mm
+    computed = math.degrees(2.0 * math.atan(diagonal / (2.0 * record["focal_length_mm"])))
+    assert computed == pytest.approx(fov_deg, rel=rel)
 
 
 # --- closest focus against maximum magnification --------------------------------------------
