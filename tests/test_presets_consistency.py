@@ -222,7 +222,9 @@ SHORTER_AT_CLOSE_FOCUS = {
 def close_focus_pairs():
     """(lens id, focal length, closest focus, magnification) wherever a source pairs the two figures."""
     for record in lens_records():
-        if record.get("category") == "phone" or "prescription" in record:
+        # The design lenses (with a prescription) publish no closest focus; a retail lens with a
+        # prescription keeps its maker's figures and is checked like any other.
+        if record.get("category") == "phone":
             continue
         if "close_focus" in record:
             for row in record["close_focus"]:
