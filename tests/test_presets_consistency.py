@@ -229,6 +229,8 @@ CITED_CLOSE_FOCUS = [
     ("panasonic-lumix-s-24-105mm-f4-macro-ois", 105, 300, 0.5),
     # Photography Life announcement: 0.28 m, 0.21x.
     ("canon-rf-15-35mm-f2.8l-is-usm", 15, 280, None), ("canon-rf-15-35mm-f2.8l-is-usm", 35, 280, 0.21),
+    # Test Materiel (testmateriel.com) review: 0,45 m, 0,29x (one closest focus for the zoom).
+    ("sony-e-18-135mm-f3.5-5.6-oss", 18, 450, None), ("sony-e-18-135mm-f3.5-5.6-oss", 135, 450, 0.29),
 ]
 
 
@@ -242,6 +244,33 @@ def test_close_focus_against_the_cited_pages(lens_id, focal, distance, magnifica
     row = next(r for r in rows if r["focal_length_mm"] == focal)
     assert row["min_focus_mm"] == distance
     assert row.get("max_magnification") == magnification
+
+
+# (lens, smallest aperture) as the page named in each entry's notes or source gives it; for a
+# variable-aperture zoom the figure at the short end, like f_number_min.
+CITED_F_NUMBER_MAX = [
+    # Amateur Photographer's RF 50mm F1.8 STM review (pressreader.com copy): minimum aperture of f/22.
+    ("canon-rf-50mm-f1.8-stm", 22),
+    # Digital Camera World, RF 800mm f/11 IS STM review: fixed f/11 aperture.
+    ("canon-rf-800mm-f11-is-stm", 11),
+    # theartofphotography.tv, NIKKOR Z 50mm f/1.8 S spec list: f/1.8 to f/16 aperture range.
+    ("nikon-z-50mm-f1.8-s", 16),
+    # Photography Life's Z 24-70mm f/2.8 S / S II table (onlinenews24-7.com copy): aperture range f/2.8-22.
+    ("nikon-z-24-70mm-f2.8-s", 22),
+    # desnoulez.fr field test of the Z MC 50mm f/2.8: f/2.8-f/22 at infinity.
+    ("nikon-z-mc-50mm-f2.8", 22),
+    # Wikipedia infobox, Sony FE 200-600mm F5.6-6.3 G OSS: aperture 5.6 (32.0) - 6.3 (36.0).
+    ("sony-fe-200-600mm-f5.6-6.3-g-oss", 32),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "smallest"), CITED_F_NUMBER_MAX)
+def test_smallest_aperture_against_the_cited_pages(lens_id, smallest):
+    record = next(r for r in lens_records() if r["id"] == lens_id)
+    assert record["f_number_max"] == smallest
+    # The entry names the confirmation and its page, so the figure can be traced.
+    cited = " ".join((record.get("source", ""), record.get("notes", "")))
+    assert f"f_number_max f/{smallest:g} confirmed" in cited, lens_id
 
 
 # --- crop factor against lensfun's ----------------------------------------------------------
