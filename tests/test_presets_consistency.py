@@ -261,6 +261,12 @@ CITED_F_NUMBER_MAX = [
     ("nikon-z-mc-50mm-f2.8", 22),
     # Wikipedia infobox, Sony FE 200-600mm F5.6-6.3 G OSS: aperture 5.6 (32.0) - 6.3 (36.0).
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 32),
+    # Wikipedia infobox, Canon MP-E 65mm f/2.8 1-5x Macro: aperture f/2.8-f/16.
+    ("canon-mp-e-65mm-f2.8-1-5x-macro", 16),
+    # Photo Review, AF-S Nikkor 50mm f/1.8G: the minimum aperture is f/16.
+    ("nikon-af-s-50mm-f1.8g", 16),
+    # PConline's Z 70-200mm f/2.8 VR S review: f/22, the smallest aperture (tested at 70 and 200 mm).
+    ("nikon-z-70-200mm-f2.8-vr-s", 22),
 ]
 
 
