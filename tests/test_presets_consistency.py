@@ -267,6 +267,12 @@ CITED_F_NUMBER_MAX = [
     ("nikon-af-s-50mm-f1.8g", 16),
     # PConline's Z 70-200mm f/2.8 VR S review: f/22, the smallest aperture (tested at 70 and 200 mm).
     ("nikon-z-70-200mm-f2.8-vr-s", 22),
+    # zsystemuser.com's Z MC 105mm review: the minimum aperture is f/32 (digitalkamera.de: f/2.8 to f/32).
+    ("nikon-z-mc-105mm-f2.8-vr-s", 32),
+    # Photography Life's Z 24-70mm f/4 S review (French copy at photo-secret.net): f/4 to f/22.
+    ("nikon-z-24-70mm-f4-s", 22),
+    # Digital Camera World, RF 100-500mm review: minimum aperture f/32-54 (f/32 at 100 mm).
+    ("canon-rf-100-500mm-f4.5-7.1l-is-usm", 32),
 ]
 
 
