@@ -331,6 +331,8 @@ CITED_CLOSE_FOCUS = [
     ("sony-fe-28-70mm-f2-gm", 28, 380, None), ("sony-fe-28-70mm-f2-gm", 70, 380, 0.23),
     # Fstoppers / Photozone: 27 cm and 1:2 at 70 mm (manual focus), 0.85 m and 1:4.6 at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vxd", 70, 270, 0.5), ("tamron-70-180mm-f2.8-di-iii-vxd", 180, 850, 0.217),
+    # Test Materiel (testmateriel.com) review: 0,45 m, 0,29x (one closest focus for the zoom).
+    ("sony-e-18-135mm-f3.5-5.6-oss", 18, 450, None), ("sony-e-18-135mm-f3.5-5.6-oss", 135, 450, 0.29),
 ]
 
 
@@ -346,9 +348,34 @@ def test_close_focus_against_the_cited_pages(lens_id, focal, distance, magnifica
     assert row.get("max_magnification") == magnification
 
 
-# (lens, smallest aperture) as the page cited in each entry's source or notes gives it; the figure
-# is checked whether or not the entry's other figures are confirmed.
+# (lens, smallest aperture) as the page named in each entry's source or notes gives it, checked whether
+# or not the entry's other figures are confirmed; for a variable-aperture zoom the figure at the short
+# end, like f_number_min.
 CITED_F_NUMBER_MAX = [
+    # Amateur Photographer's RF 50mm F1.8 STM review (pressreader.com copy): minimum aperture of f/22.
+    ("canon-rf-50mm-f1.8-stm", 22),
+    # Digital Camera World, RF 800mm f/11 IS STM review: fixed f/11 aperture.
+    ("canon-rf-800mm-f11-is-stm", 11),
+    # theartofphotography.tv, NIKKOR Z 50mm f/1.8 S spec list: f/1.8 to f/16 aperture range.
+    ("nikon-z-50mm-f1.8-s", 16),
+    # Photography Life's Z 24-70mm f/2.8 S / S II table (onlinenews24-7.com copy): aperture range f/2.8-22.
+    ("nikon-z-24-70mm-f2.8-s", 22),
+    # desnoulez.fr field test of the Z MC 50mm f/2.8: f/2.8-f/22 at infinity.
+    ("nikon-z-mc-50mm-f2.8", 22),
+    # Wikipedia infobox, Sony FE 200-600mm F5.6-6.3 G OSS: aperture 5.6 (32.0) - 6.3 (36.0).
+    ("sony-fe-200-600mm-f5.6-6.3-g-oss", 32),
+    # Wikipedia infobox, Canon MP-E 65mm f/2.8 1-5x Macro: aperture f/2.8-f/16.
+    ("canon-mp-e-65mm-f2.8-1-5x-macro", 16),
+    # Photo Review, AF-S Nikkor 50mm f/1.8G: the minimum aperture is f/16.
+    ("nikon-af-s-50mm-f1.8g", 16),
+    # PConline's Z 70-200mm f/2.8 VR S review: f/22, the smallest aperture (tested at 70 and 200 mm).
+    ("nikon-z-70-200mm-f2.8-vr-s", 22),
+    # zsystemuser.com's Z MC 105mm review: the minimum aperture is f/32 (digitalkamera.de: f/2.8 to f/32).
+    ("nikon-z-mc-105mm-f2.8-vr-s", 32),
+    # Photography Life's Z 24-70mm f/4 S review (French copy at photo-secret.net): f/4 to f/22.
+    ("nikon-z-24-70mm-f4-s", 22),
+    # Digital Camera World, RF 100-500mm review: minimum aperture f/32-54 (f/32 at 100 mm).
+    ("canon-rf-100-500mm-f4.5-7.1l-is-usm", 32),
     # Smart Photography review of the Tamron A036 (pressreader.com, April 2020): f/2.8-22 throughout.
     ("tamron-28-75mm-f2.8-di-iii-rxd", 22),
     # Leica's description as reproduced by lavidaleica.com: aperture range 1.4 - 16 (1/2 steps).

@@ -27,7 +27,7 @@ PATENTS: dict[str, dict[str, Any]] = {
     # close-focus state: d19 16.11, object 274.83 mm in front of surface 1 (400 mm from the
     # image), magnification -0.19. Printed to 0.01 mm and 0.01.
     "canon-rf50-f1.2": {
-        "lens": "canon-rf-50mm-f1.2l-usm", "efl": 51.10, "f_number": 1.25, "total": 111.01,
+        "lens": "canon-rf-50mm-f1.2l-usm", "design": "canon-rf-50mm-f1.2l-usm-patent", "efl": 51.10, "f_number": 1.25, "total": 111.01,
         "back_focus": 14.60, "last_lens_surface": 25, "tol": 0.005,
         "close_gaps": {19: 16.11}, "close_object": 274.83, "close_m": -0.19, "close_m_tol": 0.005,
         "close_image": 14.60, "nominal_mm": 50.0,
@@ -36,7 +36,7 @@ PATENTS: dict[str, dict[str, Any]] = {
     # 1.6 mm filter plate included), BFa 12.554, TL 92.330; close-focus state: D12 2.409,
     # D19 14.267, D0 307.67 (400 mm from the image), beta -0.1565, D26 1.000.
     "nikon-z50-f1.8": {
-        "lens": "nikon-z-50mm-f1.8-s", "efl": 51.60, "f_number": 1.85, "total": 92.330,
+        "lens": "nikon-z-50mm-f1.8-s", "design": "nikon-z-50mm-f1.8-s-patent", "efl": 51.60, "f_number": 1.85, "total": 92.330,
         "back_focus": 13.100, "back_focus_air": 12.554, "last_lens_surface": 24, "tol": 0.0005,
         "close_gaps": {12: 2.409, 19: 14.267}, "close_object": 307.67, "close_m": -0.1565,
         "close_m_tol": 0.00005, "close_image": 1.000, "nominal_mm": 50.0,
@@ -108,15 +108,26 @@ def test_focal_length_matches_the_makers_nominal_one(pid):
 
 @pytest.mark.parametrize("pid", sorted(PATENTS))
 def test_preset_pupil_magnification_and_hiatus_are_the_prescriptions(pid):
-    preset = load_db().lens(PATENTS[pid]["lens"])
-    fo = first_order(preset.prescription)
-    assert preset.prescription_id == pid
+    # The lens as sold carries the patent design's P and δ (at infinity focus) for the thick model,
+    # and keeps its own focal length and internal-focus model; the design preset carries the prescription.
+    patent = PATENTS[pid]
+    preset, design = load_db().lens(patent["lens"]), load_db().lens(patent["design"])
+    assert preset.prescription is None and design.prescription_id == pid
+    fo = first_order(design.prescription)
     assert preset.pupil_magnification == pytest.approx(fo.pupil_magnification, abs=0.0005)
     assert preset.hiatus_mm == pytest.approx(fo.hiatus_mm, abs=0.005)
+    assert design.focal_length_mm == pytest.approx(fo.efl_mm, rel=1e-12)
+    assert design.f_number_min == patent["f_number"]
+
+
+def test_the_canon_close_focus_magnification_is_the_patents():
+    # US 2019/0265441 A1 example 2 states -0.19 at its close-focus state, 400 mm from the image.
+    assert load_db().lens("canon-rf-50mm-f1.2l-usm").max_magnification == pytest.approx(-close_state("canon-rf50-f1.2")[0],
+                                                                                         abs=0.005)
 
 
 # Unit extension against the patent's own focusing, at the closest focus (0.4 m from the
-# sensor): the relative differences the presets' notes state (-4 % and +23 %).
+# sensor): the relative differences the design presets' notes state (-4 % and +23 %).
 @pytest.mark.parametrize(("pid", "stated"), [("canon-rf50-f1.2", -0.04), ("nikon-z50-f1.8", 0.23)])
 def test_unit_extension_close_focus_difference_is_the_one_the_notes_state(pid, stated):
     patent = PATENTS[pid]
@@ -124,25 +135,37 @@ def test_unit_extension_close_focus_difference_is_the_one_the_notes_state(pid, s
     unit = real_focus(lens, patent["f_number"], 400.0).magnification
     patent_m = -close_state(pid)[0]
     assert (unit / patent_m - 1.0) == pytest.approx(stated, abs=0.005)
-    notes = load_db().lens(patent["lens"]).notes
+    notes = load_db().lens(patent["design"]).notes
     assert f"{round(abs(stated) * 100):d} %" in notes and f"{unit:.3f}x" in notes
 
 
 @pytest.mark.parametrize("pid", sorted(PATENTS))
-@pytest.mark.parametrize("model", ["raytrace", "thick", "paraxial"])
-def test_dof_runs_with_the_retail_lens(pid, model):
-    lens_id = PATENTS[pid]["lens"]
+@pytest.mark.parametrize("model", ["raytrace", "paraxial", "auto"])
+def test_dof_runs_with_the_patent_design(pid, model):
+    design = PATENTS[pid]["design"]
     efl = first_order(optics(pid)).efl_mm
-    rows = run_json("dof", "--lens", lens_id, "-N", "2", "-s", "3m", "--model", model)
+    rows = run_json("dof", "--lens", design, "-N", "2", "-s", "3m", "--model", model)
     assert len(rows) == 1
     row = rows[0]
-    assert row["model"] == model
-    # The lens computes with the patent example's focal length, not the rounded nominal one.
+    assert model == "auto" or row["model"] == model
+    # The design computes with the patent example's focal length.
     assert row["focal_length_mm"] == pytest.approx(efl, rel=1e-12)
     assert 2000.0 < row["near_mm"] < 3000.0 < row["far_mm"] < 4000.0
-    # Typing the nominal focal length is the same lens.
-    again = run_json("dof", "--lens", lens_id, "-f", "50", "-N", "2", "-s", "3m", "--model", model)
-    assert again == rows
+
+
+@pytest.mark.parametrize("pid", sorted(PATENTS))
+def test_the_lens_as_sold_uses_the_patents_pupils_in_the_thick_model(pid):
+    # thick with the preset's P and δ equals thick with the same values typed by hand, and differs
+    # from the thin lens (P = 1, δ = 0) by the pupil terms
+    lens = PATENTS[pid]["lens"]
+    preset = load_db().lens(lens)
+    (row,) = run_json("dof", "--lens", lens, "-N", "2", "-s", "3m", "--model", "thick", "--coc", "0.03")
+    (typed,) = run_json("dof", "-f", "50", "-N", "2", "-s", "3m", "--model", "thick", "--coc", "0.03",
+                        "--pupil-mag", str(preset.pupil_magnification), "--hiatus", str(preset.hiatus_mm),
+                        "--lens", lens)
+    assert row == typed
+    (thin,) = run_json("dof", "--lens", lens, "-N", "2", "-s", "3m", "--model", "thin", "--coc", "0.03")
+    assert row["near_mm"] != pytest.approx(thin["near_mm"], rel=1e-6)
 
 
 def test_a_focal_length_the_retail_lens_does_not_have_is_still_refused():

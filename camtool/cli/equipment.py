@@ -273,11 +273,6 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
                         else f"{lens.focal_min_mm:g} mm")
                 raise click.BadParameter(f"{f:g} mm is outside the valid range of --lens {lens.id}: {span}",
                                          ctx=ctx, param=param_named(ctx, "focal_length"))
-        if getattr(lens, "prescription", None) is not None and "prescription_file" in params \
-                and not params.get("prescription_file"):
-            # A retail lens's prescription is a patent example whose focal length the maker rounds
-            # (51.1 mm for a "50 mm"): the models compute with the prescription's paraxial one.
-            params["focal_length"] = []
     else:
         focal = [lens.focal_min_mm]
     for n in flatten(params.get("f_number")):
