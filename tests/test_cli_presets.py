@@ -150,3 +150,40 @@ def test_presets_list_and_show_films(tmp_path: Path) -> None:
     assert table.exit_code == 0 and "100 s +1 EV" in table.stdout
     assert run("presets", "list", "--kind", "film").stdout.splitlines()[-1] == f"{len(shipped)} presets"
     assert run("presets", "list", "--search", "ektar").stdout.splitlines()[-1] == "1 preset"
+
+
+def test_a_phone_module_brings_its_own_sensor() -> None:
+    # A fixed (phone) lens is made for its own format: without --sensor it is used, even beside the
+    # phone's --camera preset, whose sensor is the main module's. Angle of view from the module's
+    # focal length and its sensor preset's diagonal, 2·atan(d / 2f), read here from the presets.
+    import yaml
+
+    root = Path(__file__).resolve().parents[1] / "lens_db"
+    lenses = {e["id"]: e for e in yaml.safe_load((root / "lenses.yaml").read_text())["lenses"]}
+    sensors = {e["id"]: e for e in yaml.safe_load((root / "sensors.yaml").read_text())["sensors"]}
+    for module, camera in (("apple-iphone-16-pro-main", None), ("apple-iphone-16-pro-ultra-wide", "apple-iphone-16-pro")):
+        lens = lenses[module]
+        sensor = sensors[lens["sensor"]]
+        diagonal = math.hypot(sensor["width_mm"], sensor["height_mm"])
+        args = ["fov", "--lens", module, *(["--camera", camera] if camera else [])]
+        (row,) = run_json(*args)
+        assert row["diagonal_deg"] == pytest.approx(math.degrees(2 * math.atan(diagonal / (2 * lens["focal_length_mm"]))))
+        assert "the lens's own format" in run(*args).stdout
+    # --sensor still wins
+    (full,) = run_json("fov", "--lens", "apple-iphone-16-pro-main", "--sensor", "full-frame")
+    assert full["diagonal_deg"] == pytest.approx(math.degrees(2 * math.atan(math.hypot(36, 24) / (2 * 6.82))), rel=1e-3)
+    # an interchangeable lens made for APS-C is on that format without a camera, on the body's with one
+    (alone,) = run_json("dof", "--lens", "fujifilm-xf35mm-f1.4-r", "-N", "2", "-s", "3")
+    assert alone["coc_mm"] == pytest.approx(math.hypot(sensors["aps-c"]["width_mm"], sensors["aps-c"]["height_mm"]) / 1500)
+    (body,) = run_json("dof", "--lens", "fujifilm-xf35mm-f1.4-r", "--camera", "fujifilm-x-t5", "-N", "2", "-s", "3",
+                       "--coc-rule", "px:1")
+    assert body["coc_mm"] == pytest.approx(23.5 / 7728)  # X-T5: 7728 px across 23.5 mm (its preset)
+    # the camera's pixel pitch is kept only when the module is the camera's own sensor (the main one)
+    (main,) = run_json("dof", "--lens", "google-pixel-3-main", "--camera", "google-pixel-3", "-N", "1.8", "-s", "2m",
+                       "--coc-rule", "px:2")
+    assert main["coc_mm"] == pytest.approx(2 * 0.0014, rel=0.01)  # Google: 1.4 µm pixels
+    wide = run("dof", "--lens", "apple-iphone-16-pro-ultra-wide", "--camera", "apple-iphone-16-pro", "-N", "2.2",
+               "-s", "2m", "--coc-rule", "px:2")
+    assert wide.exit_code == 2 and wide.stderr == (
+        "Error: Invalid value for '--coc-rule': 'px:2' needs the pixel pitch: --camera's is its main sensor's, not "
+        "this lens's; give --pixel-pitch\n")

@@ -87,7 +87,8 @@ def _preset_file_error(ctx: click.Context, error: Exception, preset_files: tuple
 def resolve_sensor(
     ctx: click.Context, sensor: str | None, crop: float | None, preset_files: tuple[str, ...] = ()
 ) -> SensorChoice:
-    """The sensor named by ``--sensor`` (preset or WxH) or ``--crop``; full frame when neither is given."""
+    """The sensor named by ``--sensor`` (preset or WxH) or ``--crop``, else a fixed lens's own format, else
+    ``--camera``'s; full frame when none is given."""
     if sensor is not None and crop is not None:
         raise click.UsageError("give --sensor or --crop, not both", ctx)
     if crop is not None:
@@ -99,6 +100,18 @@ def resolve_sensor(
         w, h = 36.0 / crop, 24.0 / crop
         return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
     camera = ctx.meta.get(CAMERA)
+    lens = ctx.meta.get(LENS)
+    fixed = getattr(lens, "sensor_id", None)
+    built_in = getattr(lens, "mount", None) == "fixed lens"
+    if sensor is None and fixed is not None and (camera is None or built_in):
+        # a lens's own format (the one it is made for) beats the full-frame default; a fixed or phone
+        # lens's beats --camera too (a phone's other modules are not on the camera preset's main
+        # sensor), while an interchangeable lens is on the body's sensor; --sensor beats both
+        own = lookup(ctx, "sensor", fixed, "lens", preset_files)
+        same = camera is not None and camera.sensor.id == own.id
+        return SensorChoice(own.width_mm, own.height_mm,
+                            f"{own.name} {own.width_mm:g} × {own.height_mm:g} mm (the lens's own format)", own.coc_mm,
+                            camera.pixel_pitch_mm if same and camera is not None else None)
     if sensor is None and camera is not None:
         body = camera.sensor
         return SensorChoice(body.width_mm, body.height_mm, f"{camera.name} ({body.width_mm:g} × {body.height_mm:g} mm)",
@@ -166,7 +179,11 @@ def resolve_coc(
     try:
         choice = coc_from_rule(rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
     except UnitError as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "coc_rule")) from None
+        text = str(error)
+        if pitch is None and ctx.meta.get(CAMERA) is not None:  # the lens's own sensor is not the camera's
+            text = text.replace("give --camera or --pixel-pitch",
+                                "--camera's is its main sensor's, not this lens's; give --pixel-pitch")
+        raise click.BadParameter(text, ctx=ctx, param=param_named(ctx, "coc_rule")) from None
     from camtool.core.ranges import COC_MM, describe
 
     if not COC_MM[0] <= choice.coc_mm <= COC_MM[1]:
