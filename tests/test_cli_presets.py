@@ -187,3 +187,12 @@ def test_a_phone_module_brings_its_own_sensor() -> None:
     assert wide.exit_code == 2 and wide.stderr == (
         "Error: Invalid value for '--coc-rule': 'px:2' needs the pixel pitch: --camera's is its main sensor's, not "
         "this lens's; give --pixel-pitch\n")
+
+
+def test_a_zoom_accepts_its_smallest_aperture_at_each_end() -> None:
+    # Sony FE 200-600mm: f/32 at 200 mm, f/36 at 600 mm (Wikipedia's infobox)
+    assert run("dof", "--lens", "sel200600g", "-f", "600", "-N", "36", "-s", "30m").exit_code == 0
+    assert run("dof", "--lens", "sel200600g", "-f", "200", "-N", "36", "-s", "30m").stderr == (
+        "Error: Invalid value for '-N' / '--f-number': f/36 is outside the valid range of --lens "
+        "sony-fe-200-600mm-f5.6-6.3-g-oss at 200 mm: f/5.6 to f/32\n")
+    assert "f/6.3 to f/36" in run("dof", "--lens", "sel200600g", "-f", "600", "-N", "40", "-s", "30m").stderr

@@ -372,3 +372,31 @@ def test_no_numpy_import():
             "db.all('scene'); assert 'numpy' not in sys.modules and 'yaml' not in sys.modules")
     subprocess.run([sys.executable, "-c", "from camtool.presets import load_db; load_db()"], check=True)
     subprocess.run([sys.executable, "-c", code], check=True)  # the warm cache needs no yaml either
+
+
+@pytest.mark.parametrize(("keys", "problem"), [
+    ("focal_length_mm: 50\n    f_number_max: 16\n    f_number_max_tele: 22",
+     "f_number_max_tele: applies only to a zoom (focal_min_mm/focal_max_mm)"),
+    ("focal_min_mm: 100\n    focal_max_mm: 400\n    f_number_max_tele: 45",
+     "f_number_max_tele: needs f_number_max and must be >= it"),
+    ("focal_min_mm: 100\n    focal_max_mm: 400\n    f_number_max: 32\n    f_number_max_tele: 22",
+     "f_number_max_tele: needs f_number_max and must be >= it"),
+    ("focal_min_mm: 100\n    focal_max_mm: 400\n    f_number_min: 5.6\n    f_number_min_tele: 40\n"
+     "    f_number_max: 32\n    f_number_max_tele: 36", "f_number_max_tele: must be >= f_number_min_tele (40)"),
+])
+def test_smallest_aperture_at_the_long_end_is_checked(isolated, keys, problem):
+    bad = _write(isolated / "z.yaml", f"lenses:\n  - id: z\n    {keys}\n")
+    problems = validate_file(bad)
+    assert len(problems) == 1 and problems[0].endswith(problem), problems
+
+
+def test_smallest_aperture_closes_towards_the_long_end():
+    # Sony FE 200-600mm: f/32 at 200 mm, f/36 at 600 mm (Wikipedia's infobox: 5.6 (32.0) - 6.3 (36.0)),
+    # linear in focal length between, like the widest aperture
+    lens = load_db().lens("sony-fe-200-600mm-f5.6-6.3-g-oss")
+    assert (lens.smallest_f_number(200), lens.smallest_f_number(600), lens.smallest_f_number(400)) == (32, 36, 34)
+    assert lens.widest_f_number(400) == pytest.approx((5.6 + 6.3) / 2)
+    # RF 100-500 f/32-54 (Digital Camera World); RF 100-400 f/32-45 (Camera Jabber)
+    assert load_db().lens("canon-rf-100-500mm-f4.5-7.1l-is-usm").smallest_f_number(500) == 54
+    assert load_db().lens("canon-rf-100-400mm-f5.6-8-is-usm").smallest_f_number(400) == 45
+    assert load_db().lens("sony-fe-85mm-f1.8").smallest_f_number(85) == 22  # a prime: its one figure

@@ -298,7 +298,7 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
             continue
         for f in focal:
             widest = lens.widest_f_number(f) or n
-            slowest = lens.f_number_max or n
+            slowest = lens.smallest_f_number(f) or n
             if not widest * 0.99 <= n <= slowest * 1.01:
                 raise click.BadParameter(
                     f"f/{n:g} is outside the valid range of --lens {lens.id} at {f:g} mm: "

@@ -301,6 +301,7 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         prescription_id=prescription.id if prescription else None,
         prescription=prescription.optics if prescription else None,
         sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
+        f_number_max_tele=r.get("f_number_max_tele"),
         approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
                           for row in r.get("close_focus", ())), t_number_min=r.get("t_number_min"),

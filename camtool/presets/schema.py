@@ -382,6 +382,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "f_number_min": positive,
         "f_number_max": positive,
         "f_number_min_tele": positive,
+        "f_number_max_tele": positive,
         "min_focus_mm": positive_mm,
         "max_magnification": positive,
         "min_magnification": positive,
@@ -536,6 +537,14 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
             return [("f_number_min_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
         if widest is None or tele < widest:
             return [("f_number_min_tele", "needs f_number_min and must be >= it")]
+    tele_smallest = record.get("f_number_max_tele")
+    if tele_smallest is not None:
+        if not has_zoom:
+            return [("f_number_max_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
+        if smallest is None or tele_smallest < smallest:
+            return [("f_number_max_tele", "needs f_number_max and must be >= it")]
+        if tele is not None and tele_smallest < tele:
+            return [("f_number_max_tele", f"must be >= f_number_min_tele ({tele:g})")]
     t_stop = record.get("t_number_min")
     if t_stop is not None and widest is not None and t_stop < widest:
         return [("t_number_min", f"a T-stop cannot be below the f-number ({widest:g})")]
@@ -769,6 +778,7 @@ class Lens:
     close_focus: tuple[tuple[float, float, float | None], ...] = ()  # (focal length, closest focus, magnification)
     t_number_min: float | None = None  # widest T-stop (cinema lenses)
     tilt_max_deg: float | None = None  # tilt range, ± degrees (tilt-shift lenses)
+    f_number_max_tele: float | None = None  # smallest aperture at the long end, where it differs
 
     kind = "lens"
 
@@ -788,6 +798,22 @@ class Lens:
     def focal_length_mm(self) -> float | None:
         """The focal length of a prime; None for a zoom."""
         return None if self.is_zoom else self.focal_min_mm
+
+    def smallest_f_number(self, focal_length_mm: float) -> float | None:
+        """The largest f-number (smallest aperture) at a focal length within the range.
+
+        A zoom whose smallest aperture closes down towards the long end
+        (``f_number_max_tele``, Sony's 200-600: f/32 at 200 mm, f/36 at 600 mm)
+        is interpolated linearly between the ends like :meth:`widest_f_number`.
+
+        >>> Lens("z", "Z", 200.0, 600.0, 5.6, 32.0, 6.3, f_number_max_tele=36.0).smallest_f_number(600.0)
+        36.0
+        """
+        if self.f_number_max is None or self.f_number_max_tele is None or not self.is_zoom:
+            return self.f_number_max
+        t = (focal_length_mm - self.focal_min_mm) / (self.focal_max_mm - self.focal_min_mm)
+        t = min(1.0, max(0.0, t))
+        return self.f_number_max + t * (self.f_number_max_tele - self.f_number_max)
 
     def widest_f_number(self, focal_length_mm: float) -> float | None:
         """The smallest f-number at a focal length within the range.
