@@ -364,28 +364,9 @@ def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, n
             "at most {limit} " + plane + " (the far limit with the lens at its farthest focus)", limit=at_hyper.far_mm)
 
     def solve(wanted: float) -> float:
-        """The m whose near limit is ``wanted`` (≤ the near limit at m_hyper), by Illinois regula falsi."""
-        a, b = m_hyper, m_max  # near(a) ≥ wanted ≥ near(b)
-        ga, gb = at_hyper.near_mm - wanted, closest.near_mm - wanted
-        side = 0
-        for _ in range(200):
-            x = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
-            if not a < x < b:
-                x = 0.5 * (a + b)
-            gx = frame(x).near_mm - wanted
-            if gx >= 0.0:  # near limit at or beyond the one wanted: x is the new outer (smaller m) end
-                a, ga = x, gx
-                if side == 1:
-                    gb *= 0.5
-                side = 1
-            else:
-                b, gb = x, gx
-                if side == -1:
-                    ga *= 0.5
-                side = -1
-            if b - a <= 1e-14 * b or ga == 0.0:
-                break
-        return a  # the near limit at a is at least the one wanted: no gap
+        """The m whose near limit is ``wanted`` (≤ the near limit at m_hyper): the near limit falls as m grows."""
+        return _outer_root(lambda m: frame(m).near_mm - wanted, m_hyper, m_max,
+                           at_hyper.near_mm - wanted, closest.near_mm - wanted, 1e-14)
 
     frames: list[BracketFrame] = []
     wanted = float(near_mm)
@@ -445,30 +426,40 @@ def _closed_inverse(f: float, k: float, model: str) -> Callable[[float], float]:
     return lambda near: near * (k - f) / (k - near)
 
 
+def _outer_root(g: Callable[[float], float], a: float, b: float, ga: float, gb: float, tol: float) -> float:
+    """The root of a falling g on [a, b] (g(a) ≥ 0 ≥ g(b)) by Illinois regula falsi, from its ``a`` side.
+
+    Returns the bracket end where g ≥ 0 once the bracket is within ``tol``
+    (relative): a near limit at least the one wanted, so frames never leave a gap.
+    """
+    side = 0
+    for _ in range(200):
+        x = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
+        if not a < x < b:
+            x = 0.5 * (a + b)
+        gx = g(x)
+        if gx >= 0.0:  # at or beyond the value wanted: x is the new outer end
+            a, ga = x, gx
+            if side == 1:
+                gb *= 0.5
+            side = 1
+        else:
+            b, gb = x, gx
+            if side == -1:
+                ga *= 0.5
+            side = -1
+        if b - a <= tol * b or ga == 0.0:
+            break
+    return a
+
+
 def _numeric_inverse(limits: Limits, f: float, hyper: float) -> Callable[[float], float]:
     """The focus u in (f, H] whose near limit is ``near``: regula falsi (Illinois) on 1/u, near rising with u."""
 
     def solve(near: float) -> float:
         a, b = 1.0 / hyper, 1.0 / (near * (1.0 + 1e-12))  # near(u = near) < near ≤ near(H)
-        ga, gb = limits(1.0 / a)[0] - near, limits(1.0 / b)[0] - near
-        side = 0
-        for _ in range(200):
-            x = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
-            if not a < x < b:
-                x = 0.5 * (a + b)
-            gx = limits(1.0 / x)[0] - near
-            if gx >= 0.0:  # near limit at or beyond the one wanted: keep as the outer end
-                a, ga = x, gx
-                if side == 1:
-                    gb *= 0.5
-                side = 1
-            else:
-                b, gb = x, gx
-                if side == -1:
-                    ga *= 0.5
-                side = -1
-            if b - a <= 1e-12 * b or ga == 0.0:
-                break
-        return max(1.0 / a, f * (1.0 + 1e-12))  # the near limit at u is at least the one wanted: no gap
+        x = _outer_root(lambda x: limits(1.0 / x)[0] - near, a, b, limits(1.0 / a)[0] - near,
+                        limits(1.0 / b)[0] - near, 1e-12)
+        return max(1.0 / x, f * (1.0 + 1e-12))  # the near limit at u is at least the one wanted: no gap
 
     return solve

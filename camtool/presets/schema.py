@@ -531,20 +531,17 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
     widest, smallest = record.get("f_number_min"), record.get("f_number_max")
     if widest is not None and smallest is not None and widest > smallest:
         return [("f_number_max", f"must be >= f_number_min ({widest:g}): f_number_min is the widest aperture")]
-    tele = record.get("f_number_min_tele")
-    if tele is not None:
+    for end, short in (("f_number_min_tele", "f_number_min"), ("f_number_max_tele", "f_number_max")):
+        value = record.get(end)
+        if value is None:
+            continue
         if not has_zoom:
-            return [("f_number_min_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
-        if widest is None or tele < widest:
-            return [("f_number_min_tele", "needs f_number_min and must be >= it")]
-    tele_smallest = record.get("f_number_max_tele")
-    if tele_smallest is not None:
-        if not has_zoom:
-            return [("f_number_max_tele", "applies only to a zoom (focal_min_mm/focal_max_mm)")]
-        if smallest is None or tele_smallest < smallest:
-            return [("f_number_max_tele", "needs f_number_max and must be >= it")]
-        if tele is not None and tele_smallest < tele:
-            return [("f_number_max_tele", f"must be >= f_number_min_tele ({tele:g})")]
+            return [(end, "applies only to a zoom (focal_min_mm/focal_max_mm)")]
+        if record.get(short) is None or value < record[short]:
+            return [(end, f"needs {short} and must be >= it")]
+    tele, tele_smallest = record.get("f_number_min_tele"), record.get("f_number_max_tele")
+    if tele is not None and tele_smallest is not None and tele_smallest < tele:
+        return [("f_number_max_tele", f"must be >= f_number_min_tele ({tele:g})")]
     t_stop = record.get("t_number_min")
     if t_stop is not None and widest is not None and t_stop < widest:
         return [("t_number_min", f"a T-stop cannot be below the f-number ({widest:g})")]
