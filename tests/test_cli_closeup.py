@@ -271,3 +271,29 @@ def test_a_focusing_lens_preset_answers_a_list_with_infinity_row_by_row() -> Non
     assert 0 < rows[0]["magnification"] < 1
     scene = CliRunner().invoke(cli, ["fov", "--scene", "landscape-24", "-s", "inf", "--format", "json"])
     assert scene.exit_code == 0 and json.loads(scene.output)[0]["magnification"] == 0.0
+
+
+@pytest.mark.parametrize("args", [
+    ["-f", "100", "-N", "8", "-m", "0.5,1"],
+    ["--lens", "ef-100-macro-l", "-N", "8", "-s", "0.5m", "--pupil-mag", "0.6"],
+    ["-N", "8", "-m", "0.5", "--prescription", "tests/data/prescriptions/dgauss100.yaml"],
+])
+def test_model_all_close_up_is_every_model_on_its_own(args):
+    # --model all with -m or a focusing lens: one row per scene and rung, the most complete rung last; each
+    # row is what `--model <that rung>` gives alone, and its difference is the vergence error against the last
+    # (camtool.dof.auto.depth_error, recomputed here from the single-model rows)
+    rows = run_json("dof", *args, "--model", "all")
+    models = list(dict.fromkeys(row["model"] for row in rows))
+    assert models[-1] in ("thin", "thick", "raytrace") and len(rows) % len(models) == 0
+    alone = {model: run_json("dof", *args, "--model", model) for model in models}
+    for i, row in enumerate(rows):
+        scene, model = divmod(i, len(models))
+        single = alone[models[model]][scene]
+        assert {k: row[k] for k in single if k not in ("time_per_evaluation_s",)} == single
+        ref = alone[models[-1]][scene]
+        near, far = 1 / single["near_mm"], 1 / single["far_mm"]
+        error = max(abs(near - 1 / ref["near_mm"]), abs(far - 1 / ref["far_mm"])) / (1 / ref["near_mm"] - 1 / ref["far_mm"])
+        assert row["difference_pct"] == pytest.approx(100 * error, abs=1e-9)
+        assert row["time_per_evaluation_s"] > 0
+    table = run("dof", *args, "--model", "all")
+    assert table.exit_code == 0 and "focus planning included" in table.stdout and "working N" in table.stdout

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import click
@@ -119,11 +120,13 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
     count, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
     closeup = bool(wanted_m or extension or teleconverter or diffraction) or has_focus_model(ctx)
     by_rays = lens is not None and lens.prescription is not None
-    if model != "all" and closeup and not (by_rays and not (wanted_m or extension or teleconverter or diffraction)):
+    if closeup and not (by_rays and not (wanted_m or extension or teleconverter or diffraction)):
+        if model == "all":
+            return _closeup_all_models(ctx, f, n, s, c, bool(wanted_m), extension, teleconverter, distance_from,
+                                       lens, diffraction, wavelength, tolerance, pupil_mag, hiatus, fmt, cocs,
+                                       coc_origin, chosen.label)
         return _closeup(ctx, model, f, n, s, c, bool(wanted_m), extension, teleconverter, distance_from, lens,
                         diffraction, wavelength, tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, chosen.label)
-    if wanted_m or extension or teleconverter:
-        raise click.UsageError("-m, --extension and --teleconverter do not work with --model all", ctx)
     if model == "all":
         return _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavelength, fmt, cocs,
                            coc_origin, chosen.label)
@@ -248,6 +251,62 @@ def _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavele
         note = (f"difference from {most}, the most complete model; time per evaluation · "
                 + footer(None, cocs, coc_origin, sensor_label, distance_from))
     return Output(rows, ALL_COLUMNS, ALL_KEYS, note)
+
+
+def _closeup_all_models(ctx, f, n, w, c, by_m, extension, teleconverter, distance_from, lens, diffraction, wavelength,
+                        tolerance, pupil_mag, hiatus, fmt, cocs, coc_origin, sensor_label) -> Output:
+    """``--model all`` for close-up scenes: every rung through the close-up planner, the most complete last.
+
+    Each rung places the subject the same way (the planner's focus: -m, the
+    lens's focusing model, extension, teleconverter) and differs only in the
+    depth of field it computes there; the time per evaluation includes the
+    planning, best of three runs.
+    """
+    import time
+    from types import SimpleNamespace
+
+    from camtool.dof.auto import depth_error
+    from camtool.dof.ladder import NO_LENS, available_models
+
+    per_model = []
+    for rung in available_models(lens or NO_LENS):
+        best = math.inf
+        for _ in range(3):
+            start = time.perf_counter()
+            out = _closeup(ctx, rung, f, n, w, c, by_m, extension, teleconverter, distance_from, lens, diffraction,
+                           wavelength, tolerance, pupil_mag, hiatus, "json", cocs, coc_origin, sensor_label)
+            best = min(best, time.perf_counter() - start)
+        per_model.append((out.rows, best / max(len(out.rows), 1)))
+    reference = per_model[-1][0]
+    rows: list[dict[str, Any]] = []
+    for i, ref in enumerate(reference):  # scene by scene, every model of one scene together
+        for model_rows, seconds in per_model:
+            row = dict(model_rows[i])
+            answered = row["near_mm"] is not None and ref["near_mm"] is not None
+            row["difference_pct"] = (100.0 * float(depth_error(SimpleNamespace(**_limits(row)),
+                                                                SimpleNamespace(**_limits(ref))))
+                                     if answered else None)
+            row["time_per_evaluation_s"] = seconds
+            rows.append(row)
+    note = ""
+    if fmt == "table":
+        for row in rows:
+            row["difference_shown"] = "—" if row["difference_pct"] is None else f"{row['difference_pct']:.3g} %"
+            row["estimate_shown"] = _percent(row["error_estimate"])
+            row["time_shown"] = _duration(row["time_per_evaluation_s"])
+        most = reference[0]["model"] if reference else ""
+        note = (f"difference from {most}, the most complete model; time per evaluation, focus planning included · "
+                + footer(None, cocs, coc_origin, sensor_label, distance_from))
+    columns = list(ALL_COLUMNS)
+    columns[4:4] = CLOSEUP_COLUMNS  # after the focus: m and the working f-number
+    if any(abs(r["focal_length_at_focus_mm"] - r["focal_length_mm"]) > 1e-9 * r["focal_length_mm"] for r in rows):
+        columns[2:2] = [FOCUS_COLUMN]
+    return Output(rows, columns, ALL_KEYS, note)
+
+
+def _limits(row: dict[str, Any]) -> dict[str, float]:
+    far = row["far_mm"]
+    return {"near_mm": float(row["near_mm"]), "far_mm": math.inf if far is None else float(far)}
 
 
 def _duration(seconds: float) -> str:
