@@ -172,3 +172,18 @@ def test_a_focal_length_the_retail_lens_does_not_have_is_still_refused():
     result = run("dof", "--lens", "canon-rf-50mm-f1.2l-usm", "-f", "85", "-N", "2", "-s", "3m")
     assert result.exit_code == 2
     assert "85 mm is outside the valid range of --lens canon-rf-50mm-f1.2l-usm: 50 mm" in result.output
+
+
+def test_prescription_option_takes_a_preset_name():
+    # --prescription NAME with no such file gives the prescription preset: the same rows as the file itself
+    by_name = run_json("dof", "-N", "2", "-s", "3m", "--prescription", "dgauss100", "--model", "paraxial")
+    by_file = run_json("dof", "-N", "2", "-s", "3m", "--prescription", "tests/data/prescriptions/dgauss100.yaml",
+                       "--model", "paraxial")
+    assert by_name == by_file
+    (design,) = run_json("dof", "-N", "2", "-s", "3m", "--prescription", "nikon-z50-f1.8", "--model", "raytrace")
+    assert design["focal_length_mm"] == pytest.approx(first_order(optics("nikon-z50-f1.8")).efl_mm, rel=1e-12)
+    wrong = run("dof", "-N", "2", "-s", "3m", "--prescription", "dgaus100")
+    assert wrong.exit_code == 2 and wrong.stderr == (
+        "Error: Invalid value for '--prescription': no file or prescription preset is named 'dgaus100'; "
+        "did you mean dgauss100?\n")
+    assert run("dof", "-N", "2", "-s", "3m", "--prescription", "missing.yaml").exit_code == 1  # a file: exit 1

@@ -58,11 +58,27 @@ class WavelengthType(click.ParamType):
 
 
 def load_prescription(ctx: click.Context, path: str) -> Any:
-    """Read and validate a prescription YAML file (through the guarded reader); a bad file exits 1 naming it."""
+    """Read and validate a prescription YAML file (through the guarded reader); a bad file exits 1 naming it.
+
+    A name that is not a file but a prescription preset's (``dgauss100``,
+    ``nikon-z50-f1.8``; ``camtool presets list --kind prescription``) gives that preset.
+    """
+    import os
+
     from camtool.cli.options import file_error
     from camtool.core.files import FileProblem, load_yaml, read_text
     from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
 
+    if not os.path.exists(path) and not os.path.dirname(path) and not path.endswith((".yaml", ".yml")):
+        preset = _prescription_preset(ctx, path)
+        if preset is not None:
+            return preset.optics
+        from camtool.cli.equipment import open_presets
+
+        close = open_presets(ctx, tuple(ctx.params.get("preset_files") or ())).suggestions("prescription", path)
+        hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
+        raise click.BadParameter(f"no file or prescription preset is named {path!r}{hint}", ctx=ctx,
+                                 param=param_named(ctx, "prescription_file"))
     name = path.rsplit("/", 1)[-1]
     try:
         data, _ = load_yaml(read_text(path, PRESCRIPTION_MAX_BYTES), path)
@@ -72,6 +88,17 @@ def load_prescription(ctx: click.Context, path: str) -> Any:
         return prescription_from_mapping(data, source=name)
     except PrescriptionError as error:
         raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "prescription_file")) from None
+
+
+def _prescription_preset(ctx: click.Context, name: str) -> Any:
+    """The prescription preset called ``name`` (shipped or the user's), or None."""
+    from camtool.cli.equipment import open_presets
+    from camtool.presets import PresetNotFound
+
+    try:
+        return open_presets(ctx, tuple(ctx.params.get("preset_files") or ())).prescription(name)
+    except PresetNotFound:
+        return None
 
 
 PRESCRIPTION_MAX_BYTES = 1024 * 1024
@@ -159,8 +186,9 @@ model_options = stack(
     pupil_mag_option,
     hiatus_option,
     click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",
-                 help="Lens prescription (YAML: surfaces from the object side, one stop) for the paraxial and "
-                      "raytrace models; its focal length is used (-f, if given, must agree within 1%)."),
+                 help="Lens prescription (YAML: surfaces from the object side, one stop), or a prescription "
+                      "preset's name, for the paraxial and raytrace models; its focal length is used (-f, if "
+                      "given, must agree within 1%)."),
 )
 """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
 

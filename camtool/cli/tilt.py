@@ -160,7 +160,8 @@ class PointType(click.ParamType):
 @pupil_mag_option
 @hiatus_option
 @click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",
-              help="Lens prescription (YAML) for --model raytrace; its focal length, pupils and hiatus are used.")
+              help="Lens prescription (YAML, or a prescription preset's name) for --model raytrace; its focal "
+                   "length, pupils and hiatus are used.")
 def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, hinge, points, distance,
          image_distance, hyperfocal, at, half_depth, optimum, wavelength, sensor, crop, coc, coc_rule, pixel_pitch,
          distance_from, along, angles_from, hinge_from, model, pupil_mag, hiatus, prescription_file, fmt, units,
