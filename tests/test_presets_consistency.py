@@ -218,6 +218,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sony-fe-28-70mm-f2-gm", 70.0), ("tamron-70-180mm-f2.8-di-iii-vxd", 180.0),
     # 0.38 m with 1:4.5 and 1:4.6 imply about 57 mm and 56 mm at the 70 mm end.
     ("sigma-24-70mm-f2.8-dg-dn-art", 70.0), ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70.0),
+    # 0.3 m with 1:2.6 and 0.85 m with 1:4.7 imply about 60 mm at 70 mm and 123 mm at 180 mm.
+    ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70.0), ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180.0),
 }
 
 
@@ -355,6 +357,9 @@ CITED_CLOSE_FOCUS = [
     ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70, 380, 0.217),
     # ScubaPortal (Tamron's figures): 19 cm and 1:5.2 at 17 mm, 26 cm and 1:6 at 28 mm.
     ("tamron-17-28mm-f2.8-di-iii-rxd", 17, 190, 0.192), ("tamron-17-28mm-f2.8-di-iii-rxd", 28, 260, 0.167),
+    # Photofocus (Tamron's list): 0.3 m and 1:2.6 at 70 mm, 0.85 m and 1:4.7 at 180 mm.
+    ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70, 300, 0.385),
+    ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180, 850, 0.213),
 ]
 
 
