@@ -196,3 +196,14 @@ def test_a_zoom_accepts_its_smallest_aperture_at_each_end() -> None:
         "Error: Invalid value for '-N' / '--f-number': f/36 is outside the valid range of --lens "
         "sony-fe-200-600mm-f5.6-6.3-g-oss at 200 mm: f/5.6 to f/32\n")
     assert "f/6.3 to f/36" in run("dof", "--lens", "sel200600g", "-f", "600", "-N", "40", "-s", "30m").stderr
+
+
+def test_a_lens_without_a_published_smallest_aperture_is_bounded_from_below_only() -> None:
+    # The NIKKOR Z 70-180mm f/2.8 preset has no f_number_max (no page read gives it): any f-number from
+    # its widest, f/2.8, is accepted, and one below it names only the lower bound.
+    assert run("dof", "--lens", "nikon-z-70-180mm-f2.8", "-f", "100", "-N", "22", "-s", "3m").exit_code == 0
+    assert run("dof", "--lens", "nikon-z-70-180mm-f2.8", "-f", "100", "-N", "64", "-s", "3m").exit_code == 0
+    result = run("dof", "--lens", "nikon-z-70-180mm-f2.8", "-f", "100", "-N", "2", "-s", "3m")
+    assert result.exit_code == 2 and result.stderr == (
+        "Error: Invalid value for '-N' / '--f-number': f/2 is outside the valid range of --lens "
+        "nikon-z-70-180mm-f2.8 at 100 mm: from f/2.8\n")

@@ -216,6 +216,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 600.0),
     ("canon-rf-24-105mm-f2.8l-is-usm-z", 105.0), ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50.0),
     ("sony-fe-28-70mm-f2-gm", 70.0), ("tamron-70-180mm-f2.8-di-iii-vxd", 180.0),
+    # 0.38 m with 1:4.5 and 1:4.6 imply about 57 mm and 56 mm at the 70 mm end.
+    ("sigma-24-70mm-f2.8-dg-dn-art", 70.0), ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70.0),
+    # 0.3 m with 1:2.6 and 0.85 m with 1:4.7 imply about 60 mm at 70 mm and 123 mm at 180 mm.
+    ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70.0), ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180.0),
 }
 
 
@@ -333,6 +337,29 @@ CITED_CLOSE_FOCUS = [
     ("tamron-70-180mm-f2.8-di-iii-vxd", 70, 270, 0.5), ("tamron-70-180mm-f2.8-di-iii-vxd", 180, 850, 0.217),
     # Test Materiel (testmateriel.com) review: 0,45 m, 0,29x (one closest focus for the zoom).
     ("sony-e-18-135mm-f3.5-5.6-oss", 18, 450, None), ("sony-e-18-135mm-f3.5-5.6-oss", 135, 450, 0.29),
+    # Canon Asia SNAPSHOT, Centre Focus Macro article: 20 cm and 0.21x at 24 mm (AF), 34 cm and 0.40x at 105 mm.
+    ("canon-rf-24-105mm-f4-7.1-is-stm", 24, 200, 0.21), ("canon-rf-24-105mm-f4-7.1-is-stm", 105, 340, 0.4),
+    # Nikon's catalogue figures on the tessue-photo blog: 0.27/0.33/0.42/0.58/0.85 m at 70/85/105/135/180 mm,
+    # 0.48x (digitalkamera.de: 27 cm at 70 mm, 85 cm at 180 mm).
+    ("nikon-z-70-180mm-f2.8", 70, 270, 0.48), ("nikon-z-70-180mm-f2.8", 85, 330, None),
+    ("nikon-z-70-180mm-f2.8", 105, 420, None), ("nikon-z-70-180mm-f2.8", 135, 580, None),
+    ("nikon-z-70-180mm-f2.8", 180, 850, None),
+    # ora.it.com (Nikon's table): 0.5 m at 24 mm, 0.7 m at 200 mm, 0.28x.
+    ("nikon-z-24-200mm-f4-6.3-vr", 24, 500, None), ("nikon-z-24-200mm-f4-6.3-vr", 200, 700, 0.28),
+    # Japanese four-zoom comparison (prod-news.global.ssl.fastly.net 20180629-656222/3): 0.38 m, 0.31x.
+    ("sony-fe-24-105mm-f4-g-oss", 24, 380, None), ("sony-fe-24-105mm-f4-g-oss", 105, 380, 0.31),
+    # Le Monde de la Photo: 15 cm and 0.43x at 20 mm, 40 cm at 60 mm.
+    ("panasonic-lumix-s-20-60mm-f3.5-5.6", 20, 150, 0.43), ("panasonic-lumix-s-20-60mm-f3.5-5.6", 60, 400, None),
+    # Le Monde de la Photo: 18 cm and 1:2.9 at the wide end, 38 cm and 1:4.5 at the long end.
+    ("sigma-24-70mm-f2.8-dg-dn-art", 24, 180, 0.345), ("sigma-24-70mm-f2.8-dg-dn-art", 70, 380, 0.222),
+    # lens-db.com: 0.19 m at 28 mm, 0.38 m and 1:4.6 at 70 mm.
+    ("sigma-28-70mm-f2.8-dg-dn-contemporary", 28, 190, None),
+    ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70, 380, 0.217),
+    # ScubaPortal (Tamron's figures): 19 cm and 1:5.2 at 17 mm, 26 cm and 1:6 at 28 mm.
+    ("tamron-17-28mm-f2.8-di-iii-rxd", 17, 190, 0.192), ("tamron-17-28mm-f2.8-di-iii-rxd", 28, 260, 0.167),
+    # Photofocus (Tamron's list): 0.3 m and 1:2.6 at 70 mm, 0.85 m and 1:4.7 at 180 mm.
+    ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70, 300, 0.385),
+    ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180, 850, 0.213),
 ]
 
 
@@ -380,6 +407,8 @@ CITED_F_NUMBER_MAX = [
     ("tamron-28-75mm-f2.8-di-iii-rxd", 22),
     # Leica's description as reproduced by lavidaleica.com: aperture range 1.4 - 16 (1/2 steps).
     ("leica-summilux-m-50mm-f1.4-asph", 16),
+    # zakkeys.com, Tamron 17-28mm F/2.8 Di III RXD basic specifications: smallest aperture f/22 throughout.
+    ("tamron-17-28mm-f2.8-di-iii-rxd", 22),
 ]
 
 

@@ -298,11 +298,14 @@ def _check_lens(ctx: click.Context, lens: Any, params: dict[str, Any]) -> None:
             continue
         for f in focal:
             widest = lens.widest_f_number(f) or n
-            slowest = lens.smallest_f_number(f) or n
+            # A preset without a smallest aperture (none published) bounds the f-number from below only.
+            smallest = lens.smallest_f_number(f)
+            slowest = smallest or n
             if not widest * 0.99 <= n <= slowest * 1.01:
+                span = f"f/{widest:g} to f/{slowest:g}" if smallest else f"from f/{widest:g}"
                 raise click.BadParameter(
-                    f"f/{n:g} is outside the valid range of --lens {lens.id} at {f:g} mm: "
-                    f"f/{widest:g} to f/{slowest:g}", ctx=ctx, param=param_named(ctx, "f_number"))
+                    f"f/{n:g} is outside the valid range of --lens {lens.id} at {f:g} mm: {span}",
+                    ctx=ctx, param=param_named(ctx, "f_number"))
     if lens.min_focus_mm and params.get("distance_from", "sensor") == "sensor":
         for d in flatten(params.get("distance")):
             if d < lens.min_focus_mm:
