@@ -25,7 +25,7 @@ from typing import Any
 import click
 
 from camtool.cli.command import equipment_options, presets_option
-from camtool.cli.common import f_numbers, footer, required
+from camtool.cli.common import f_numbers, footer, required, single
 from camtool.cli.equipment import apply_equipment, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import (
     WavelengthType,
@@ -182,14 +182,6 @@ def _write(ctx: click.Context, target: str, payload: bytes) -> None:
         raise click.ClickException(f"cannot write {target}: {error.strerror or error}") from None
 
 
-def _single(ctx: click.Context, values: Any, option: str) -> Any:
-    flat = [v for v in flatten(values) if v is not None] if isinstance(values, (list, tuple)) else [values]
-    flat = [v for v in flat if v is not None]
-    if len(flat) > 1:
-        raise click.UsageError(f"Option '{option}' takes one value here.", ctx)
-    return flat[0] if flat else None
-
-
 def _one_list(ctx: click.Context, focal: Sequence[float], apertures: Sequence[float]) -> None:
     if len(focal) > 1 and len(apertures) > 1:
         raise click.UsageError("Give several f-numbers or several focal lengths (-N or -f), not both: "
@@ -263,8 +255,8 @@ def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high
     _one_list(ctx, focal, apertures)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    start = _single(ctx, low, "--from")
-    stop = _single(ctx, high, "--to")
+    start = single(ctx, low, "--from")
+    stop = single(ctx, high, "--to")
     if start is None:
         start = max(300.0, 10.0 * max(focal))
     if stop is None:
@@ -309,14 +301,14 @@ def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, 
     focal = flatten(focal_length) or BLUR_FOCAL_LENGTHS_MM
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     _one_list(ctx, focal, apertures)
-    size, share = _single(ctx, subject_size, "--subject-size"), _single(ctx, fill, "--fill")
-    given_m = _single(ctx, magnification, "--magnification")
+    size, share = single(ctx, subject_size, "--subject-size"), single(ctx, fill, "--fill")
+    given_m = single(ctx, magnification, "--magnification")
     if (given_m is None) == (size is None or share is None):
         raise click.UsageError("Give --subject-size and --fill, or --magnification.", ctx)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     frame = chosen.height_mm if fill_axis == "height" else chosen.width_mm
-    start = _single(ctx, low, "--from") or 100.0
-    stop = _single(ctx, high, "--to") or 100_000.0
+    start = single(ctx, low, "--from") or 100.0
+    stop = single(ctx, high, "--to") or 100_000.0
     _range(ctx, start, stop, "high")
     with library_errors(ctx):
         m = given_m if given_m is not None else magnification_for_fill(size, share, frame)
@@ -355,13 +347,13 @@ def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, h
     from camtool.render.chartdata import aperture_data, log_space
 
     focal = required(ctx, focal_length, "-f")
-    f = _single(ctx, focal, "-f")
-    n_low, n_high = _single(ctx, low, "--from"), _single(ctx, high, "--to")
+    f = single(ctx, focal, "-f")
+    n_low, n_high = single(ctx, low, "--from"), single(ctx, high, "--to")
     _range(ctx, n_low, n_high, "high")
-    closest, farthest = _single(ctx, near, "--near"), _single(ctx, far, "--far")
+    closest, farthest = single(ctx, near, "--near"), single(ctx, far, "--far")
     if closest is None or farthest is None:
         raise click.UsageError("Give the scene's --near and --far.", ctx)
-    focus = _single(ctx, distance, "-s")
+    focus = single(ctx, distance, "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
     scene = f"{f:g} mm · " + footer("thin", cocs, origin, chosen.label, distance_from, f"λ {wavelength:g} nm")
@@ -393,9 +385,9 @@ def chart_trade(ctx: click.Context, focal_length, f_number, exact_stops, distanc
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     with library_errors(ctx):
         focal = focal_lengths(lens, flatten(focal_length))
-    f = _single(ctx, required(ctx, focal, "-f"), "-f")
-    n = _single(ctx, required(ctx, f_numbers(f_number, exact_stops), "-N"), "-N")
-    s = _single(ctx, required(ctx, distance, "-s"), "-s")
+    f = single(ctx, required(ctx, focal, "-f"), "-f")
+    n = single(ctx, required(ctx, f_numbers(f_number, exact_stops), "-N"), "-N")
+    s = single(ctx, required(ctx, distance, "-s"), "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
     shown = f"{s / 1000:.4g} m" if units == "metric" else f"{s / 304.8:.4g} ft"
@@ -436,7 +428,7 @@ def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance
     from camtool.render.chartdata import card_data
 
     lens = lens_data(ctx, None, None, None)
-    f = _single(ctx, required(ctx, focal_length, "-f"), "-f")
+    f = single(ctx, required(ctx, focal_length, "-f"), "-f")
     given = flatten(f_number)
     apertures = ([_exact(n) for n in given] if exact_stops else given) or CARD_F_NUMBERS
     distances = flatten(distance) or (

@@ -19,6 +19,7 @@ from typing import Any, NamedTuple
 
 import click
 
+from camtool.cli.common import one_value
 from camtool.cli.equipment import LENS
 from camtool.cli.options import EXTENSION_MM, library_errors, param_named, stack
 from camtool.cli.params import NumberType
@@ -32,22 +33,12 @@ magnification_option = click.option(
     "-m", "--magnification", type=MAGNIFICATION, multiple=True,
     help="Magnification instead of -s: 0.5 (1:2), 1 (life size), 5 (5:1); a list 1,2,5 gives a row each.")
 
-def _one_value(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
-    """The single value of a list-typed option (``25mm``), or a usage error for a list."""
-    if value is None:
-        return None
-    values = value if isinstance(value, list) else [value]
-    if len(values) != 1:
-        raise click.BadParameter("takes one value", ctx=ctx, param=param)
-    return float(values[0])
-
-
 teleconverter_option = click.option(
-    "--teleconverter", type=NumberType(1.0, 4.0), metavar="K", callback=_one_value,
+    "--teleconverter", type=NumberType(1.0, 4.0), metavar="K", callback=one_value,
     help="Teleconverter factor, e.g. 1.4 or 2: focal length and f-number × K.")
 
 closeup_options = stack(
-    click.option("--extension", type=EXTENSION_MM, metavar="LENGTH", callback=_one_value,
+    click.option("--extension", type=EXTENSION_MM, metavar="LENGTH", callback=one_value,
                  help="Extension tubes or bellows added behind the lens, e.g. 25mm: adds E/f to the magnification."),
     teleconverter_option,
 )

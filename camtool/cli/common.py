@@ -12,6 +12,25 @@ from camtool.core.units import TStop, exact_f_number
 from camtool.render.columnar import ColumnRows
 
 
+def one_value(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
+    """Option callback: the single value of a list-typed option (``25mm``), or a usage error for a list."""
+    if value is None:
+        return None
+    values = value if isinstance(value, list) else [value]
+    if len(values) != 1:
+        raise click.BadParameter("takes one value", ctx=ctx, param=param)
+    return float(values[0])
+
+
+def single(ctx: click.Context, values: Any, option: str) -> Any:
+    """The one value given to ``option`` (None when none), or a usage error naming it for several."""
+    flat = [v for v in flatten(values) if v is not None] if isinstance(values, (list, tuple)) else [values]
+    flat = [v for v in flat if v is not None]
+    if len(flat) > 1:
+        raise click.UsageError(f"Option '{option}' takes one value here.", ctx)
+    return flat[0] if flat else None
+
+
 def required(ctx: click.Context, values: Sequence[Any], option: str) -> list[Any]:
     """The flattened values of a repeatable list option, or a usage error naming it."""
     flat = flatten(values)

@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator
 from typing import Any
 
 import click
 
 from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, footer, rows_from
+from camtool.cli.common import f_numbers, footer, rows_from, single
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (
     DISTANCE_M,
@@ -53,14 +53,6 @@ def _plane_columns(name: str, short: str) -> list[Column]:
         Column(f"{name}_blur_mm", f"{short} blur", SMALL),
         Column(f"{name}_blur_pct", f"{short} blur %", NUMBER),
     ]
-
-
-def _single(ctx: click.Context, values: Sequence[Any], option: str) -> Any:
-    flat: list[Any] = flatten(values) if isinstance(values, (list, tuple)) else [values]
-    flat = [v for v in flat if v is not None]
-    if len(flat) > 1:
-        raise click.UsageError(f"Option '{option}' takes one value here.", ctx)
-    return flat[0] if flat else None
 
 
 @contextlib.contextmanager
@@ -118,10 +110,10 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     k = teleconverter or 1.0  # the lens taken as k·f at k·N (docs/closeup.md §7)
     focal = [k * v for v in flatten(focal_length)] or DEFAULT_FOCAL_LENGTHS_MM
     apertures = [k * v for v in f_numbers(f_number, exact_stops)]
-    size, share = _single(ctx, subject_size, "--subject-size"), _single(ctx, fill, "--fill")
+    size, share = single(ctx, subject_size, "--subject-size"), single(ctx, fill, "--fill")
     given_ms = flatten(magnification)
     given_m = given_ms[0] if given_ms else None
-    behind, before = _single(ctx, background, "--background"), _single(ctx, foreground, "--foreground")
+    behind, before = single(ctx, background, "--background"), single(ctx, foreground, "--foreground")
     if (given_m is None) == (size is None or share is None):
         raise click.UsageError("Give --subject-size and --fill, or --magnification.", ctx)
     if (behind is not None or before is not None) and not apertures:

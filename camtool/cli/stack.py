@@ -9,7 +9,7 @@ import click
 
 from camtool.cli.closeup import MAGNIFICATION, focus_models, has_focus_model
 from camtool.cli.command import Output, camtool_command
-from camtool.cli.common import f_numbers, flatten, footer, required
+from camtool.cli.common import f_numbers, flatten, footer, one_value, required
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.lensdata import ladder_errors, lens_data, model_options, pupil_and_hiatus
 from camtool.cli.options import (
@@ -43,16 +43,6 @@ WAVE_FROM = 1.0
 """From this magnification on (life size), the default criterion is the wave-optics depth."""
 
 
-def _single(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
-    """The single value of a list-typed option, or a usage error for a list."""
-    if value is None:
-        return None
-    values = value if isinstance(value, list) else [value]
-    if len(values) != 1:
-        raise click.BadParameter("takes one value", ctx=ctx, param=param)
-    return float(values[0])
-
-
 def _one(ctx: click.Context, values: list[float], option: str, name: str) -> float:
     if len(values) != 1:
         raise click.BadParameter("takes one value here", ctx=ctx, param=param_named(ctx, name))
@@ -69,13 +59,13 @@ def _one(ctx: click.Context, values: list[float], option: str, name: str) -> flo
               help="Read the nominal f-number as the exact 2^(k/6) stop it labels (5.6 -> 5.657).")
 @click.option("-m", "--magnification", type=MAGNIFICATION, multiple=True,
               help="Rail mode: the magnification, e.g. 0.5 (1:2), 1 (life size), 5 (5:1); one value.")
-@click.option("--depth", type=LENGTH_MM, callback=_single, metavar="LENGTH",
+@click.option("--depth", type=LENGTH_MM, callback=one_value, metavar="LENGTH",
               help="Rail mode: subject depth to cover at magnification -m, e.g. 10mm (bare numbers are mm).")
-@click.option("--near", type=DISTANCE_M, callback=_single, metavar="DISTANCE",
+@click.option("--near", type=DISTANCE_M, callback=one_value, metavar="DISTANCE",
               help="Bracketing mode: nearest point to cover, e.g. 0.5 (bare numbers are metres), 50cm.")
-@click.option("--far", type=DISTANCE_M, callback=_single, metavar="DISTANCE",
+@click.option("--far", type=DISTANCE_M, callback=one_value, metavar="DISTANCE",
               help="Bracketing mode: farthest point to cover, e.g. 10m or inf.")
-@click.option("--overlap", type=NumberType(0.0, 0.99), default=DEFAULT_OVERLAP, show_default=True, callback=_single,
+@click.option("--overlap", type=NumberType(0.0, 0.99), default=DEFAULT_OVERLAP, show_default=True, callback=one_value,
               help="Fraction of each frame's depth shared with the next (0 to 0.99).")
 @click.option("--criterion", type=click.Choice(["classic", "wave"]), default=None,
               help="Depth per frame: classic (the CoC) or wave (quarter-wave λ/NA², what macro stackers use). "
