@@ -241,15 +241,8 @@ def _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavele
         }))
     for i in range(count):  # scene by scene, every model of one scene together
         rows.extend(model_rows[i] for model_rows in per_model)
-    note = ""
-    if fmt == "table":
-        for row in rows:
-            row["difference_shown"] = f"{row['difference_pct']:.3g} %"
-            row["estimate_shown"] = _percent(row["error_estimate"])
-            row["time_shown"] = _duration(row["time_per_evaluation_s"])
-        most = rungs[-1].result.model
-        note = (f"difference from {most}, the most complete model; time per evaluation · "
-                + footer(None, cocs, coc_origin, sensor_label, distance_from))
+    note = _comparison_note(rows, rungs[-1].result.model, "", cocs, coc_origin, sensor_label,
+                            distance_from) if fmt == "table" else ""
     return Output(rows, ALL_COLUMNS, ALL_KEYS, note)
 
 
@@ -288,20 +281,24 @@ def _closeup_all_models(ctx, f, n, w, c, by_m, extension, teleconverter, distanc
                                      if answered else None)
             row["time_per_evaluation_s"] = seconds
             rows.append(row)
-    note = ""
-    if fmt == "table":
-        for row in rows:
-            row["difference_shown"] = "—" if row["difference_pct"] is None else f"{row['difference_pct']:.3g} %"
-            row["estimate_shown"] = _percent(row["error_estimate"])
-            row["time_shown"] = _duration(row["time_per_evaluation_s"])
-        most = reference[0]["model"] if reference else ""
-        note = (f"difference from {most}, the most complete model; time per evaluation, focus planning included · "
-                + footer(None, cocs, coc_origin, sensor_label, distance_from))
+    note = _comparison_note(rows, reference[0]["model"] if reference else "", ", focus planning included", cocs,
+                            coc_origin, sensor_label, distance_from) if fmt == "table" else ""
     columns = list(ALL_COLUMNS)
     columns[4:4] = CLOSEUP_COLUMNS  # after the focus: m and the working f-number
     if any(abs(r["focal_length_at_focus_mm"] - r["focal_length_mm"]) > 1e-9 * r["focal_length_mm"] for r in rows):
         columns[2:2] = [FOCUS_COLUMN]
     return Output(rows, columns, ALL_KEYS, note)
+
+
+def _comparison_note(rows: list[dict[str, Any]], most: str, timed: str, cocs: Any, coc_origin: str,
+                     sensor_label: str, distance_from: str) -> str:
+    """Fill the shown columns of ``--model all`` rows and return the table's footer."""
+    for row in rows:
+        row["difference_shown"] = "—" if row["difference_pct"] is None else f"{row['difference_pct']:.3g} %"
+        row["estimate_shown"] = _percent(row["error_estimate"])
+        row["time_shown"] = _duration(row["time_per_evaluation_s"])
+    return (f"difference from {most}, the most complete model; time per evaluation{timed} · "
+            + footer(None, cocs, coc_origin, sensor_label, distance_from))
 
 
 def _limits(row: dict[str, Any]) -> dict[str, float]:

@@ -70,15 +70,7 @@ def load_prescription(ctx: click.Context, path: str) -> Any:
     from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
 
     if not os.path.exists(path) and not os.path.dirname(path) and not path.endswith((".yaml", ".yml")):
-        preset = _prescription_preset(ctx, path)
-        if preset is not None:
-            return preset.optics
-        from camtool.cli.equipment import open_presets
-
-        close = open_presets(ctx, tuple(ctx.params.get("preset_files") or ())).suggestions("prescription", path)
-        hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
-        raise click.BadParameter(f"no file or prescription preset is named {path!r}{hint}", ctx=ctx,
-                                 param=param_named(ctx, "prescription_file"))
+        return _prescription_preset(ctx, path)
     name = path.rsplit("/", 1)[-1]
     try:
         data, _ = load_yaml(read_text(path, PRESCRIPTION_MAX_BYTES), path)
@@ -91,14 +83,18 @@ def load_prescription(ctx: click.Context, path: str) -> Any:
 
 
 def _prescription_preset(ctx: click.Context, name: str) -> Any:
-    """The prescription preset called ``name`` (shipped or the user's), or None."""
+    """The optics of the prescription preset called ``name`` (shipped or the user's); a one-line error if none."""
     from camtool.cli.equipment import open_presets
     from camtool.presets import PresetNotFound
 
+    db = open_presets(ctx, tuple(ctx.params.get("preset_files") or ()))
     try:
-        return open_presets(ctx, tuple(ctx.params.get("preset_files") or ())).prescription(name)
+        return db.prescription(name).optics
     except PresetNotFound:
-        return None
+        close = db.suggestions("prescription", name)
+    hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
+    raise click.BadParameter(f"no file or prescription preset is named {name!r}{hint}", ctx=ctx,
+                             param=param_named(ctx, "prescription_file"))
 
 
 PRESCRIPTION_MAX_BYTES = 1024 * 1024

@@ -103,8 +103,9 @@ def list_presets(ctx: click.Context, kind: str | None, search: str | None, fmt: 
     for each in kinds:
         listed: list[tuple[Any, str | None, str | None]] = [(p, p.tier, p.origin) for p in db.all(each)]
         if each == "film":  # --film looks a shipped film up first, so a preset file cannot replace one
-            ids = {f.id for f in shipped_films()}
-            listed = [(f, "shipped", FILMS_ORIGIN) for f in shipped_films()] + [x for x in listed if x[0].id not in ids]
+            films = shipped_films()
+            ids = {f.id for f in films}
+            listed = [(f, "shipped", FILMS_ORIGIN) for f in films] + [x for x in listed if x[0].id not in ids]
         for preset, tier, origin in listed:
             text = " ".join([preset.id, preset.name, *preset.aliases]).lower()
             if needle and needle not in text:

@@ -263,23 +263,39 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
 
     # the near limit when focused at H: any wanted near limit beyond it is met by focusing at H
     near_at_hyper = limits(hyper)[0] + offset(hyper)
-    frames: list[BracketFrame] = []
-    wanted = float(near_mm)
     u = hyper
-    while True:
+
+    def frame_for(wanted: float) -> BracketFrame:
+        nonlocal u  # each frame's focus starts the next one's iteration
         u = hyper if wanted >= near_at_hyper * (1.0 - 1e-12) else focus_for_near(wanted, u)
         lo, hi = limits(u)
         if u >= hyper:
             hi = math.inf  # focused at the hyperfocal distance: sharp to infinity
         shift = offset(u)
-        frames.append(BracketFrame(u + shift, lo + shift, hi + shift, f / (u - f)))
-        if hi + shift >= far_mm:
-            break
+        return BracketFrame(u + shift, lo + shift, hi + shift, f / (u - f))
+
+    return BracketPlan(_chain(frame_for, near_mm, far_mm, overlap, max_frames), hyper + offset(hyper))
+
+
+def _chain(frame_for: Callable[[float], BracketFrame], near_mm: float, far_mm: float, overlap: float,
+           max_frames: int) -> list[BracketFrame]:
+    """The frames, nearest first: each the frame whose near limit is the one wanted, chained to ``far_mm``.
+
+    Frame 1's near limit is ``near_mm``; each next one's is the previous far
+    limit less ``overlap`` times the previous depth. More than ``max_frames``
+    frames is a :class:`DomainError` on ``near_mm``.
+    """
+    frames: list[BracketFrame] = []
+    wanted = float(near_mm)
+    while True:
+        each = frame_for(wanted)
+        frames.append(each)
+        if each.far_mm >= far_mm:
+            return frames
         if len(frames) >= max_frames:
             require("near_mm", near_mm, False, f"far enough that at most {max_frames} frames reach --far",
                     detail=f"more than {max_frames} frames: a larger f-number, CoC or --near needs fewer")
-        wanted = hi + shift - overlap * (hi - lo)
-    return BracketPlan(frames, hyper + offset(hyper))
+        wanted = each.far_mm - overlap * (each.far_mm - each.near_mm)
 
 
 FocusLimits = Callable[[float, float], tuple[float, float]]
@@ -368,21 +384,10 @@ def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, n
         return _outer_root(lambda m: frame(m).near_mm - wanted, m_hyper, m_max,
                            at_hyper.near_mm - wanted, closest.near_mm - wanted, 1e-14)
 
-    frames: list[BracketFrame] = []
-    wanted = float(near_mm)
-    while True:
-        if wanted >= at_hyper.near_mm * (1.0 - 1e-12):
-            each = at_hyper
-        else:
-            each = frame(solve(wanted))
-        frames.append(each)
-        if each.far_mm >= far_mm:
-            break
-        if len(frames) >= max_frames:
-            require("near_mm", near_mm, False, f"far enough that at most {max_frames} frames reach --far",
-                    detail=f"more than {max_frames} frames: a larger f-number, CoC or --near needs fewer")
-        wanted = each.far_mm - overlap * (each.far_mm - each.near_mm)
-    return BracketPlan(frames, at_hyper.distance_mm)
+    def frame_for(wanted: float) -> BracketFrame:
+        return at_hyper if wanted >= at_hyper.near_mm * (1.0 - 1e-12) else frame(solve(wanted))
+
+    return BracketPlan(_chain(frame_for, near_mm, far_mm, overlap, max_frames), at_hyper.distance_mm)
 
 
 def _nearest_limit_magnification(near: Callable[[float], float], low: float, high: float) -> float:

@@ -26,6 +26,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.errors import DomainError, require, require_positive
+from camtool.geometry.thinlens import span_root
 
 __all__ = [
     "InternalFocus",
@@ -70,14 +71,8 @@ def magnification_branches(focal_length_mm: Any, sensor_distance_mm: Any, hiatus
     >>> round(b.low, 6), round(b.high, 6)
     (0.333333, 3.0)
     """
-    require_positive("focal_length_mm", focal_length_mm)
-    xp = ops(focal_length_mm, sensor_distance_mm, hiatus_mm)
-    span = sensor_distance_mm - hiatus_mm
-    require("distance_mm", sensor_distance_mm, span >= 4.0 * focal_length_mm,
-            "at least {limit} from the sensor (the closest focus, 1:1: 4 × focal length)",
-            limit=4.0 * focal_length_mm + hiatus_mm)
+    xp, span, root = span_root(focal_length_mm, sensor_distance_mm, hiatus_mm)
     with quiet(xp):
-        root = xp.sqrt(xp.maximum(1.0 - 4.0 * focal_length_mm / span, 0.0))
         low = 4.0 * focal_length_mm / (span * (1.0 + root) ** 2)
         high = xp.where(low > 0.0, 1.0 / xp.where(low > 0.0, low, 1.0), xp.inf)
     return MagnificationBranches(low, high)

@@ -116,6 +116,24 @@ def working_f_number(f_number: Any, magnification: Any, pupil_magnification: Any
     return f_number * (1.0 + magnification / pupil_magnification)
 
 
+def span_root(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any = 0.0) -> tuple[Any, Any, Any]:
+    """(array module, L = D − δ, r = √(1 − 4f/L)) of a unit-focusing lens whose subject is D from the sensor.
+
+    The two conjugates are u, v = L·(1 ± r)/2; D < 4f + δ (closer than 1:1) is a
+    :class:`DomainError` on ``distance_mm``. Shared by :func:`lens_distances` and
+    :func:`camtool.geometry.closeup.magnification_branches`.
+    """
+    require_positive("focal_length_mm", focal_length_mm)
+    xp = ops(focal_length_mm, sensor_distance_mm, hiatus_mm)
+    span = sensor_distance_mm - hiatus_mm
+    require("distance_mm", sensor_distance_mm, span >= 4.0 * focal_length_mm,
+            "at least {limit} from the sensor (the closest focus, 1:1: 4 × focal length)",
+            limit=4.0 * focal_length_mm + hiatus_mm)
+    with quiet(xp):
+        root = xp.sqrt(xp.maximum(1.0 - 4.0 * focal_length_mm / span, 0.0))
+    return xp, span, root
+
+
 def lens_distances(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any = 0.0) -> LensPlaneDistances:
     """Convert a distance from the sensor plane into object and image distances (u, v) in mm.
 
@@ -140,13 +158,7 @@ def lens_distances(focal_length_mm: Any, sensor_distance_mm: Any, hiatus_mm: Any
     >>> lens_distances(50.0, float("inf"))
     LensPlaneDistances(object_mm=inf, image_mm=50.0)
     """
-    require_positive("focal_length_mm", focal_length_mm)
-    xp = ops(focal_length_mm, sensor_distance_mm, hiatus_mm)
-    span = sensor_distance_mm - hiatus_mm
-    require("distance_mm", sensor_distance_mm, span >= 4.0 * focal_length_mm,
-            "at least {limit} from the sensor (the closest focus, 1:1: 4 × focal length)",
-            limit=4.0 * focal_length_mm + hiatus_mm)
-    root = xp.sqrt(xp.maximum(1.0 - 4.0 * focal_length_mm / span, 0.0))
+    xp, span, root = span_root(focal_length_mm, sensor_distance_mm, hiatus_mm)
     image = 2.0 * focal_length_mm / (1.0 + root)
     with quiet(xp):
         obj = span * 0.5 * (1.0 + root)

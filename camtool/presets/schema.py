@@ -806,11 +806,7 @@ class Lens:
         >>> Lens("z", "Z", 200.0, 600.0, 5.6, 32.0, 6.3, f_number_max_tele=36.0).smallest_f_number(600.0)
         36.0
         """
-        if self.f_number_max is None or self.f_number_max_tele is None or not self.is_zoom:
-            return self.f_number_max
-        t = (focal_length_mm - self.focal_min_mm) / (self.focal_max_mm - self.focal_min_mm)
-        t = min(1.0, max(0.0, t))
-        return self.f_number_max + t * (self.f_number_max_tele - self.f_number_max)
+        return self._along_zoom(self.f_number_max, self.f_number_max_tele, focal_length_mm)
 
     def widest_f_number(self, focal_length_mm: float) -> float | None:
         """The smallest f-number at a focal length within the range.
@@ -819,11 +815,15 @@ class Lens:
         the two ends; real lenses step in thirds, so treat the middle as
         approximate.
         """
-        if self.f_number_min is None or self.f_number_min_tele is None or not self.is_zoom:
-            return self.f_number_min
+        return self._along_zoom(self.f_number_min, self.f_number_min_tele, focal_length_mm)
+
+    def _along_zoom(self, short: float | None, long: float | None, focal_length_mm: float) -> float | None:
+        """A figure given at both ends of a zoom, linear in focal length between them (clamped to the range)."""
+        if short is None or long is None or not self.is_zoom:
+            return short
         t = (focal_length_mm - self.focal_min_mm) / (self.focal_max_mm - self.focal_min_mm)
         t = min(1.0, max(0.0, t))
-        return self.f_number_min + t * (self.f_number_min_tele - self.f_number_min)
+        return short + t * (long - short)
 
 
 @dataclass(frozen=True)
