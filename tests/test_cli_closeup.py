@@ -297,3 +297,12 @@ def test_model_all_close_up_is_every_model_on_its_own(args):
         assert row["time_per_evaluation_s"] > 0
     table = run("dof", *args, "--model", "all")
     assert table.exit_code == 0 and "focus planning included" in table.stdout and "working N" in table.stdout
+
+
+@pytest.mark.parametrize("extra", [["--teleconverter", "1"], ["--extension", "12mm"], ["-N", "8", "--extension", "12mm"]])
+def test_planned_focus_rows_broadcast_a_single_value(extra):
+    # two focal lengths and one distance through the close-up planner: one row per focal length, each the
+    # row a call with that focal length alone gives (the planner once stopped at the shortest list)
+    both = run_json("focus", "-f", "100,25.4", "-s", "0.5m", *extra)
+    alone = [run_json("focus", "-f", f, "-s", "0.5m", *extra)[0] for f in ("100", "25.4")]
+    assert both == alone

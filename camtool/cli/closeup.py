@@ -90,9 +90,11 @@ def plan_focus(ctx: click.Context, f: Any, n: Any, wanted: Any, by_magnification
                hiatus_mm: float, extension_mm: float | None, teleconverter: float | None) -> Setting:
     """The focus setting of every row (see the module docstring); errors name the option typed."""
     models = focus_models(ctx)
+    columns_in = [_list(f), _list(n), _list(wanted)]
+    count = max(map(len, columns_in))  # a scalar (one f-number for every row, say) stands for every row
     rows = [_row(models(fi), float(fi), float(ni), float(wi), by_magnification, distance_from, hiatus_mm,
                  extension_mm or 0.0, teleconverter or 1.0)
-            for fi, ni, wi in zip(_list(f), _list(n), _list(wanted))]
+            for fi, ni, wi in zip(*(c * count if len(c) == 1 else c for c in columns_in), strict=True)]
     columns: list[list[float]] = [list(c) for c in zip(*rows)] if rows else [[] for _ in range(6)]
     modelled = bool(extension_mm) or (teleconverter or 1.0) != 1.0 or any(models(fi) for fi in set(_list(f)))
     return Setting(columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], modelled)
