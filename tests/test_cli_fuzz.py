@@ -80,9 +80,15 @@ def plain_number() -> st.SearchStrategy[str]:
 
 SENSORS = ["full-frame", "aps-c", "m43", "4x5", "5x4", "6x6", "6x7", "6x9", "8x10", "36x24", "36x24mm", "5x4in",
            "6x7cm", "0x24", "1e9x3", "nan x 3", "36×24", "unknown-sensor", "FF", "nikon-z-8", "3x2ft"]
-CAMERAS = ["nikon-z-8", "canon-eos-5d-mark-iv", "apple-iphone-15-pro", "no-such-camera"]
+CAMERAS = ["nikon-z-8", "canon-eos-5d-mark-iv", "apple-iphone-15-pro", "apple-iphone-16-pro", "fujifilm-x-t5",
+           "no-such-camera"]
 LENSES = ["sony-fe-85mm-f1.8", "canon-ef-50mm-f1.8-stm", "canon-ef-70-200mm-f2.8l-is-iii-usm",
-          "canon-mp-e-65mm-f2.8-1-5x-macro", "apple-iphone-15-pro-main", "dgauss100-lens", "no-such-lens"]
+          "canon-mp-e-65mm-f2.8-1-5x-macro", "apple-iphone-15-pro-main", "dgauss100-lens", "no-such-lens",
+          # an internally focusing macro, a zoom whose smallest aperture closes down, one with no smallest
+          # aperture, a lens made for APS-C, a phone module off the main sensor, a patent design
+          "canon-ef-100mm-f2.8l-macro-is-usm", "sony-fe-200-600mm-f5.6-6.3-g-oss", "nikon-z-70-180mm-f2.8",
+          "fujifilm-xf35mm-f1.4-r", "apple-iphone-16-pro-ultra-wide", "nikon-z-50mm-f1.8-s-patent"]
+PRESCRIPTIONS = ["dgauss100", "nikon-z50-f1.8", "dgaus100"]  # --prescription by preset name (the last unknown)
 SCENES = ["landscape-24", "macro-1to1", "phone-snapshot", "portrait-85", "street-35-zone", "no-such-scene"]
 NAMES = SENSORS + CAMERAS + LENSES + SCENES + ["dgauss100", "cellphone", "telephoto127", ""]
 COC_RULES = ["d/1500", "d/1730", "d/1442", "d/0", "d/-3", "d/1e300", "px:2", "px:0", "px:1e9", "px:nan",
@@ -158,7 +164,9 @@ def values_for(param: click.Parameter, paths: dict[str, str]) -> st.SearchStrate
         return st.sampled_from(COC_RULES)
     if name == "fields":
         return st.sampled_from(KEYS)
-    if name in ("preset_files", "prescription_file", "batch", "file", "out"):
+    if name == "prescription_file":
+        return st.one_of(file_values, st.sampled_from(PRESCRIPTIONS))
+    if name in ("preset_files", "batch", "file", "out"):
         return file_values
     if name == "dirs":
         return st.sampled_from([str(Path(paths["good.yaml"]).parent), paths["missing"]])

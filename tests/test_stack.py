@@ -238,3 +238,32 @@ def test_bad_overlap_and_criterion():
         rail_plan(1.0, 8.0, 1.0, criterion="sharpish")
     with pytest.raises(DomainError):
         bracket_plan(50.0, 8.0, 0.03, 40.0, INF)
+
+
+def test_a_lens_past_life_size_is_bracketed_to_its_nearest_near_limit():
+    # A unit-focusing 100 mm lens reaching 2x: the subject-to-sensor distance f(1 + m)^2/m is least at
+    # m = 1 and grows again beyond, so the nearest near limit lies just below 1:1. Its place is found
+    # here independently by a dense scan of the thin-lens near limit from the sensor,
+    # u·K/(K + u − f) + f(1 + m) with u = f(1 + 1/m), K = f²/(N·c).
+    from camtool.core.errors import DomainError
+    from camtool.dof.stack import internal_bracket_plan
+    from camtool.geometry.closeup import InternalFocus
+
+    f, n, c = 100.0, 8.0, 0.03
+    k = f * f / (n * c)
+
+    def near(m: float) -> float:
+        u = f * (1 + 1 / m)
+        return u * k / (k + u - f) + f * (1 + m)
+
+    scan = min((near(0.5 + i * 1e-6), 0.5 + i * 1e-6) for i in range(1_000_000))
+    assert 0.9 < scan[1] < 1.0
+    lens = InternalFocus(f, 0.0, 0.0, 2.0, 0.0, 400.0)
+    with pytest.raises(DomainError) as caught:
+        internal_bracket_plan(lens, n, c, scan[0] - 0.01, 500.0)
+    assert caught.value.limit == pytest.approx(scan[0], rel=1e-9)
+    assert f"at {scan[1]:.3g}×: a closer setting moves the subject away again" in caught.value.valid
+    # just beyond it, frame 1 is on the near side of the turn (m below the scan's), its near limit the one asked
+    first = internal_bracket_plan(lens, n, c, scan[0] + 1e-3, 500.0).frames[0]
+    assert first.near_mm == pytest.approx(scan[0] + 1e-3, rel=1e-12) and first.magnification < scan[1]
+    assert first.near_mm == pytest.approx(near(first.magnification), rel=1e-12)
