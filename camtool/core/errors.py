@@ -8,7 +8,16 @@ from typing import Any
 from camtool.core.arrays import is_scalar
 
 
-class DomainError(ValueError):
+class CamtoolError(Exception):
+    """The root of every error camtool's library raises on purpose.
+
+    A caller of the Python API catches this one type; each subclass keeps the
+    built-in base it had (``ValueError``, ``LookupError``, ...), so existing
+    ``except ValueError`` clauses go on working.
+    """
+
+
+class DomainError(CamtoolError, ValueError):
     """A value lies outside the physical domain of a formula.
 
     ``param`` names the parameter (as the library spells it), ``value`` is the
@@ -29,7 +38,7 @@ class DomainError(ValueError):
         super().__init__(text)
 
 
-class FileError(Exception):
+class FileError(CamtoolError):
     """A file camtool was asked to read cannot be read or is invalid: exit status 1, one line naming the file.
 
     The guarded reader's ``FileProblem`` and the preset database's

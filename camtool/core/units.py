@@ -12,6 +12,8 @@ import itertools
 import math
 import re
 
+from camtool.core.errors import CamtoolError
+
 MM_PER_UNIT = {
     "um": 0.001,
     "µm": 0.001,
@@ -36,7 +38,7 @@ _FEET_INCHES = re.compile(rf"^\s*({_NUMBER})\s*(?:ft|')\s*({_NUMBER})\s*(?:in|\"
 _INFINITY = {"inf", "infinity", "∞", "+inf"}
 
 
-class UnitError(ValueError):
+class UnitError(CamtoolError, ValueError):
     """A value could not be read as the quantity it should be."""
 
 

@@ -17,7 +17,7 @@ import time
 from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops
-from camtool.core.errors import DomainError, first_bad
+from camtool.core.errors import CamtoolError, DomainError, first_bad
 from camtool.core.planes import FOCUS_PLANES, check_plane
 from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
@@ -73,7 +73,7 @@ FOCAL_LENGTH_TOLERANCE = 0.01
 """A focal length given with a prescription may differ from its paraxial one by this fraction."""
 
 
-class ModelUnavailable(ValueError):
+class ModelUnavailable(CamtoolError, ValueError):
     """The inputs do not allow the model asked for; ``missing`` says what it needs.
 
     ``needs`` names the data alone and ``supplied_by`` the options that give

@@ -22,10 +22,11 @@ from __future__ import annotations
 import math
 from typing import Any, NamedTuple
 
+from camtool.core.errors import CamtoolError
 from camtool.exif import makernotes
 
 
-class ExifUnavailable(ImportError):
+class ExifUnavailable(CamtoolError, ImportError):
     """python-exiv2 is not installed; the message says what to install."""
 
 

@@ -37,7 +37,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 from camtool.core.arrays import ops
 from camtool.core.domain import EV_RANGE, SHUTTER_RANGE_S, check
-from camtool.core.errors import DomainError
+from camtool.core.errors import CamtoolError, DomainError
 
 if TYPE_CHECKING:
     from camtool.exposure.reciprocity import Film
@@ -53,7 +53,7 @@ KEYS = ["f_number", "shutter_s", "iso", "ev", "ev100", "solved", "f_number_nomin
 """Every key a row of :func:`work_out` carries (JSON and CSV), in order."""
 
 
-class SettingsError(ValueError):
+class SettingsError(CamtoolError, ValueError):
     """The question cannot be answered as asked: ``template`` says which settings to give.
 
     ``template`` names parameters in braces (``{f_number}``); the caller

@@ -26,6 +26,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from camtool.core.errors import CamtoolError
+
 __all__ = [
     "Prescription",
     "PrescriptionError",
@@ -63,7 +65,7 @@ EXAMPLE_SINGLET = {"surfaces": [
 """A 100 mm plano-convex N-BK7 singlet with its stop in front, the lens of the optics modules' examples."""
 
 
-class PrescriptionError(ValueError):
+class PrescriptionError(CamtoolError, ValueError):
     """A prescription mapping is invalid; the message names the source, the surface and the key.
 
     ``source`` is where the mapping came from (a file name or preset id),

@@ -42,6 +42,7 @@ from typing import Any
 
 import numpy as np
 
+from camtool.core.errors import CamtoolError
 from camtool.optics.paraxial import FirstOrder, first_order
 from camtool.optics.prescription import Prescription
 
@@ -55,7 +56,7 @@ _MIN_RAYS = 9
 _SQRT8 = 2.0 * math.sqrt(2.0)
 
 
-class RayTraceError(ValueError):
+class RayTraceError(CamtoolError, ValueError):
     """Real rays could not be traced (missed surfaces, total internal reflection, no focus found)."""
 
 

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from camtool.core.errors import FileError
+from camtool.core.errors import CamtoolError, FileError
 
 
-class PresetNotFound(LookupError):
+class PresetNotFound(CamtoolError, LookupError):
     """No preset of ``kind`` answers to ``name``.
 
     ``suggestions`` holds the ids of the closest names (possibly empty); the

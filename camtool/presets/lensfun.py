@@ -54,6 +54,7 @@ from pathlib import Path
 from typing import Any
 from xml.etree import ElementTree
 
+from camtool.core.errors import CamtoolError
 from camtool.presets import paths
 from camtool.presets.schema import FULL_FRAME_DIAGONAL_MM, check_record, normalize, slugify
 
@@ -88,7 +89,7 @@ class ImportResult:
         return sum(self.skipped.values()) + len(self.bad_files)
 
 
-class LensfunImportError(Exception):
+class LensfunImportError(CamtoolError):
     """Nothing could be imported (no lensfun data found, or the output cannot be written)."""
 
 
