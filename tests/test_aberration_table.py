@@ -52,15 +52,18 @@ def test_a_single_scene_with_a_prescription_imports_numpy_only_for_the_ray_trace
 
 def test_the_disk_cache_holds_what_a_fresh_calibration_computes(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
     lens = load("telecentric36")
     computed = auto._compute_table(lens)
-    path, content = auto._cache_path(lens), auto._content(lens)
-    auto._write_table(path, computed, content)
-    assert auto._read_table(path, content) == computed  # floats survive JSON exactly (shortest repr)
-    assert json.loads(Path(path).read_text())["f_numbers"][0] == 1.0
-    assert auto._read_table(path, content + " ") is None  # a file of other content is not used
+    source = auto._source(lens)
+    path = auto._cache_path(source)
+    auto._write_table(path, source, computed)
+    assert auto._read_table(path, source, lens) == computed  # floats survive JSON exactly (shortest repr)
+    payload = Path(path).read_bytes().split(b"\n", 1)[1]
+    assert json.loads(payload)["f_numbers"][0] == 1.0
+    assert auto._read_table(path, auto._source(load("dgauss100")), lens) is None  # a file of other content is not used
     Path(path).write_text("{not json")
-    assert auto._read_table(path, content) is None  # a damaged file is recomputed, not trusted
+    assert auto._read_table(path, source, lens) is None  # a damaged file is recomputed, not trusted
 
 
 def test_the_cache_key_follows_the_prescription_content(tmp_path, monkeypatch):
@@ -69,9 +72,9 @@ def test_the_cache_key_follows_the_prescription_content(tmp_path, monkeypatch):
     data = yaml.safe_load((DATA / "dgauss100.yaml").read_text())
     data["surfaces"][0]["radius_mm"] *= 1.0000001
     changed = prescription_from_mapping(data, "dgauss100")
-    assert auto._cache_path(lens) != auto._cache_path(changed)
+    assert auto._cache_path(auto._source(lens)) != auto._cache_path(auto._source(changed))
     renamed = prescription_from_mapping({**yaml.safe_load((DATA / "dgauss100.yaml").read_text()), "name": "other"})
-    assert auto._cache_path(lens) == auto._cache_path(renamed)
+    assert auto._cache_path(auto._source(lens)) == auto._cache_path(auto._source(renamed))
 
 
 @pytest.mark.parametrize("name", ["dgauss100", "telephoto127", "cellphone", "telecentric36", "wideangle17"])

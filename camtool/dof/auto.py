@@ -245,8 +245,13 @@ def aberration_table(prescription: Any) -> Table:
     prescription's design f-number when it states one. Computing it
     traces rays (numpy, about 20 ms); the result is cached for the process
     and on disk, in ``$XDG_CACHE_HOME/camtool/aberrations/`` (default
-    ``~/.cache/camtool``), keyed by the prescription's content, so a later
-    command with the same prescription reads a small JSON file instead.
+    ``~/.cache/camtool``), bound to the SHA-256 of the prescription's
+    content, so a later command with the same prescription reads a small
+    JSON file instead. An entry is used only when it passes the checks of
+    :mod:`camtool.core.cache` (a regular file of at most 64 KiB, its MAC,
+    the camtool version, the content digest) and of :func:`_valid_table`;
+    otherwise it is computed afresh and written over the entry.
+    ``CAMTOOL_NO_CACHE`` bypasses the disk.
 
     Examples
     --------
@@ -255,11 +260,16 @@ def aberration_table(prescription: Any) -> Table:
     >>> len(grid), grid[0], grid[-1], table[0][0][0]
     (13, 1.0, 64.0, 0.0)
     """
-    path, content = _cache_path(prescription), _content(prescription)
-    table = _read_table(path, content)
+    from camtool.core import cache
+
+    if not cache.enabled():
+        return _compute_table(prescription)
+    source = _source(prescription)
+    path = _cache_path(source)
+    table = _read_table(path, source, prescription)
     if table is None:
         table = _compute_table(prescription)
-        _write_table(path, table, content)
+        _write_table(path, source, table)
     return table
 
 
@@ -269,53 +279,91 @@ def _content(prescription: Any) -> str:
                  prescription.object_index))
 
 
-def _cache_path(prescription: Any) -> str:
-    """Cache file of a prescription's table, named by two checksums of :func:`_content`.
+def _source(prescription: Any) -> str:
+    """The SHA-256 of :func:`_content`: what a cache entry is bound to."""
+    from camtool.core import cache
 
-    (zlib's checksums import in no time, unlike hashlib; the file also holds
-    the content itself, and a file whose content differs is not used.)
+    return cache.source_digest(_content(prescription).encode("utf-8"))
+
+
+_CACHE_KIND = "aberrations"
+_CACHE_MAX_BYTES = 64 * 1024
+"""Largest cache entry read (a table is about 2 KB)."""
+
+
+def _cache_path(source: str) -> str:
+    """Cache file of a prescription's table, named by the SHA-256 of :func:`_content`."""
+    import os
+
+    from camtool.core import cache
+
+    return os.path.join(cache.root(), _CACHE_KIND, f"{source[:40]}.json")
+
+
+def _read_table(path: str, source: str, prescription: Any) -> Table | None:
+    """The cached table when its entry passes every check of :mod:`camtool.core.cache` and :func:`_valid_table`."""
+    import json
+
+    from camtool.core import cache
+
+    payload = cache.read(path, _CACHE_KIND, source, _CACHE_MAX_BYTES)
+    if payload is None:
+        return None
+    try:
+        data = json.loads(payload)
+    except (ValueError, RecursionError):
+        return None
+    return _valid_table(data, prescription)
+
+
+def _valid_table(data: Any, prescription: Any) -> Table | None:
+    """``data`` as a table when it is one a fresh calibration of ``prescription`` could give, else None.
+
+    The f-number grid and the magnifications must be exactly the ones
+    :func:`_compute_table` uses for this prescription (increasing, the same
+    in every row), and every share a finite number ≥ 0.
     """
-    import os
-    import zlib
-
-    data = _content(prescription).encode("utf-8")
-    key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
-    base = os.environ.get("XDG_CACHE_HOME", "")
-    base = base if base and os.path.isabs(base) else os.path.join(os.path.expanduser("~"), ".cache")
-    return os.path.join(base, "camtool", "aberrations", f"{key}.json")
-
-
-def _read_table(path: str, content: str) -> Table | None:
-    """The cached table, or None when the file is missing, unreadable, of other content or of another grid size."""
-    import json
-
+    if not isinstance(data, dict) or set(data) != {"f_numbers", "table"}:
+        return None
+    grid, rows = data["f_numbers"], data["table"]
+    expected_grid = _grid(prescription)
+    if not isinstance(grid, list) or not isinstance(rows, list) or len(grid) != len(expected_grid):
+        return None
+    if any(type(n) is not float or n != e for n, e in zip(grid, expected_grid, strict=True)):
+        return None
     try:
-        with open(path, encoding="utf-8") as handle:
-            data = json.load(handle)
-        if data["content"] != content:
+        expected_ms = _table_magnifications(prescription)
+    except (ValueError, ArithmeticError):
+        return None
+    if len(rows) != len(expected_grid):
+        return None
+    table = []
+    for row in rows:
+        if not isinstance(row, list) or len(row) != len(expected_ms):
             return None
-        grid = tuple(float(n) for n in data["f_numbers"])
-        table = tuple(tuple((float(m), float(s)) for m, s in row) for row in data["table"])
-    except (OSError, ValueError, KeyError, TypeError):
-        return None
-    if len(table) != len(grid) or len(grid) < 2 or any(len(row) < 2 for row in table):
-        return None
-    return grid, table
+        pairs = []
+        for pair, m_expected in zip(row, expected_ms, strict=True):
+            if not isinstance(pair, list) or len(pair) != 2:
+                return None
+            m, share = pair
+            if type(m) is not float or m != m_expected or type(share) is not float:
+                return None
+            if not (math.isfinite(share) and share >= 0.0):
+                return None
+            pairs.append((m, share))
+        table.append(tuple(pairs))
+    return tuple(expected_grid), tuple(table)
 
 
-def _write_table(path: str, table: Table, content: str) -> None:
-    """Store the table (atomically; a cache that cannot be written is skipped)."""
-    import json
-    import os
-    import tempfile
+def _write_table(path: str, source: str, table: Table) -> None:
+    """Store the table (atomically; a table that cannot be written, or holds a non-finite number, is skipped)."""
+    from camtool.core import cache
 
     try:
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with tempfile.NamedTemporaryFile("w", dir=os.path.dirname(path), delete=False, suffix=".tmp") as handle:
-            json.dump({"content": content, "f_numbers": table[0], "table": table[1]}, handle)
-        os.replace(handle.name, path)
-    except OSError:
-        pass
+        payload = cache.dumps({"f_numbers": list(table[0]), "table": [[list(p) for p in row] for row in table[1]]})
+    except ValueError:
+        return
+    cache.write(path, _CACHE_KIND, source, payload)
 
 
 def _grid(prescription: Any) -> tuple[float, ...]:
@@ -341,15 +389,7 @@ def _compute_table(prescription: Any) -> Table:
     from camtool.optics.tracer import real_tracer
 
     fo = first_order(prescription)
-    f = fo.efl_mm
-    ws, ms = [], []
-    for m in _ABERRATION_MAGNIFICATIONS:
-        w = 0.0 if m == 0.0 else 1.0 / (f * (1.0 + m) / m - fo.z_h_mm)
-        if w < 0.0:
-            continue
-        dw = max(w, 1.0 / f) * 1e-4
-        ws += [w, w + dw]
-        ms.append(m)
+    ws, ms = _object_points(fo)
     tracer = real_tracer(prescription)
     stop = prescription.stop_index
     a, _ = paraxial_trace(prescription, 1.0, 0.0, stop=stop)
@@ -386,6 +426,31 @@ def _compute_table(prescription: Any) -> Table:
 
 
 _SQRT8 = 2.0 * math.sqrt(2.0)
+
+
+def _object_points(fo: Any) -> tuple[list[float], list[float]]:
+    """The object vergences traced (each magnification's w and a neighbour w + dw) and the magnifications kept.
+
+    Magnifications the real rays cannot reach (w < 0) are left out.
+    """
+    f = fo.efl_mm
+    ws, ms = [], []
+    for m in _ABERRATION_MAGNIFICATIONS:
+        w = 0.0 if m == 0.0 else 1.0 / (f * (1.0 + m) / m - fo.z_h_mm)
+        if w < 0.0:
+            continue
+        dw = max(w, 1.0 / f) * 1e-4
+        ws += [w, w + dw]
+        ms.append(m)
+    return ws, ms
+
+
+def _table_magnifications(prescription: Any) -> list[float]:
+    """The magnifications of every row of the table :func:`_compute_table` makes for ``prescription``."""
+    from camtool.optics.paraxial import first_order
+
+    ms = _object_points(first_order(prescription))[1]
+    return [*ms, 1.0] if len(ms) == 1 else ms
 
 
 def depth_error(limits: Any, reference: Any) -> Any:
