@@ -10,6 +10,7 @@ crashed the interpreter with SIGSEGV (exit 139), and a FIFO blocked forever.
 from __future__ import annotations
 
 import os
+import re
 import resource
 import subprocess
 import sys
@@ -70,22 +71,26 @@ READERS = ["--presets", "--prescription", "validate"]
 @pytest.mark.parametrize("reader", READERS)
 @pytest.mark.parametrize(("content", "expected"), [
     (BOMB, "expands to more than"),
-    (DEEP, "nested more than"),
+    # flow nesting: PyYAML (6.0.4 on) refuses it with its own words before camtool's depth check sees it, so
+    # only the contract is checked (exit 1, one line, the file and line, the option)
+    (DEEP, None),
     (DEEP_MAPPING, "nested more than"),
     ("surfaces:\n  - {radius: " + "9" * 5000 + "}\n", "a number of 5000 characters"),
     ("sensors:\n  - id: d\n    width_mm: 20\n    width_mm: 21\n    height_mm: 10\n", "duplicate key 'width_mm' (lines 3 and 4)"),
 ])
-def test_hostile_yaml_fails_fast_in_one_line(tmp_path: Path, reader: str, content: str, expected: str) -> None:
+def test_hostile_yaml_fails_fast_in_one_line(tmp_path: Path, reader: str, content: str, expected: str | None) -> None:
     path = tmp_path / "hostile.yaml"
     path.write_text(content, encoding="utf-8")
     code, stdout, stderr, _ = camtool(tmp_path, *uses(reader, path))
     assert code == 1 and stdout == ""
+    wording = () if expected is None else (expected,)
     if reader == "validate":
         stderr = stderr.splitlines()[0] + "\n"
         assert stderr.startswith(f"{path}:"), stderr
-        assert expected in stderr
+        assert all(part in stderr for part in wording), stderr
     else:
-        one_line_error(stderr, str(path), expected, reader)
+        one_line_error(stderr, str(path), *wording, reader)
+    assert re.search(re.escape(str(path)) + r":[1-9][0-9]*\b", stderr), stderr  # the line it stopped at
 
 
 @pytest.mark.parametrize("reader", READERS)
