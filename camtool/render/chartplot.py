@@ -32,7 +32,8 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 from matplotlib.transforms import Bbox
 
-from camtool.render.chartdata import ChartData
+from camtool.core.errors import DomainError
+from camtool.render.chartdata import MAX_PIXELS, ChartData, raster_pixels
 from camtool.render.numfmt import feet_inches, significant
 
 __all__ = ["FORMATS", "OKABE_ITO", "STYLES", "draw", "save"]
@@ -112,6 +113,12 @@ def save(figure: Figure, target: IO[bytes] | str, fmt: str, dpi: float = 150.0) 
     """
     import warnings
 
+    if fmt == "png":
+        width_in, height_in = figure.get_size_inches()
+        across, down = raster_pixels(float(width_in), float(height_in), dpi)
+        if across * down > MAX_PIXELS:
+            raise DomainError("dpi", dpi, f"at most {MAX_PIXELS:,} pixels for this figure size",
+                              f"{across} × {down} pixels")
     metadata: dict[str, Any] = {"png": {"Software": None}, "svg": {"Date": None},
                                 "pdf": {"CreationDate": None, "ModDate": None}}[fmt]
     with matplotlib.rc_context(RC), warnings.catch_warnings(record=True) as caught:

@@ -13,6 +13,8 @@ import json
 from collections.abc import Iterator, Sequence
 from typing import Any
 
+from camtool.render.serial import printable
+
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
 
 
@@ -164,6 +166,7 @@ def _float(value: float, style: str) -> str:
 
 
 def _string(value: str, style: str) -> str:
+    value = printable(value)
     if style == "json":
         return _ENCODER.encode(value)
     if style == "csv" and any(char in value for char in ',"\r\n'):

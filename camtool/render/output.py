@@ -17,7 +17,7 @@ from typing import IO, Any
 
 from camtool.render.columnar import ColumnRows, texts
 from camtool.render.columns import Column
-from camtool.render.serial import ERROR, csv_cells, field_line, json_row
+from camtool.render.serial import ERROR, csv_cells, field_line, json_row, printable, unanswered, withheld
 
 FORMATS = ("table", "json", "csv")
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
@@ -68,7 +68,7 @@ class RowWriter:
         if self.keys is None:
             self._start(keys, columns)
         if footer and footer not in self.footers:
-            self.footers.append(footer)
+            self.footers.append(printable(footer))
         self._emit(rows)
 
     def skip(self, message: str, cells: dict[str, Any] | None = None) -> None:
@@ -115,6 +115,7 @@ class RowWriter:
             for start in range(0, rows.size, SLICE):  # a slice at a time: the text of one slice in memory
                 self._emit_columns(rows.slice(start, start + SLICE) if rows.size > SLICE else rows, keys)
             return
+        rows = self._withheld(rows)
         if self.fields:
             self.stream.write("".join(field_line(row, self.fields) + "\n" for row in rows))
         elif self.fmt == "json":
@@ -128,10 +129,25 @@ class RowWriter:
         else:
             self.table_rows.extend(rows)
 
+    def _withheld(self, rows: Sequence[dict[str, Any]]) -> Sequence[dict[str, Any]]:
+        """The rows with every NaN withheld (see :func:`withheld`); a table names the rows in its footer."""
+        keys = list(self.fields) or self.keys or []
+        if not any(unanswered(row, keys) for row in rows):
+            return rows
+        fixed: list[dict[str, Any]] = []
+        for row in rows:
+            row = withheld(row, keys)
+            if ERROR in row and self.fmt == "table" and not self.fields:
+                note = f"row {len(self.table_rows) + len(fixed) + 1}: {row[ERROR]}"
+                if note not in self.footers:
+                    self.footers.append(note)
+            fixed.append(row)
+        return fixed
+
     def _emit_columns(self, rows: ColumnRows, keys: list[str]) -> None:
         """Write rows held as columns: each column turned to text at once, then joined line by line."""
         count = rows.size
-        errors = rows.errors or []
+        errors = _withheld_columns(rows, list(self.fields) or keys)
         skipped = [i for i, message in enumerate(errors) if message is not None]
 
         def cells(key: str, style: str) -> list[str]:
@@ -160,6 +176,26 @@ class RowWriter:
             text = ",\n".join(map("".join, zip(*parts)))
             self.stream.write(("[\n" if not self.started else ",\n") + text)
             self.started = True
+
+
+def _withheld_columns(rows: ColumnRows, keys: Sequence[str]) -> list[str | None]:
+    """Each row's error: its own, or one naming the computed keys that hold a NaN (the whole row is then withheld)."""
+    errors: list[str | None] = list(rows.errors or [])
+    bad: dict[int, list[str]] = {}
+    for key in keys:
+        values: Any = rows.columns.get(key)
+        if key in rows.kept or getattr(values, "dtype", None) is None or values.dtype.kind != "f":
+            continue
+        import numpy as np
+
+        for index in np.flatnonzero(np.isnan(np.broadcast_to(values, (rows.size,)))).tolist():
+            bad.setdefault(index, []).append(key)
+    if bad:
+        errors = errors or [None] * rows.size
+        for index, names in bad.items():
+            note = f"no answer for {', '.join(names)} with these inputs"
+            errors[index] = f"{errors[index]}; {note}" if errors[index] else note
+    return errors
 
 
 def write_rows(

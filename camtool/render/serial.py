@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -29,6 +30,52 @@ ERROR = "error"
 
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
 
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+
+def printable(text: str) -> str:
+    r"""``text`` with every control character shown as an escape, never sent raw to a terminal or a file.
+
+    A string read from a file (an EXIF tag, a preset name, a batch cell) may
+    hold terminal escape sequences or line breaks; every string cell of every
+    output format passes through here, so a tag cannot clear the screen or
+    split one ``--field`` row into several lines.
+
+    >>> printable("Canon\x1b[2J\nEOS")
+    'Canon\\x1b[2J\\nEOS'
+    >>> printable("plain ×")
+    'plain ×'
+    """
+    if _CONTROL.search(text) is None:
+        return text
+    return _CONTROL.sub(lambda match: _NAMED.get(match.group(), f"\\x{ord(match.group()):02x}"
+                                                 if ord(match.group()) < 0x100 else f"\\u{ord(match.group()):04x}"),
+                        text)
+
+
+def unanswered(row: Row, keys: Sequence[str]) -> list[str]:
+    """The keys of ``row`` whose value is a NaN: a quantity with no answer, which must never be printed as one."""
+    return [key for key in keys if isinstance(row.get(key), float) and row[key] != row[key]]
+
+
+def withheld(row: Row, keys: Sequence[str]) -> Row:
+    """``row`` with every NaN replaced by null and the row's ``error`` naming them (the row keeps its place).
+
+    The last line of defence behind every command: a value no formula could
+    give is shown as missing, with the reason, never as a number or a crash.
+
+    >>> withheld({"near_mm": float("nan"), "far_mm": 2.0}, ["near_mm", "far_mm"])
+    {'near_mm': None, 'far_mm': 2.0, 'error': 'no answer for near_mm with these inputs'}
+    """
+    bad = unanswered(row, keys)
+    if not bad:
+        return row
+    fixed = {**row, **dict.fromkeys(bad)}
+    note = f"no answer for {', '.join(bad)} with these inputs"
+    fixed[ERROR] = f"{row[ERROR]}; {note}" if row.get(ERROR) else note
+    return fixed
+
 
 def plain(value: Any) -> Any:
     """A JSON/CSV-ready value: floats stay raw, infinity becomes ``None``; NaN is a bug, not output."""
@@ -38,6 +85,10 @@ def plain(value: Any) -> Any:
         if math.isnan(value):
             raise ValueError("internal error: a NaN reached the output")
         return None if math.isinf(value) else value
+    if isinstance(value, str):
+        return printable(value)
+    if isinstance(value, float):  # a numpy scalar
+        return plain(float(value))
     return value
 
 
@@ -51,7 +102,7 @@ def json_row(row: Row, keys: Sequence[str]) -> str:
     """
     data = {key: plain(row.get(key)) for key in keys}
     if ERROR in row:
-        data[ERROR] = row[ERROR]
+        data[ERROR] = printable(str(row[ERROR]))
     return _ENCODER.encode(data)
 
 
@@ -73,5 +124,5 @@ def field_line(row: Row, fields: Sequence[str]) -> str:
     values = []
     for key in fields:
         value = row.get(key)
-        values.append("" if value is None else repr(value) if isinstance(value, float) else str(value))
+        values.append("" if value is None else repr(float(value)) if isinstance(value, float) else printable(str(value)))
     return "\t".join(values)

@@ -17,6 +17,7 @@ from typing import IO, Any, NamedTuple
 
 from camtool.render.columns import ANGLE, DISTANCE, FNUMBER, SMALL, TEXT, Column
 from camtool.render.numfmt import distance_unit, feet_inches, significant
+from camtool.render.serial import printable
 
 GAP = "   "
 RULE = "─"
@@ -37,7 +38,7 @@ def _cells(column: Column, rows: Sequence[dict[str, Any]], units: str) -> tuple[
         unit, size = "", 1.0
     header = f"{column.header}\n({unit})" if unit else column.header
     if column.kind == TEXT:
-        return header, ["" if v is None else str(v) for v in values]
+        return header, ["" if v is None else printable(str(v)) for v in values]
     if column.kind == FNUMBER:
         return header, [f"f/{v:.3g}" if isinstance(v, float) else "–" for v in values]
     if column.kind == SMALL:
