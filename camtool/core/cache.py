@@ -47,6 +47,7 @@ import contextlib
 import json
 import os
 import stat
+import sys
 from typing import Any
 
 from camtool.core.files import FileProblem, read_bytes
@@ -83,9 +84,9 @@ def source_digest(data: bytes) -> str:
 
 
 def _version() -> str:
-    import camtool
-
-    return str(camtool.__version__)
+    """The running camtool's version (the package root is loaded before any of its modules; importing it from
+    here would close an import cycle)."""
+    return str(getattr(sys.modules.get("camtool"), "__version__", "unknown"))
 
 
 def _signed(kind: str, source: str, payload: bytes) -> bytes:

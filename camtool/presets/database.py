@@ -356,14 +356,18 @@ def load_db(extra_files: Iterable[str | os.PathLike[str]] = (), *, use_cache: bo
     ``$XDG_CONFIG_HOME/camtool`` < each of ``extra_files`` in order; a later
     tier replaces an earlier preset with the same id. Every file is read now
     (a broken one raises :class:`PresetFileError`); parsed files are cached
-    under ``$XDG_CACHE_HOME/camtool/presets`` unless ``use_cache`` is false.
+    under ``$XDG_CACHE_HOME/camtool/presets`` unless ``use_cache`` is false
+    or ``CAMTOOL_NO_CACHE`` is set (a cached record is used only after the
+    checks of :mod:`camtool.presets.loader`).
 
     >>> db = load_db(use_cache=False, lensfun=False)
     >>> db.sensor("Full Frame").width_mm, db.sensor("m43").id
     (36.0, 'four-thirds')
     """
     tiers = paths.tiers(tuple(os.fspath(p) for p in extra_files), lensfun=lensfun)
-    cache = paths.cache_dir() if use_cache and not os.environ.get("CAMTOOL_NO_CACHE") else None
+    from camtool.core.cache import enabled
+
+    cache = paths.cache_dir() if use_cache and enabled() else None
     files: dict[str, FileData] = {}
     for tier in tiers:
         for path in tier.files:

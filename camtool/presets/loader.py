@@ -7,15 +7,24 @@ presets. A file whose top level has ``surfaces`` is a single prescription
 
 Parsing YAML is the slow part of a command that names a preset (PyYAML's
 import alone costs about 20 ms), so the validated records of every file are
-cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, keyed by the file's
-path and a digest of its content. A warm start reads only the JSON files and
-never imports yaml.
+cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, bound to the
+SHA-256 of the file's path and bytes (recomputed on every read). A warm start
+reads only the JSON files and never imports yaml.
+
+The cache is never trusted: an entry is used only when it passes the checks
+of :mod:`camtool.core.cache` (a regular file of bounded size, the camtool
+version and record layout that wrote it, the digest of this very file, its
+keyed checksum), and every cached record used goes through the same schema
+check as a parsed one (:func:`_valid_record`: the record must be exactly what
+:func:`camtool.presets.schema.check_record` makes of it, its lookup keys the
+ones its id and aliases give). An entry that fails is ignored, the file is
+parsed and the entry rewritten.
 """
 
 from __future__ import annotations
 
-import contextlib
 import json
+import math
 import os
 import zlib
 from typing import Any
@@ -23,6 +32,7 @@ from typing import Any
 from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
 from camtool.presets.schema import (
+    KINDS,
     REFERENCES,
     SECTIONS,
     check_record,
@@ -31,8 +41,10 @@ from camtool.presets.schema import (
     suggest,
 )
 
-CACHE_FORMAT = 6
+CACHE_FORMAT = 7
 """Bumped whenever the record layout changes, so old cache files are ignored."""
+
+_CACHE_KIND = f"presets-{CACHE_FORMAT}"
 
 MAX_BYTES = 64 * 1024 * 1024
 """Largest preset file read."""
@@ -66,17 +78,21 @@ class FileData:
     """
 
     def __init__(self, path: str, records: dict[str, list[dict[str, Any]]] | None = None,
-                 cached: tuple[str, int, dict[str, list[int]]] | None = None) -> None:
+                 cached: _Cached | None = None) -> None:
         self.path = path
         self.problems: list[Problem] = []
         self._records = records if records is not None else {}
         self._cached = cached
 
     def records_of(self, kind: str) -> list[dict[str, Any]]:
-        """The records of one kind (read from the cache on first use)."""
+        """The records of one kind (read from the cache, and checked, on first use)."""
         records = self._records.get(kind)
         if records is None:
-            records = self._records[kind] = self._load_kind(kind)
+            cached = self._cached.all(kind) if self._cached is not None else []
+            if cached is None:
+                self._refresh()
+                return self._records.get(kind, [])
+            records = self._records[kind] = cached
         return records
 
     def keys_of(self, kind: str) -> list[list[str]]:
@@ -85,77 +101,235 @@ class FileData:
         A lookup needs every tier's keys but only the one record it finds; a
         large tier (a lensfun import) then costs its keys, not its records.
         """
-        if kind in self._records or self._cached is None or f"{kind}#keys" not in self._cached[2]:
-            return [record["_keys"] for record in self.records_of(kind)]
-        keys = self._read_section(f"{kind}#keys")
-        return keys if keys is not None else [record["_keys"] for record in self.records_of(kind)]
+        if kind not in self._records and self._cached is not None:
+            keys = self._cached.keys(kind)
+            if keys is not None:
+                return keys
+        return [record["_keys"] for record in self.records_of(kind)]
 
     def record_at(self, kind: str, index: int) -> dict[str, Any]:
         """The ``index``-th record of one kind."""
+        if kind not in self._records and self._cached is not None:
+            record = self._cached.record(kind, index)
+            if record is not None:
+                return record
+            self._refresh()
         return self.records_of(kind)[index]
-
-    def _read_section(self, section: str) -> Any:
-        assert self._cached is not None
-        cache_path, body_start, sections = self._cached
-        offset, length = sections[section]
-        try:
-            with open(cache_path, "rb") as handle:
-                handle.seek(body_start + offset)
-                return json.loads(handle.read(length))
-        except (OSError, ValueError):
-            return None
 
     @property
     def records(self) -> dict[str, list[dict[str, Any]]]:
         """Every kind's records (kinds without presets left out)."""
         if self._cached is not None:
-            for kind in self._cached[2]:
-                if "#" not in kind:
-                    self.records_of(kind)
+            for kind in self._cached.kinds():
+                self.records_of(kind)
         return {kind: records for kind, records in self._records.items() if records}
 
-    def _load_kind(self, kind: str) -> list[dict[str, Any]]:
-        if self._cached is None:
-            return []
-        cache_path, body_start, sections = self._cached
-        if kind not in sections:
-            return []
-        offset, length = sections[kind]
+    def _refresh(self) -> None:
+        """Replace a cache entry that failed a check by a parse of the file's own bytes (and rewrite the entry)."""
+        cached = self._cached
+        assert cached is not None
+        self._cached = None
+        data = _parse_or_raise(self.path, cached.raw)
+        self._records = data._records
+        _write_cache(cached.cache_path, cached.source, self._records, cached.limit)
+        for kind, keys in cached.handed.items():
+            if keys != [record["_keys"] for record in self._records.get(kind, [])]:
+                # only an entry forged with this user's cache key gets here; the lookups made from it are void
+                raise PresetFileError(self.path, "its cache entry disagreed with the file and has been rewritten; "
+                                                 "run the command again")
+
+
+class _Cached:
+    """A cache entry that passed the envelope checks: its sections, parsed and checked on first use."""
+
+    def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes, cache_path: str, source: str,
+                 limit: int) -> None:
+        self.body = body
+        self.sections = sections
+        self.raw = raw
+        self.cache_path = cache_path
+        self.source = source
+        self.limit = limit
+        self.handed: dict[str, list[list[str]]] = {}
+        self._parsed: dict[str, Any] = {}
+        self._checked: dict[tuple[str, int], dict[str, Any]] = {}
+
+    @classmethod
+    def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str, limit: int) -> _Cached | None:
+        end = payload.find(b"\n")
+        if end < 0:
+            return None
         try:
-            with open(cache_path, "rb") as handle:
-                handle.seek(body_start + offset)
-                records = json.loads(handle.read(length))
-            if isinstance(records, list):
-                return records
-        except (OSError, ValueError):
-            pass
-        # The cache vanished or changed under us: parse the file itself.
-        fresh = read_file(self.path)
-        self._records, self._cached = fresh._records, None
-        return self._records.get(kind, [])
+            sections = json.loads(payload[:end])
+        except (ValueError, RecursionError):
+            return None
+        body = payload[end + 1:]
+        if not isinstance(sections, dict):
+            return None
+        for name, span in sections.items():
+            kind = name.removesuffix("#keys")
+            if kind not in KINDS or not (isinstance(span, list) and len(span) == 2
+                                         and all(type(n) is int for n in span)):
+                return None
+            if span[0] < 0 or span[1] < 0 or span[0] + span[1] > len(body):
+                return None
+        return cls(body, sections, raw, cache_path, source, limit)
+
+    def kinds(self) -> list[str]:
+        return [name for name in self.sections if "#" not in name]
+
+    def _section(self, name: str) -> Any:
+        if name not in self._parsed:
+            value = None
+            span = self.sections.get(name)
+            if span is not None:
+                try:
+                    value = json.loads(self.body[span[0]:span[0] + span[1]])
+                except (ValueError, RecursionError):
+                    value = None
+            self._parsed[name] = value
+        return self._parsed[name]
+
+    def keys(self, kind: str) -> list[list[str]] | None:
+        """The cached lookup keys of one kind when they are well formed (remembered, to match the records later)."""
+        name = f"{kind}#keys"
+        if name in self.sections:
+            keys = self._section(name)
+        elif kind in self.sections:
+            return None  # records without their keys: the caller reads the records
+        else:
+            keys = []
+        if not isinstance(keys, list) or not all(_valid_keys(k) for k in keys):
+            return None
+        self.handed[kind] = keys
+        return keys
+
+    def record(self, kind: str, index: int) -> dict[str, Any] | None:
+        """The ``index``-th record of one kind when it passes :func:`_valid_record` (and matches the keys given out)."""
+        checked = self._checked.get((kind, index))
+        if checked is not None:
+            return checked
+        records = self._section(kind) if kind in self.sections else []
+        if not isinstance(records, list) or not 0 <= index < len(records):
+            return None
+        handed = self.handed.get(kind)
+        if handed is not None and len(handed) != len(records):
+            return None
+        record = records[index]
+        if not _valid_record(kind, record) or (handed is not None and record["_keys"] != handed[index]):
+            return None
+        self._checked[(kind, index)] = record
+        return record
+
+    def all(self, kind: str) -> list[dict[str, Any]] | None:
+        """Every record of one kind when each passes :meth:`record`, else None."""
+        records = self._section(kind) if kind in self.sections else []
+        if not isinstance(records, list):
+            return None
+        out = []
+        for index in range(len(records)):
+            record = self.record(kind, index)
+            if record is None:
+                return None
+            out.append(record)
+        return out
+
+
+def _valid_keys(keys: Any) -> bool:
+    return (isinstance(keys, list) and bool(keys)
+            and all(isinstance(key, str) and key and normalize(key) == key for key in keys))
+
+
+def _lookup_keys(record: dict[str, Any]) -> list[str]:
+    """A record's lookup keys: its normalized id, then each alias not already there."""
+    keys = [normalize(record["id"])]
+    for alias in record.get("aliases", ()):
+        key = normalize(alias)
+        if key not in keys:
+            keys.append(key)
+    return keys
+
+
+def _line_number(value: Any) -> bool:
+    return value is None or (type(value) is int and value >= 1)
+
+
+def _valid_record(kind: str, record: Any) -> bool:
+    """True when a cached record is exactly what a fresh parse would make of its values.
+
+    The record's values (a prescription's ``_data``, the mapping it was
+    written as) go through :func:`check_record` again and must come back
+    unchanged; its lookup keys must be the ones its id and aliases give, its
+    line numbers positive integers, its references the keys it has.
+    """
+    if not isinstance(record, dict) or not all(isinstance(key, str) for key in record):
+        return False
+    private = {key for key in record if key.startswith("_")}
+    if private != ({"_keys", "_line", "_refs", "_data"} if kind == "prescription" else {"_keys", "_line", "_refs"}):
+        return False
+    values = {key: value for key, value in record.items() if not key.startswith("_")}
+    if kind == "prescription":
+        source = record["_data"]
+        if not isinstance(source, dict) or any(str(key).startswith("_") for key in source):
+            return False
+    else:
+        source = dict(values)
+        for key, value in values.items():
+            if kind == "scene" and key.endswith("_mm") and value == math.inf:
+                # an infinite distance is written with its unit spelling (distance: inf), which allows it
+                del source[key]
+                source[key.removesuffix("_mm")] = value
+    try:
+        fresh, problems = check_record(kind, source)
+    except (TypeError, ValueError, ArithmeticError, RecursionError):
+        return False
+    if problems or not isinstance(fresh.get("id"), str):
+        return False
+    fresh.setdefault("name", fresh["id"])
+    try:
+        if json.loads(json.dumps(fresh)) != values:
+            return False
+    except (TypeError, ValueError, RecursionError):
+        return False
+    refs = record["_refs"]
+    return (record["_keys"] == _lookup_keys(fresh) and _line_number(record["_line"]) and isinstance(refs, dict)
+            and set(refs) == {key for key in REFERENCES.get(kind, {}) if key in fresh}
+            and all(_line_number(line) for line in refs.values()))
 
 
 def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     """Read and validate one preset file, raising :class:`PresetFileError` on the first problem.
 
-    With ``cache_dir``, a cached copy is used when the file's content (a
-    BLAKE2 digest of its bytes) matches the one cached, and a fresh parse is
-    written back; a file rewritten with the same size and modification time
-    is therefore never served stale.
+    With ``cache_dir`` (and ``CAMTOOL_NO_CACHE`` unset), a cached copy is used
+    when its entry is bound to this file's path and bytes (their SHA-256) and
+    passes every check (see the module docstring); otherwise the file is
+    parsed and its entry written. A file rewritten with the same size and
+    modification time is therefore never served stale.
     """
+    from camtool.core import cache
+
     try:
         raw = read_bytes(path, MAX_BYTES)
     except FileProblem as problem:
         raise PresetFileError(path, problem.problem, line=problem.line) from None
-    cache_path = _cache_path(cache_dir, os.path.abspath(path)) if cache_dir else None
-    stamp: list[Any] = []
-    if cache_path:
-        import hashlib
-
-        stamp = [CACHE_FORMAT, os.path.abspath(path), len(raw), hashlib.blake2b(raw, digest_size=20).hexdigest()]
-        cached = _read_cache(cache_path, stamp)
+    if not cache_dir or not cache.enabled():
+        return _parse_or_raise(path, raw)
+    absolute = os.path.abspath(path)
+    cache_path = _cache_path(cache_dir, absolute)
+    source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
+    limit = _cache_limit(len(raw))
+    payload = cache.read(cache_path, _CACHE_KIND, source, limit)
+    if payload is not None:
+        cached = _Cached.parse(payload, raw, cache_path, source, limit)
         if cached is not None:
             return FileData(path, cached=cached)
+    data = _parse_or_raise(path, raw)
+    _write_cache(cache_path, source, data._records, limit)
+    return data
+
+
+def _parse_or_raise(path: str, raw: bytes) -> FileData:
+    """:func:`parse_file` of ``raw``, raising the first problem (with a count of the others)."""
     data = parse_file(path, raw)
     if data.problems:
         first = data.problems[0]
@@ -165,8 +339,6 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
                             f"camtool presets validate {path} lists them)",
                             first.line, first.kind, first.preset_id, first.key)
         raise first.error(path)
-    if cache_path:
-        _write_cache(cache_path, stamp, data._records)
     return data
 
 
@@ -255,12 +427,7 @@ def _collect_entry(kind: str, entry: dict[Any, Any], node: Any, data: FileData) 
     if problems:
         return
     record.setdefault("name", record["id"])
-    keys = [normalize(record["id"])]
-    for alias in record.get("aliases", ()):
-        key = normalize(alias)
-        if key not in keys:
-            keys.append(key)
-    record["_keys"] = keys
+    record["_keys"] = _lookup_keys(record)
     record["_line"] = entry_line
     refs = REFERENCES.get(kind, {})
     record["_refs"] = {key: _line(key_nodes.get(key)) for key in refs if key in record}
@@ -274,30 +441,23 @@ def _cache_path(cache_dir: str, path: str) -> str:
     return os.path.join(cache_dir, f"{base}-{zlib.crc32(path.encode('utf-8', 'surrogateescape')):08x}.json")
 
 
-def _read_cache(cache_path: str, stamp: list[Any]) -> tuple[str, int, dict[str, list[int]]] | None:
-    """The header of a fresh cache file: its path, where the records start, and each kind's byte range.
+def _cache_limit(source_bytes: int) -> int:
+    """Largest cache entry read for a file of ``source_bytes`` (the records take about 1 to 3 times the YAML)."""
+    return min(8 * source_bytes + (1 << 20), 256 << 20)
 
-    The cache holds one JSON header line followed by one JSON list per kind,
-    so a lookup parses only the kinds it needs.
+
+def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str, Any]]], limit: int) -> None:
+    """Write the cache entry: one JSON line of sections, then one JSON list per kind and one of its keys.
+
+    A lookup then parses only the kinds it needs. An entry that cannot be
+    written (or would be too large to be read back) is skipped silently.
     """
-    try:
-        with open(cache_path, "rb") as handle:
-            header_line = handle.readline()
-        header = json.loads(header_line)
-    except (OSError, ValueError):
-        return None
-    if not isinstance(header, dict) or header.get("stamp") != stamp or not isinstance(header.get("sections"), dict):
-        return None
-    return cache_path, len(header_line), header["sections"]
+    from camtool.core import cache
 
-
-def _write_cache(cache_path: str, stamp: list[Any], records: dict[str, list[dict[str, Any]]]) -> None:
-    """Write the cache atomically; a cache that cannot be written is silently skipped."""
-    temporary = f"{cache_path}.{os.getpid()}.tmp"
+    sections: dict[str, list[int]] = {}
+    blobs = []
+    offset = 0
     try:
-        sections: dict[str, list[int]] = {}
-        blobs = []
-        offset = 0
         for kind, kind_records in records.items():
             keys = [record["_keys"] for record in kind_records]
             for section, value in ((kind, kind_records), (f"{kind}#keys", keys)):
@@ -305,12 +465,9 @@ def _write_cache(cache_path: str, stamp: list[Any], records: dict[str, list[dict
                 sections[section] = [offset, len(blob)]
                 blobs.append(blob)
                 offset += len(blob)
-        header = json.dumps({"stamp": stamp, "sections": sections}, separators=(",", ":")).encode("utf-8")
-        os.makedirs(os.path.dirname(cache_path), exist_ok=True)
-        with open(temporary, "wb") as handle:
-            handle.write(header + b"\n")
-            handle.writelines(blobs)
-        os.replace(temporary, cache_path)
-    except (OSError, TypeError, ValueError):
-        with contextlib.suppress(OSError):
-            os.unlink(temporary)
+        header = json.dumps(sections, separators=(",", ":")).encode("utf-8")
+    except (TypeError, ValueError, RecursionError):
+        return
+    payload = header + b"\n" + b"".join(blobs)
+    if len(payload) + 1024 <= limit:
+        cache.write(cache_path, _CACHE_KIND, source, payload)

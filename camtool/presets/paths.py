@@ -71,8 +71,10 @@ def lensfun_file() -> str:
 
 
 def cache_dir() -> str:
-    """The cache of parsed preset files: ``$XDG_CACHE_HOME/camtool/presets``."""
-    return os.path.join(_xdg("XDG_CACHE_HOME", ".cache"), "camtool", "presets")
+    """The cache of parsed preset files: ``$XDG_CACHE_HOME/camtool/presets`` (see :mod:`camtool.core.cache`)."""
+    from camtool.core import cache
+
+    return os.path.join(cache.root(), "presets")
 
 
 def config_home() -> str:
