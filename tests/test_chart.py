@@ -316,6 +316,87 @@ def test_unwritable_output_is_exit_1(tmp_path: Path) -> None:
     assert (result.exit_code, result.stderr) == (1, f"Error: -o/--output {tmp_path}/missing/dof.png: cannot write there: no such directory\n")
 
 
+
+def test_the_largest_png_is_refused_up_front_in_one_line(tmp_path: Path) -> None:
+    # 40 × 40 in at 1200 dpi is 48000 × 48000 pixels (2.3 gigapixels, 9.2 GB of RGBA): refused before drawing.
+    result = chart("dof", *SCENES["dof"], "--size", "40x40", "--dpi", "1200", "-o", str(tmp_path / "big.png"))
+    assert result.exit_code == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and result.stderr.startswith("Error: Invalid value for '--dpi': 1200 ")
+    assert "48000 × 48000 pixels" in result.stderr and "--size" in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_pixel_bound_is_a_print_at_300_dpi_and_vector_formats_are_not_bound(tmp_path: Path) -> None:
+    # 40 in × 300 dpi = 12000 px a side, the stated bound (144 megapixels); one pixel more across is refused.
+    assert chartdata.MAX_PIXELS == 12_000 * 12_000
+    assert chartdata.raster_pixels(40.0, 40.0, 300.0) == (12_000, 12_000)
+    wider = chart("dof", *SCENES["dof"], "--size", "40x40", "--dpi", "300.03", "-o", str(tmp_path / "x.png"))
+    assert (wider.exit_code, wider.stderr.count("\n")) == (2, 1) and "12001 × 12001 pixels" in wider.stderr
+    # SVG and PDF are vector: --dpi does not size them, so any accepted --size and --dpi draws.
+    svg = chart("dof", *SCENES["dof"], "--size", "40x40", "--dpi", "1200", "-o", str(tmp_path / "big.svg"))
+    assert svg.exit_code == 0, svg.stderr
+    assert _svg_size((tmp_path / "big.svg").read_text()) == (2880.0, 2880.0)  # 40 in × 72 pt
+
+
+def test_the_library_save_refuses_too_many_pixels_too() -> None:
+    from camtool.core.errors import DomainError
+
+    figure = chartplot.draw(chartdata.dof_data([50.0], [8.0], 0.03, chartdata.log_space(1e3, 1e4, 5), "thin",
+                                               "sensor", None, False, 550.0, 0.01), 40.0, 40.0)
+    with pytest.raises(DomainError) as caught:
+        chartplot.to_bytes(figure, "png", dpi=301.0)
+    assert caught.value.param == "dpi"
+
+
+def test_a_list_of_dpi_values_is_refused_not_cut_to_the_first(tmp_path: Path) -> None:
+    result = chart("dof", *SCENES["dof"], "--size", "3x2", "--dpi", "40,80", "-o", str(tmp_path / "x.png"))
+    assert (result.exit_code, result.stderr) == (2, "Error: Option '--dpi' takes one value here.\n")
+
+
+@pytest.mark.parametrize("option", ["-o", "--data"])
+@pytest.mark.parametrize("kind", ["fifo", "directory", "device", "symlink to a device"])
+def test_an_output_that_is_not_a_regular_file_is_refused_at_once(tmp_path: Path, option: str, kind: str) -> None:
+    target = tmp_path / "target.png"
+    if kind == "fifo":
+        os.mkfifo(target)
+    elif kind == "directory":
+        target.mkdir()
+    elif kind == "symlink to a device":
+        target.symlink_to("/dev/null")
+    else:
+        target = Path("/dev/null")
+    image = ["-o", str(target), "--image-format", "png"] if option == "-o" else ["-o", str(tmp_path / "chart.svg"), "--data", str(target)]
+    result = chart("dof", *SCENES["dof"], *SMALL, *image)  # a FIFO with no reader would block: the alarm fails it
+    shown = "-o/--output" if option == "-o" else "--data"
+    what = {"fifo": "a FIFO (named pipe)", "directory": "a directory"}.get(kind, "a device")
+    assert (result.exit_code, result.stderr) == (
+        1, f"Error: {shown} {target}: cannot write there: it is {what}, not a regular file\n")
+    assert not (tmp_path / "chart.svg").exists()
+
+
+def test_data_and_chart_in_the_same_file_is_refused(tmp_path: Path) -> None:
+    target = str(tmp_path / "chart.svg")
+    result = chart("dof", *SCENES["dof"], *SMALL, "-o", target, "--data", target)
+    assert (result.exit_code, result.stderr.count("\n")) == (1, 1) and "--data" in result.stderr
+    assert not Path(target).exists()
+
+
+def test_an_existing_file_is_replaced_whole(tmp_path: Path) -> None:
+    target = tmp_path / "chart.json"
+    target.write_text("x" * 10**6)  # longer than the data: nothing of it may remain
+    result = chart("dof", *SCENES["dof"], *SMALL, "-o", str(tmp_path / "chart.svg"), "--data", str(target))
+    assert result.exit_code == 0, result.stderr
+    assert json.loads(target.read_text())["kind"] == "dof"
+
+
+@pytest.mark.parametrize("image", [["-o", "-", "--image-format", "svg"], ["-o", "chart.svg", "--data", "-"]])
+def test_standard_output_closed_is_one_line_exit_1(tmp_path: Path, image: list[str]) -> None:
+    result = subprocess.run([sys.executable, "-m", "camtool", "chart", "dof", *SCENES["dof"], *SMALL, *image],
+                            cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, timeout=60,
+                            preexec_fn=lambda: os.close(1))
+    assert (result.returncode, result.stderr) == (1, "Error: cannot write to standard output: it is closed\n")
+
+
 def _drift_free(data: dict[str, Any]) -> dict[str, Any]:
     """The chart data without what is measured on the spot (the trade chart's times)."""
     if data["kind"] == "trade":

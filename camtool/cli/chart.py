@@ -16,7 +16,9 @@ from __future__ import annotations
 import functools
 import json
 import math
+import os
 import re
+import stat
 import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -97,8 +99,9 @@ chart_output_options = stack(
     click.option("--size", type=SizeType(), metavar="WxH", help="Figure size in inches (8x5) or with a unit "
                  "(20x12cm). Default: 8x5 in; for card, the --paper size."),
     click.option("--dpi", type=NumberType(20, 1200), default="150", show_default=True,
-                 help="Pixels per inch of a PNG (SVG and PDF are vector)."),
-    click.option("--data", "data_file", type=click.Path(dir_okay=False, allow_dash=True), metavar="FILE",
+                 help="Pixels per inch of a PNG (SVG and PDF are vector); a PNG has at most 144 megapixels "
+                      "(40x40 in at 300 dpi)."),
+    click.option("--data", "data_file", metavar="FILE",
                  help="Also write the plotted numbers as JSON (mm, f-numbers, seconds; infinity as null)."),
     click.option("--units", type=click.Choice(["metric", "imperial"]), default="metric", show_default=True,
                  help="Units of the distances shown (blur discs stay in mm on the sensor)."),
@@ -145,25 +148,26 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
             output, given = params.pop("output"), params.pop("image_format")
             size, dpi, data_file = params.pop("size"), params.pop("dpi"), params.pop("data_file")
             fmt = _image_format(ctx, output, given)
+            resolution = float(single(ctx, dpi, "--dpi"))
             if output == "-" and data_file == "-":
                 raise click.UsageError("-o - and --data - would both write to standard output.", ctx)
-            for target, option in ((output, "-o/--output"), (data_file, "--data")):
-                if target is not None and target != "-" and not Path(target).resolve().parent.is_dir():
-                    raise click.ClickException(f"{option} {target}: cannot write there: no such directory")
+            _check_targets(output, data_file)
             plot = plotting(ctx)
             params = apply_equipment(ctx, params)
-            data = compute(ctx, **params)
             width, height = size or (default_size(params) if default_size else DEFAULT_SIZE_IN)
+            if fmt == "png":
+                _check_pixels(ctx, (width, height), resolution)
+            data = compute(ctx, **params)
             figure = plot.draw(data, width, height, params["units"])
             notes: list[str] = []
-            image = plot.to_bytes(figure, fmt, flatten(dpi)[0] if isinstance(dpi, list) else float(dpi), notes)
-            _write(ctx, output, image)
+            image = plot.to_bytes(figure, fmt, resolution, notes)
+            _write(output, "-o/--output", image)
             if notes:
                 click.echo(f"Warning: the chart is too small for its labels at {width:.3g} × {height:.3g} in; "
                            "some may overlap (give a larger --size)", err=True)
             if data_file is not None:
                 text = json.dumps(data.to_json(), allow_nan=False, ensure_ascii=False, indent=1) + "\n"
-                _write(ctx, data_file, text.encode("utf-8"))
+                _write(data_file, "--data", text.encode("utf-8"))
 
         command = click.command(name)(click.pass_context(equipment_options(chart_output_options(run))))
         return command
@@ -171,15 +175,79 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
     return decorate
 
 
-def _write(ctx: click.Context, target: str, payload: bytes) -> None:
-    if target == "-":
-        sys.stdout.buffer.write(payload)
-        sys.stdout.flush()
+def _check_pixels(ctx: click.Context, size: tuple[float, float], dpi: float) -> None:
+    """Refuse, before anything is computed, a PNG with more pixels than :data:`MAX_PIXELS`."""
+    from camtool.render.chartdata import MAX_PIXELS, raster_pixels
+
+    width, height = size
+    across, down = raster_pixels(width, height, dpi)
+    if across * down <= MAX_PIXELS:
         return
+    raise click.BadParameter(
+        f"{dpi:g} with --size {width:g}x{height:g} in is {across} × {down} pixels ({across * down / 1e6:.1f} "
+        f"megapixels); a PNG chart has at most {MAX_PIXELS / 1e6:.0f} megapixels (40x40 in at 300 dpi): "
+        "give a smaller --dpi or --size", ctx=ctx, param=param_named(ctx, "dpi"))
+
+
+def _check_targets(output: str, data_file: str | None) -> None:
+    """Refuse at once an output that cannot be written: no such directory, or not a regular file."""
+    for target, option in ((output, "-o/--output"), (data_file, "--data")):
+        if target is None or target == "-":
+            continue
+        try:
+            info = os.stat(target)
+        except FileNotFoundError:
+            if not Path(target).resolve().parent.is_dir():
+                raise click.ClickException(f"{option} {target}: cannot write there: no such directory") from None
+            continue
+        except OSError as error:
+            raise click.ClickException(f"{option} {target}: cannot write there: {error.strerror or error}") from None
+        if not stat.S_ISREG(info.st_mode):
+            raise click.ClickException(f"{option} {target}: cannot write there: {_not_regular(info.st_mode)}")
+    if output != "-" and data_file not in (None, "-") and os.path.realpath(output) == os.path.realpath(data_file):
+        raise click.ClickException(f"--data {data_file}: the same file as -o/--output; give another name")
+
+
+def _not_regular(mode: int) -> str:
+    kind = ("a directory" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
+            else "a socket" if stat.S_ISSOCK(mode) else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+            else "not a regular file")
+    return f"it is {kind}, not a regular file" if kind != "not a regular file" else "it is not a regular file"
+
+
+def _write(target: str, option: str, payload: bytes) -> None:
+    """Write ``payload`` to standard output (``-``) or to the regular file ``target``, created if missing.
+
+    The file is opened without blocking and checked again once open, so a FIFO
+    or device put in its place after the first check is refused, not waited on.
+    """
+    if target == "-":
+        stream = getattr(sys.stdout, "buffer", None)
+        if stream is None:  # standard output closed (camtool chart ... -o - >&-)
+            raise click.ClickException("cannot write to standard output: it is closed")
+        try:
+            stream.write(payload)
+            stream.flush()
+        except ValueError:  # the stream was closed under us
+            raise click.ClickException("cannot write to standard output: it is closed") from None
+        return
+    flags = os.O_WRONLY | os.O_CREAT | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
     try:
-        Path(target).write_bytes(payload)
+        fd = os.open(target, flags, 0o666)
     except OSError as error:
-        raise click.ClickException(f"cannot write {target}: {error.strerror or error}") from None
+        raise click.ClickException(f"{option} {target}: cannot write there: {error.strerror or error}") from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise click.ClickException(f"{option} {target}: cannot write there: {_not_regular(info.st_mode)}")
+        os.ftruncate(fd, 0)
+        view = memoryview(payload)
+        while view:
+            view = view[os.write(fd, view):]
+    except OSError as error:
+        raise click.ClickException(f"{option} {target}: cannot write there: {error.strerror or error}") from None
+    finally:
+        os.close(fd)
 
 
 def _one_list(ctx: click.Context, focal: Sequence[float], apertures: Sequence[float]) -> None:
