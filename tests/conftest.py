@@ -13,6 +13,7 @@ difference fails the run.
 from __future__ import annotations
 
 import atexit
+import inspect
 import os
 import pwd
 import shutil
@@ -71,3 +72,28 @@ def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
     if changed:
         print(f"\nthe test run wrote outside its temporary directory: {', '.join(changed)} changed", file=sys.stderr)
         session.exitstatus = pytest.ExitCode.TESTS_FAILED
+
+
+@pytest.fixture(scope="session")
+def shared_presets_home(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """XDG directories with no preset file of their own, shared by the tests that only read the shipped presets.
+
+    Its preset cache is filled by the first such test, so the shipped files are parsed once per session
+    rather than once per test.
+    """
+    return tmp_path_factory.mktemp("shipped-presets")
+
+
+def presets_home(request: pytest.FixtureRequest, shared: Path, *own_if: str) -> Path:
+    """The XDG root for one test: its own ``tmp_path`` when the test asks for any of ``own_if`` by name
+    (it writes presets there or looks at the cache), else the shared one."""
+    asked = inspect.signature(request.function).parameters if request.function is not None else {}
+    if any(name in asked for name in own_if):
+        return Path(request.getfixturevalue("tmp_path"))
+    return shared
+
+
+def point_xdg_at(root: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
+        monkeypatch.setenv(name, str(root / name.lower()))
+    monkeypatch.setenv("XDG_CONFIG_DIRS", str(root / "etc-xdg"))

@@ -5,16 +5,19 @@ from __future__ import annotations
 import time
 
 import pytest
+from conftest import point_xdg_at, presets_home
 
 from camtool.presets import PresetFileError, load_db, validate_file
 
 
 @pytest.fixture(autouse=True)
-def isolated(tmp_path, monkeypatch):
-    for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
-        monkeypatch.setenv(name, str(tmp_path / name.lower()))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc-xdg"))
-    return tmp_path
+def isolated(request, monkeypatch, shared_presets_home):
+    """Point every XDG directory away from the user's own files: into tmp_path for a test that asks for
+    `isolated` (it looks at the cache), else into directories shared by the tests that only read the shipped
+    presets (parsed once per session); the bad files the others write in tmp_path are given as --presets."""
+    root = presets_home(request, shared_presets_home, "isolated")
+    point_xdg_at(root, monkeypatch)
+    return root
 
 
 def load_error(tmp_path, text: str) -> tuple[str, PresetFileError]:

@@ -6,11 +6,14 @@ Known exceptions are listed next to each check with the reason.
 
 from __future__ import annotations
 
+import copy
+import functools
 import math
 from pathlib import Path
 
 import pytest
 import yaml
+from conftest import point_xdg_at, presets_home
 
 from camtool.presets import load_db, paths
 from camtool.presets.loader import read_file
@@ -19,15 +22,24 @@ FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 
 
 @pytest.fixture(autouse=True)
-def isolated(tmp_path, monkeypatch):
-    for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
-        monkeypatch.setenv(name, str(tmp_path / name.lower()))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc-xdg"))
-    return tmp_path
+def isolated(request, monkeypatch, shared_presets_home):
+    """Point every XDG directory away from the user's own files: into tmp_path for a test that asks for
+    `isolated` or `tmp_path` (it writes presets or looks at the cache), else into directories shared by the
+    tests that only read the shipped presets (parsed once per session)."""
+    root = presets_home(request, shared_presets_home, "isolated", "tmp_path")
+    point_xdg_at(root, monkeypatch)
+    return root
 
 
 def lens_records() -> list[dict]:
-    """The validated lens records of the shipped files (they carry the keys the Lens class has no field for)."""
+    """The validated lens records of the shipped files (they carry the keys the Lens class has no field for).
+
+    Parsed once per session; each call hands out deep copies, so no test sees another's changes."""
+    return copy.deepcopy(_shipped_lens_records())
+
+
+@functools.lru_cache(maxsize=1)
+def _shipped_lens_records() -> list[dict]:
     return [r for path in paths.shipped_files() for r in read_file(path).records.get("lens", ())]
 
 

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import point_xdg_at, presets_home
 
 from camtool.presets import (
     Camera,
@@ -24,13 +25,14 @@ DATA = Path(__file__).resolve().parent / "data" / "presets"
 
 
 @pytest.fixture(autouse=True)
-def isolated(tmp_path, monkeypatch):
-    """Point every XDG directory into tmp_path so the user's own files never leak in."""
-    for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
-        monkeypatch.setenv(name, str(tmp_path / name.lower()))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc-xdg"))
+def isolated(request, monkeypatch, shared_presets_home):
+    """Point every XDG directory away from the user's own files: into tmp_path for a test that asks for
+    `isolated` or `tmp_path` (it writes presets or looks at the cache), else into directories shared by the
+    tests that only read the shipped presets (parsed once per session)."""
+    root = presets_home(request, shared_presets_home, "isolated", "tmp_path")
+    point_xdg_at(root, monkeypatch)
     monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
-    return tmp_path
+    return root
 
 
 def test_every_shipped_file_validates():

@@ -6,6 +6,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from conftest import point_xdg_at, presets_home
 
 from camtool.presets import load_db, validate_file
 from camtool.presets.lensfun import (
@@ -22,11 +23,13 @@ SYSTEM = Path("/usr/share/lensfun/version_1")
 
 
 @pytest.fixture(autouse=True)
-def isolated(tmp_path, monkeypatch):
-    for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
-        monkeypatch.setenv(name, str(tmp_path / name.lower()))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc-xdg"))
-    return tmp_path
+def isolated(request, monkeypatch, shared_presets_home):
+    """Point every XDG directory away from the user's own files: into tmp_path for a test that asks for
+    `isolated` or `tmp_path` (it writes presets or looks at the cache), else into directories shared by the
+    tests that only read the shipped presets (parsed once per session)."""
+    root = presets_home(request, shared_presets_home, "isolated", "tmp_path")
+    point_xdg_at(root, monkeypatch)
+    return root
 
 
 @pytest.mark.parametrize(
