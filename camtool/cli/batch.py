@@ -48,6 +48,7 @@ import click
 from camtool.cli.grid import CHUNK as GRID_CHUNK
 from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import ZIP, Output, open_writer
+from camtool.core.ranges import F_NUMBER
 from camtool.core.units import UnitError
 from camtool.render.columnar import ColumnRows, values_of
 from camtool.render.columns import TEXT, Column
@@ -273,8 +274,7 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
               on_error: str, fields: tuple[str, ...]) -> None:
     """Compute and write one output row per input row, chunk by chunk; exit 1 if a row was skipped."""
     columns = _Columns(ctx.command)
-    defaults = {name: _single(params.get(name), name) for name, param in columns.params.items()
-                if isinstance(param.type, _ListType)}
+    defaults = {name: _single(params.get(name), name) for name, param in columns.params.items() if _vector(param)}
     writer = open_writer(params["fmt"], params["units"], fields)
     batch = _Batch(ctx, compute, params, defaults, columns, writer, on_error)
     stream, name = open_source(source)
@@ -349,11 +349,32 @@ class _Batch:
                 continue
             name, unit = target
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType) and not _t_stops(self.ctx, param, cells):
-                values[name] = self._numbers(param, unit, column, cells, numbers, errors)
+            if _vector(param) and not _t_stops(self.ctx, param, cells):
+                parsed: Any = self._numbers(param, unit, column, cells, numbers, errors)
             else:
-                values[name] = self._settings(param, unit, column, cells, numbers, errors)
+                parsed = self._settings(param, unit, column, cells, numbers, errors)
+            if name in values:  # two columns for one option (JSON lines: distance_mm in one row, distance in another)
+                parsed = self._merge(param, values[name], parsed, numbers, errors)
+            values[name] = parsed
         return values, passed
+
+    def _merge(self, param: click.Parameter, first: Any, second: Any, numbers: list[int],
+               errors: list[str | None]) -> Any:
+        """One option given by two columns: each row takes the one it fills; a row that fills both is bad."""
+        import numpy as np
+
+        if isinstance(first, list) or isinstance(second, list):
+            firsts = first if isinstance(first, list) else [None if v != v else v for v in first.tolist()]
+            seconds = second if isinstance(second, list) else [None if v != v else v for v in second.tolist()]
+            both = [a is not None and b is not None for a, b in zip(firsts, seconds)]
+            merged: Any = [b if a is None else a for a, b in zip(firsts, seconds)]
+        else:
+            both = (~np.isnan(first) & ~np.isnan(second)).tolist()
+            merged = np.where(np.isnan(first), second, first)
+        for index, twice in enumerate(both):
+            if twice and errors[index] is None:
+                errors[index] = f"--batch row {numbers[index]}: two columns give {param.opts[-1]}; keep one"
+        return merged
 
     def _numbers(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
                  numbers: list[int], errors: list[str | None]) -> Any:
@@ -372,8 +393,12 @@ class _Batch:
         except (ValueError, TypeError):
             array = _suffixed(cells, param)
             factor = 1.0 if array is not None else factor
-        if array is not None:
-            array = array * factor if factor != 1.0 else array
+        overflow = None
+        if array is not None and factor != 1.0:
+            with np.errstate(over="ignore"):
+                scaled = array * factor
+            overflow = np.isinf(scaled) & np.isfinite(array)  # 1e308 m: no finite length, as on the command line
+            array = scaled
         else:
             array = np.empty(len(cells))
             for index, cell in enumerate(cells):
@@ -387,7 +412,8 @@ class _Batch:
                     number = math.nan
                 array[index] = number * factor if number == number else self._one(
                     param, text, unit, column, numbers[index], errors, index)
-        bad = np.flatnonzero(~_valid(param.type, array) & ~np.isnan(array))
+        invalid = ~_valid(param.type, array) & ~np.isnan(array)
+        bad = np.flatnonzero(invalid if overflow is None else invalid | overflow)
         for index in bad.tolist():
             cell = cells[index]
             array[index] = self._one(param, cell if isinstance(cell, str) else str(cell), unit, column,
@@ -441,7 +467,7 @@ class _Batch:
         values, passed = self._parse(header, numbers, records, errors)
         for name, column in values.items():
             param = self.columns.params[name]
-            if isinstance(param.type, _ListType) and self.defaults[name] is None and not isinstance(column, list):
+            if _vector(param) and self.defaults[name] is None and not isinstance(column, list):
                 missing = np.isnan(column)
                 if missing.all():
                     continue  # not this chunk's column at all: the command says what it needs
@@ -500,7 +526,7 @@ class _Batch:
             param = self.columns.params[name]
             if isinstance(column, list):  # settings, and an -N column holding T-stops (one value a group)
                 if column[members[0]] is not None:
-                    merged[name] = [[column[members[0]]]] if isinstance(param.type, _ListType) else column[members[0]]
+                    merged[name] = [[column[members[0]]]] if _vector(param) else column[members[0]]
             elif isinstance(param.type, _ListType):
                 chosen = column[members]
                 missing = np.isnan(chosen)
@@ -624,6 +650,16 @@ def _t_stops(ctx: click.Context, param: click.Parameter, cells: Sequence[Any]) -
     return found
 
 
+def _vector(param: click.Parameter) -> bool:
+    """Whether a column of this option goes to the command as one list a chunk (-f, -N, -s ...).
+
+    An option that takes a single value (``--teleconverter``, ``--extension``:
+    a callback makes the list one number) is a setting instead: each
+    distinct cell is one group, converted and checked as the option is.
+    """
+    return isinstance(param.type, _ListType) and getattr(param, "callback", None) is None
+
+
 def _numeric(value: Any) -> bool:
     if isinstance(value, (int, float)):
         return True
@@ -657,11 +693,12 @@ def _valid(kind: click.ParamType, array: Any) -> Any:
 
     check = type(kind).check  # type: ignore[attr-defined]
     with np.errstate(invalid="ignore"):
-        if check is LengthType.check:
-            ok = array > 0
-            return ok if kind.allow_inf else ok & np.isfinite(array)  # type: ignore[attr-defined]
+        if check is LengthType.check:  # the option's own bounds, as LengthType.check applies them
+            low, high = kind.bounds  # type: ignore[attr-defined]
+            ok = (array > 0 if low == 0 else array >= low * (1 - 1e-12)) & (array <= high * (1 + 1e-12))
+            return ok | (array == np.inf) if kind.allow_inf else ok & np.isfinite(array)  # type: ignore[attr-defined]
         if check is FNumberType.check:
-            return (array >= 0.7) & (array <= 1024)
+            return (array >= F_NUMBER[0]) & (array <= F_NUMBER[1])
         if check is NumberType.check:
             return (array >= kind.low) & (array <= kind.high)  # type: ignore[attr-defined]
         if check is _ListType.check:

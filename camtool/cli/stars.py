@@ -10,7 +10,7 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import required, rows_from
 from camtool.cli.equipment import resolve_sensor
 from camtool.cli.exposure import single
-from camtool.cli.options import LENGTH_MM, focal_option, library_errors, sensor_options
+from camtool.cli.options import PIXEL_PITCH_UM, focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
 from camtool.render.columns import NUMBER, SMALL, TEXT, Column
 
@@ -31,8 +31,9 @@ COLUMNS = [
 @click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
               help="f-number (the NPF rule needs it; the 500 rule does not); a list gives a row each.")
 @sensor_options
-@click.option("--pixel-pitch", type=LENGTH_MM, multiple=True,
-              help="Pixel pitch, e.g. 4.3um (default: from --camera); a list gives a row each.")
+@click.option("--pixel-pitch", type=PIXEL_PITCH_UM, multiple=True,
+              help="Pixel pitch, e.g. 4.3 or 4.3um (bare numbers are µm, as spec sheets give it and as everywhere in "
+                   "camtool; default: from --camera); a list gives a row each.")
 @click.option("--declination", type=NumberType(-89, 89), multiple=True, default=["0"], show_default=True,
               help="Declination of the stars in degrees (0: the celestial equator, where they move fastest).")
 @click.option("--rule-constant", type=NumberType(100, 1000), default="500", show_default=True,
