@@ -2,9 +2,13 @@
 
 Reading is python-exiv2's (the optional ``exif`` extra), imported only when
 this command runs; see :mod:`camtool.exif` and docs/exif.md. One row per file;
-a file that cannot be read gives a row of nulls, a one-line message on
-stderr and exit status 1; a value the file does not carry is null and named
-on stderr, and the rest of the row is still computed.
+a file that cannot be read (or is not a regular file) gives a row of nulls, a
+one-line message on stderr and exit status 1; a value the file does not carry
+is null and named on stderr, and the rest of the row is still computed; a
+value the file carries but that lies outside the range of the option it
+stands for is null too, named with its tag on the same line, and makes the
+exit status 1. File names and tag strings are printed with their control
+characters escaped (``\\x1b``, ``\\n``).
 """
 
 from __future__ import annotations
@@ -78,7 +82,10 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     Nikon, Olympus) or Exif SubjectDistance. Each *_source key names the tag
     used; a value the file lacks is null and named on stderr. --lens, --camera,
     --sensor/--crop and -s override what the file says. A file that cannot be
-    read gives a row of nulls and a line on stderr, and the exit status is 1.
+    read, or is not a regular file, gives a row of nulls and a line on stderr,
+    and the exit status is 1; so does a value outside the range of its option
+    (f/65288), named with its tag on that line, the rest of the row computed.
+    Control characters in file names and tags are escaped (\\x1b, \\n).
     Needs the exif extra: pip install 'camtool[exif]'. See docs/exif.md.
 
     \b
@@ -140,7 +147,9 @@ def _exit_one() -> None:
 
 
 def _warn(path: str, message: str) -> None:
-    click.echo(f"camtool exif: {path}: {message}", err=True)
+    from camtool.exif.reader import printable
+
+    click.echo(f"camtool exif: {printable(path)}: {printable(message)}", err=True)
 
 
 def _expand(paths: tuple[str, ...], recursive: bool) -> tuple[list[str], list[tuple[str, str]]]:
@@ -148,7 +157,11 @@ def _expand(paths: tuple[str, ...], recursive: bool) -> tuple[list[str], list[tu
     names: list[str] = []
     for path in paths:
         if path == "-":
-            names.extend(line.rstrip("\n") for line in sys.stdin if line.strip())
+            # bytes, decoded as the file system does (a name that is not UTF-8 keeps its bytes as surrogates);
+            # one name a line, a CRLF line end is a line end
+            stream = getattr(sys.stdin, "buffer", None)
+            lines = [os.fsencode(line) for line in sys.stdin] if stream is None else list(stream)
+            names.extend(os.fsdecode(line.rstrip(b"\n").removesuffix(b"\r")) for line in lines if line.strip())
         else:
             names.append(path)
     files: list[str] = []
@@ -158,7 +171,11 @@ def _expand(paths: tuple[str, ...], recursive: bool) -> tuple[list[str], list[tu
             if not recursive:
                 failed.append((name, "is a directory (give --recursive to read the images in it)"))
                 continue
-            for root, dirs, entries in os.walk(name):
+
+            def unreadable(error: OSError, top: str = name) -> None:
+                failed.append((error.filename or top, f"cannot be read: {error.strerror or error}"))
+
+            for root, dirs, entries in os.walk(name, onerror=unreadable):
                 dirs.sort()
                 files.extend(os.path.join(root, e) for e in sorted(entries)
                              if os.path.splitext(e)[1].lower() in IMAGE_SUFFIXES)
@@ -168,35 +185,45 @@ def _expand(paths: tuple[str, ...], recursive: bool) -> tuple[list[str], list[tu
 
 
 def _failed_row(path: str, reason: str) -> dict[str, Any]:
+    from camtool.exif.reader import printable
+
     _warn(path, reason)
-    return dict.fromkeys(KEYS) | {"file": path}
+    return dict.fromkeys(KEYS) | {"file": printable(path)}
 
 
 def _one(ctx: click.Context, path: str, settings: dict[str, Any]) -> tuple[dict[str, Any], bool]:
-    """One file's row, and whether it could be read."""
+    """One file's row, and whether it was read without a problem (every value present either usable or absent).
+
+    A value present but unusable (outside its option's range) is named with its tag on the file's one line,
+    before the values the file lacks.
+    """
     from camtool.exif.reader import UnreadableFile, read_file
 
     try:
         reading = read_file(path)
     except UnreadableFile as error:
         return _failed_row(path, str(error)), False
+    unusable: list[str] = [message for _, message in reading.problems]
     missing: list[str] = []
-    row = _compute(ctx, path, reading, settings, missing)
-    if missing:
-        _warn(path, "; ".join(missing))
-    return row, True
+    row = _compute(ctx, path, reading, settings, missing, unusable)
+    if unusable or missing:
+        _warn(path, "; ".join(unusable + missing))
+    return row, not unusable
 
 
-def _compute(ctx: click.Context, path: str, reading: Any, settings: dict[str, Any], missing: list[str]) -> dict[str, Any]:
+def _compute(ctx: click.Context, path: str, reading: Any, settings: dict[str, Any], missing: list[str],
+             unusable: list[str]) -> dict[str, Any]:
+    from camtool.exif.reader import printable
     from camtool.exif.sensor import camera_names, from_crop, from_plane, match_preset, normalise
 
     sources = reading.sources
     row: dict[str, Any] = dict.fromkeys(KEYS)
-    row["file"] = path
+    row["file"] = printable(path)
     camera = " ".join(p for p in (reading.make, reading.model) if p) or None
     if reading.make and reading.model and reading.model.lower().startswith(reading.make.split()[0].lower()):
         camera = reading.model
     row["camera"] = camera
+    named = {field for field, _ in reading.problems}  # a value named as unusable is not named again as missing
     f, n = reading.focal_length_mm, reading.f_number
     row["focal_length_source"] = sources.get("focal_length_mm")
     row["f_number_source"] = sources.get("f_number")
@@ -218,25 +245,26 @@ def _compute(ctx: click.Context, path: str, reading: Any, settings: dict[str, An
     row["focal_length_mm"], row["f_number"] = f, n
     row["shutter_s"], row["iso"] = reading.shutter_s, reading.iso
 
-    size = _sensor(ctx, reading, settings, f, from_crop, from_plane, camera_names, match_preset)
+    size = _sensor(ctx, reading, settings, f, from_crop, from_plane, camera_names, match_preset, unusable, named)
     if size is None:
-        missing.append("no sensor size (FocalPlaneResolution, FocalLengthIn35mmFilm or a camera preset): "
-                       "give --sensor or --crop")
+        if "sensor" not in named:
+            missing.append("no sensor size (FocalPlaneResolution, FocalLengthIn35mmFilm or a camera preset): "
+                           "give --sensor or --crop")
     else:
         row["sensor_width_mm"], row["sensor_height_mm"] = size.width_mm, size.height_mm
         row["crop_factor"], row["sensor_source"] = size.crop_factor, size.source
 
-    c = _coc(ctx, settings, size, reading, row)
-    if f is None:
+    c = _coc(ctx, settings, size, reading, row, missing, unusable)
+    if f is None and "focal_length_mm" not in named:
         missing.append("no focal length (FocalLength)")
-    if n is None:
+    if n is None and "f_number" not in named:
         missing.append("no f-number (FNumber, ApertureValue)")
 
     s, s_min, s_max = reading.focus_distance_mm, reading.focus_distance_min_mm, reading.focus_distance_max_mm
     row["focus_distance_source"] = sources.get("focus_distance")
     if settings["distance"] is not None:
         s, s_min, s_max, row["focus_distance_source"] = settings["distance"], None, None, "-s"
-    if s is None:
+    if s is None and "focus_distance" not in named:
         missing.append("no focus distance (maker note or SubjectDistance): give -s")
     row["focus_distance_mm"], row["focus_distance_min_mm"], row["focus_distance_max_mm"] = s, s_min, s_max
     row["distance_from"] = settings["distance_from"]
@@ -246,12 +274,18 @@ def _compute(ctx: click.Context, path: str, reading: Any, settings: dict[str, An
         _depth(row, f, n, c, s, s_min, s_max, lens, settings, missing)
     if f is not None and size is not None:
         _angles(row, f, s, size, lens, settings, missing)
-    _exposure(row, n, reading.shutter_s, reading.iso, missing)
+    _exposure(row, n, reading.shutter_s, reading.iso, missing, named)
     return row
 
 
-def _sensor(ctx, reading, settings, f, from_crop, from_plane, camera_names, match_preset):
-    """The sensor: --sensor/--crop/--camera, else the file's focal plane, 35 mm equivalent, camera preset."""
+def _sensor(ctx, reading, settings, f, from_crop, from_plane, camera_names, match_preset, unusable, named):
+    """The sensor: --sensor/--crop/--camera, else the file's focal plane, 35 mm equivalent, camera preset.
+
+    A crop factor from the 35 mm equivalent passes --crop's range and its sensor's sides --sensor's, or it is
+    named in ``unusable`` and the camera preset is tried.
+    """
+    from camtool.exif.reader import outside, show
+
     if settings["sensor"] is not None or settings["crop"] is not None or ctx.meta.get(CAMERA) is not None:
         from camtool.cli.equipment import resolve_sensor
 
@@ -261,8 +295,19 @@ def _sensor(ctx, reading, settings, f, from_crop, from_plane, camera_names, matc
     if reading.plane_width_mm is not None and reading.plane_height_mm is not None:
         return from_plane(reading.plane_width_mm, reading.plane_height_mm, reading.sources["sensor"])
     if reading.focal_length_35mm is not None and f is not None:
-        return from_crop(reading.focal_length_35mm / f, reading.pixels_w, reading.pixels_h,
-                         "Photo.FocalLengthIn35mmFilm / FocalLength")
+        crop = reading.focal_length_35mm / f
+        size = from_crop(crop, reading.pixels_w, reading.pixels_h, "Photo.FocalLengthIn35mmFilm / FocalLength")
+        valid = outside("crop", crop)
+        side = outside("sensor_side", min(size.width_mm, size.height_mm)) or \
+            outside("sensor_side", max(size.width_mm, size.height_mm))
+        if valid is None and side is None:
+            return size
+        named.add("sensor")
+        unusable.append(f"Exif.Photo.FocalLengthIn35mmFilm {show(reading.focal_length_35mm)} over FocalLength "
+                        f"{show(f)} mm: " + (f"a crop factor of {show(crop)} is outside the valid range: {valid}"
+                                            if valid is not None else
+                                            f"a sensor of {show(size.width_mm)} × {show(size.height_mm)} mm has a "
+                                            f"side outside the valid range: {side}"))
     body = match_preset(_index(ctx, settings, "camera"), camera_names(reading.make, reading.model))
     if body is not None:
         return from_plane(body.sensor.width_mm, body.sensor.height_mm, f"camera preset {body.id}")
@@ -279,25 +324,44 @@ def _index(ctx: click.Context, settings: dict[str, Any], kind: str) -> dict[str,
     return cache[kind]
 
 
-def _coc(ctx, settings, size, reading, row) -> float | None:
+def _coc(ctx, settings, size, reading, row, missing, unusable) -> float | None:
+    """--coc, else the --coc-rule (d/1500 by default) applied to the sensor; the CoC passes --coc's range.
+
+    The pixel pitch a ``px:K`` rule needs is --pixel-pitch, else the sensor width over the image's long side
+    if that lies in --pixel-pitch's range. A rule that does not parse is an error of --coc-rule (exit 2);
+    a file without a usable pitch, or whose CoC falls outside --coc's range, is a problem of that file.
+    """
     from camtool.core.units import UnitError
+    from camtool.exif.reader import outside, show
     from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
 
     if settings["coc"]:
         row["coc_mm"], row["coc_source"] = settings["coc"][0], "--coc"
         return float(row["coc_mm"])
-    if size is None:
-        return None
-    pitch = settings["pixel_pitch"]
-    if pitch is None and reading.pixels_w:
-        pitch = size.width_mm / max(reading.pixels_w, reading.pixels_h or 0)
     rule = settings["coc_rule"] or DEFAULT_RULE
-    try:
-        choice = coc_from_rule(rule, size.width_mm, size.height_mm, pitch)
+    try:  # the rule itself, on a full-frame sensor with a 5 µm pitch: a rule that does not parse fails every file
+        coc_from_rule(rule, 36.0, 24.0, 0.005)
     except UnitError as error:
         from camtool.cli.options import param_named
 
         raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "coc_rule")) from None
+    if size is None:
+        return None
+    pitch = settings["pixel_pitch"]
+    if pitch is None and reading.pixels_w:
+        derived = size.width_mm / max(reading.pixels_w, reading.pixels_h or 0)
+        pitch = derived if outside("pixel_pitch", derived) is None else None
+    try:
+        choice = coc_from_rule(rule, size.width_mm, size.height_mm, pitch)
+    except UnitError:
+        missing.append(f"no pixel pitch for --coc-rule {rule} (the image size gives none in range): "
+                       "give --pixel-pitch")
+        return None
+    valid = outside("coc", choice.coc_mm)
+    if valid is not None:
+        unusable.append(f"a CoC of {show(choice.coc_mm)} mm ({choice.origin}, sensor from {size.source}) "
+                        f"is outside the valid range: {valid}")
+        return None
     row["coc_mm"], row["coc_source"] = choice.coc_mm, choice.origin
     return choice.coc_mm
 
@@ -343,13 +407,13 @@ def _angles(row, f, s, size, lens, settings, missing) -> None:
                diagonal_deg=angles.diagonal_deg)
 
 
-def _exposure(row, n, t, iso, missing) -> None:
+def _exposure(row, n, t, iso, missing, named) -> None:
     from camtool.core.errors import DomainError
     from camtool.exposure.ev import ev100, exposure_value
 
-    if t is None:
+    if t is None and "shutter_s" not in named:
         missing.append("no shutter time (ExposureTime, ShutterSpeedValue)")
-    if iso is None:
+    if iso is None and "iso" not in named:
         missing.append("no ISO (ISOSpeedRatings)")
     if n is None or t is None:
         return

@@ -5,6 +5,15 @@ it is imported only here, on the ``camtool exif`` path. Every value comes with
 the tag it came from (``sources``) so a reader of the output can check it;
 values the file does not carry are None, never guessed.
 
+Nothing in a file is trusted. Only a regular file is handed to libexiv2 (a
+FIFO, a device or a directory is refused before it is opened, so nothing
+blocks); every number read from a tag passes the range of the option it
+stands for (the f-number that of ``-N``, the focal length that of ``-f``, the
+focus distance that of ``-s``) or is left out and named in ``problems``
+(``Exif.Photo.FNumber 65288 is outside the valid range: f/0.7 to f/1024``);
+every string read from a tag has its control characters escaped
+(:func:`printable`).
+
 The focus distance is read, most specific first: the maker note's recorded
 bracket (Canon FocusDistanceUpper/Lower), the maker note's single distance
 (Nikon lens data, Olympus focus info, Canon ShotInfo), then Exif
@@ -13,16 +22,21 @@ SubjectDistance. The conversions are in :mod:`camtool.exif.makernotes`.
 References
 ----------
 python-exiv2 (https://python-exiv2.readthedocs.io): ``ImageFactory.open``,
-``Image.readMetadata``, ``Image.exifData``, ``Exifdatum.toFloat``/``toRational``/``toInt64``;
+``Image.readMetadata``, ``Image.exifData``, ``Exifdatum.toRational``/``toInt64``;
 Exif 2.32 (CIPA DC-008-2019) for the standard tags.
 """
 
 from __future__ import annotations
 
+import errno
 import math
+import os
+import stat
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
-from camtool.core.errors import CamtoolError
+from camtool.core import domain, ranges
+from camtool.core.errors import CamtoolError, DomainError
 from camtool.exif import makernotes
 
 
@@ -35,9 +49,13 @@ class UnreadableFile(Exception):
 
 
 class Reading(NamedTuple):
-    """What one file's metadata says, in mm, seconds and ISO; None where it says nothing.
+    """What one file's metadata says, in mm, seconds and ISO; None where it says nothing usable.
 
-    ``sources`` maps each field name to the tag (exiv2 key) it came from.
+    ``sources`` maps each field name to the tag (exiv2 key) it came from;
+    ``problems`` holds (field, message) for each tag whose value was present
+    but unusable (outside its range, a zero denominator, unreadable), the
+    message naming the tag; the field is ``sensor`` or ``focus_distance`` for
+    the tags behind those, else the name of the field left None.
     """
 
     make: str | None = None
@@ -56,6 +74,113 @@ class Reading(NamedTuple):
     focus_distance_min_mm: float | None = None
     focus_distance_max_mm: float | None = None
     sources: dict[str, str] = {}  # noqa: RUF012 - NamedTuple default, never mutated (a fresh dict per reading)
+    problems: tuple[tuple[str, str], ...] = ()
+
+
+# -- strings: nothing from a file reaches a terminal, a CSV cell or a --field line raw ---------------------
+
+_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+# line and paragraph separators and the bidirectional controls: invisible, and they reorder or break lines
+_INVISIBLE = frozenset("\u2028\u2029\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+
+
+def _escape(char: str) -> str:
+    code = ord(char)
+    if char in _NAMED:
+        return _NAMED[char]
+    if code < 0x20 or 0x7F <= code <= 0x9F:
+        return f"\\x{code:02x}"
+    if 0xDC80 <= code <= 0xDCFF:  # a byte that is not UTF-8, as os.fsdecode and surrogateescape carry it
+        return f"\\x{code - 0xDC00:02x}"
+    if 0xD800 <= code <= 0xDFFF or char in _INVISIBLE:
+        return f"\\u{code:04x}"
+    return char
+
+
+def printable(text: str) -> str:
+    r"""``text`` with every control character in one visible form: ``\n``, ``\r``, ``\t``, else ``\xNN``.
+
+    Escaped: C0 (U+0000 to U+001F, ESC among them), DEL, C1 (U+0080 to
+    U+009F); a byte of a file name that is not UTF-8 (carried as a lone
+    surrogate by :func:`os.fsdecode`) as ``\xNN`` of that byte; other lone
+    surrogates, the line and paragraph separators and the bidirectional
+    controls as ``\uNNNN``. Everything else, backslashes included, is kept.
+
+    Examples
+    --------
+    >>> printable("\x1b[2JCanon")
+    '\\x1b[2JCanon'
+    >>> printable("EF\n50mm\tf/1.8\x9b")
+    'EF\\n50mm\\tf/1.8\\x9b'
+    >>> printable(os.fsdecode(b"caf\xe9.jpg")), printable("café")
+    ('caf\\xe9.jpg', 'café')
+    """
+    if text.isprintable():
+        return text
+    return "".join(_escape(char) if not char.isprintable() or char in _INVISIBLE else char for char in text)
+
+
+# -- numbers: the range of the option each one stands for ---------------------------------------------------
+
+def _bounds(bounds: tuple[float, float], unit: str, allow_inf: bool = False) -> Callable[[float], str | None]:
+    def outside(value: float) -> str | None:
+        ok = ranges.in_range(value, bounds, allow_inf) and (bounds[0] > 0 or value > 0)
+        return None if ok else ranges.describe(bounds, unit, allow_inf)
+
+    return outside
+
+
+def _domain(param: str) -> Callable[[float], str | None]:
+    def outside(value: float) -> str | None:
+        try:
+            domain.check(param, value)
+        except DomainError as error:
+            return error.valid
+        return None
+
+    return outside
+
+
+OUTSIDE: dict[str, Callable[[float], str | None]] = {
+    "focal_length": _bounds(ranges.FOCAL_LENGTH_MM, "mm"),  # -f
+    "f_number": _domain("f_number"),  # -N
+    "shutter_s": _domain("shutter_s"),  # -t
+    "iso": _domain("iso"),  # --iso
+    "distance": _bounds(ranges.DISTANCE_MM, "mm", allow_inf=True),  # -s
+    "sensor_side": _bounds(ranges.SENSOR_SIDE_MM, "mm"),  # --sensor WxH
+    "crop": _bounds(ranges.CROP_FACTOR, ""),  # --crop
+    "coc": _bounds(ranges.COC_MM, "mm"),  # --coc
+    "pixel_pitch": _bounds((ranges.PIXEL_PITCH_UM[0] / 1000, ranges.PIXEL_PITCH_UM[1] / 1000), "mm"),  # --pixel-pitch
+}
+"""For each kind of value, a function giving the valid range in words if the value lies outside it, else None.
+
+The ranges are the command-line options' own (:mod:`camtool.core.ranges`,
+:mod:`camtool.core.domain`): a number from a file passes the check a typed
+number passes. NaN lies outside every range.
+"""
+
+
+def outside(kind: str, value: float) -> str | None:
+    """The valid range of ``kind`` in words if ``value`` lies outside it (NaN always does), else None.
+
+    >>> outside("f_number", 8.0) is None, outside("f_number", 65288.0)
+    (True, 'f/0.7 to f/1024')
+    >>> outside("focal_length", float("nan"))
+    '1 to 5000 mm'
+    """
+    return OUTSIDE[kind](value)
+
+
+def show(value: float) -> str:
+    """A number for a message: ``65288``, ``1.5e-08``, ``inf``."""
+    return f"{value:.6g}"
+
+
+def _pow2(exponent: float) -> float:
+    """2^exponent without OverflowError: inf above the largest float, 0 below the smallest."""
+    if not math.isfinite(exponent):
+        return math.inf if exponent > 0 else 0.0
+    return math.inf if exponent >= 1024 else 2.0 ** max(exponent, -1100.0)
 
 
 # Exif FocalPlaneResolutionUnit: 2 inch, 3 cm (Exif 2.32 tag 0xA210); 4 mm and 5 µm are used by some cameras
@@ -77,6 +202,9 @@ _WANTED = frozenset({
     "Exif.OlympusFi.FocusDistance", "Exif.CanonCs.Lens", "Exif.Canon.LensModel", "Exif.Nikon3.Lens",
 })
 
+MAX_BUFFER_BYTES = 1 << 30
+"""Largest file read into memory (only for a name libexiv2 cannot be given: one that is not UTF-8)."""
+
 
 def _exiv2() -> Any:
     try:
@@ -94,6 +222,56 @@ def require_exiv2() -> None:
     _exiv2()
 
 
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a directory"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    return "not a regular file"
+
+
+def check_regular(path: str) -> None:
+    """Raise :class:`UnreadableFile` unless ``path`` (symbolic links followed) is a regular file.
+
+    A FIFO would block the reader until a writer came, a device could be
+    endless: both are refused here, before anything opens them.
+    """
+    try:
+        info = os.stat(path)
+    except OSError as error:
+        if error.errno in (errno.ENOENT, errno.ENOTDIR):
+            raise UnreadableFile("cannot be opened") from None
+        if error.errno == errno.ELOOP:
+            raise UnreadableFile("cannot be opened: a loop of symbolic links") from None
+        raise UnreadableFile(f"cannot be opened: {error.strerror or error}") from None
+    if not stat.S_ISREG(info.st_mode):
+        raise UnreadableFile(f"is {_kind(info.st_mode)}, not a regular file")
+
+
+def _open(exiv2: Any, path: str) -> tuple[Any, bytes | None]:
+    """The libexiv2 image of ``path`` with its metadata read, and the buffer it reads from (kept alive)."""
+    check_regular(path)
+    try:
+        path.encode("utf-8")
+    except UnicodeEncodeError:  # a name that is not UTF-8 (os.fsdecode's surrogates): give libexiv2 the bytes
+        from camtool.core.files import FileProblem, read_bytes
+
+        try:
+            buffer: bytes | None = read_bytes(path, MAX_BUFFER_BYTES)
+        except FileProblem as problem:
+            raise UnreadableFile(problem.problem) from None
+        image = exiv2.ImageFactory.open(buffer)
+    else:
+        buffer = None
+        image = exiv2.ImageFactory.open(path)
+    image.readMetadata()
+    return image, buffer
+
+
 def read_file(path: str) -> Reading:
     """Read the shot's settings from the image at ``path``.
 
@@ -102,63 +280,237 @@ def read_file(path: str) -> Reading:
     ExifUnavailable
         python-exiv2 is not installed.
     UnreadableFile
-        Not a file, not an image libexiv2 knows, truncated, or without any
-        Exif metadata (the message says which).
+        Not a regular file, not an image libexiv2 knows, truncated, or
+        without any Exif metadata (the message, one line, says which).
     """
     exiv2 = _exiv2()
     try:
-        image = exiv2.ImageFactory.open(path)
-        image.readMetadata()
+        image, _buffer = _open(exiv2, path)
+        data = {key: datum for datum in image.exifData() if (key := datum.key()) in _WANTED}
+    except UnreadableFile:
+        raise
     except exiv2.Exiv2Error as error:
         raise UnreadableFile(_reason(error)) from None
     except OSError as error:
         raise UnreadableFile(error.strerror or str(error)) from None
-    data = {datum.key(): datum for datum in image.exifData() if datum.key() in _WANTED}
+    except (ValueError, OverflowError, MemoryError, RuntimeError, UnicodeError) as error:
+        # libexiv2 on a structure it cannot follow: one line, never a traceback
+        raise UnreadableFile(f"truncated or corrupt ({_reason(error)})") from None
     if not data:
         raise UnreadableFile("no Exif metadata")
-    sources: dict[str, str] = {}
-    fields: dict[str, Any] = {"sources": sources}
+    return _Tags(data, image).reading()
 
-    def text(name: str, *keys: str) -> None:
+
+class _Tags:
+    """The wanted tags of one file, turned into a :class:`Reading` with the problems found on the way."""
+
+    def __init__(self, data: dict[str, Any], image: Any) -> None:
+        self.data, self.image = data, image
+        self.sources: dict[str, str] = {}
+        self.fields: dict[str, Any] = {"sources": self.sources}
+        self.problems: list[tuple[str, str]] = []
+
+    def reading(self) -> Reading:
+        self.text("make", "Exif.Image.Make")
+        self.text("model", "Exif.Image.Model")
+        self.text("lens", "Exif.Photo.LensModel", "Exif.Canon.LensModel")
+        self.number("focal_length_mm", "focal_length", "Exif.Photo.FocalLength", "Exif.Image.FocalLength")
+        self.number("focal_length_35mm", "focal_length", "Exif.Photo.FocalLengthIn35mmFilm")
+        # FNumber; else the APEX aperture value Av, N = 2^(Av/2) (Exif 2.32 ApertureValue); Av 0 is f/1
+        self.number("f_number", "f_number", "Exif.Photo.FNumber", "Exif.Image.FNumber")
+        self.number("f_number", "f_number", "Exif.Photo.ApertureValue", apex=lambda av: _pow2(av / 2.0))
+        # ExposureTime; else the APEX shutter speed value Tv, t = 2^(−Tv) (Exif 2.32 ShutterSpeedValue); Tv 0 is 1 s
+        self.number("shutter_s", "shutter_s", "Exif.Photo.ExposureTime", "Exif.Image.ExposureTime")
+        self.number("shutter_s", "shutter_s", "Exif.Photo.ShutterSpeedValue", apex=lambda tv: _pow2(-tv))
+        # ISOSpeedRatings is a 16-bit field: cameras write 65535 for ISO 65535 and above and put the value in
+        # StandardOutputSensitivity or RecommendedExposureIndex (Exif 2.3, SensitivityType)
+        self.number("iso", "iso", "Exif.Photo.ISOSpeedRatings", skip=lambda iso: iso >= 65535)
+        self.number("iso", "iso", "Exif.Photo.StandardOutputSensitivity", "Exif.Photo.RecommendedExposureIndex")
+        self.pixels()
+        self.focal_plane()
+        self.focus()
+        return Reading(**self.fields, problems=tuple(self.problems))
+
+    def unusable(self, field: str, key: str, shown: str, why: str) -> None:
+        self.problems.append((field, f"{key} {shown} {why}"))
+
+    def text(self, name: str, *keys: str) -> None:
         for key in keys:
-            if key in data:
-                value = data[key].toString().strip().strip("\x00").strip()
-                if value:
-                    fields[name], sources[name] = value, _short(key)
-                    return
+            if key not in self.data:
+                continue
+            try:
+                raw = self.data[key].toString()
+            except Exception:  # a value libexiv2 cannot render is unusable, named below
+                self.problems.append((name, f"{key} cannot be read as text"))
+                continue
+            value = printable(str(raw).strip().strip("\x00").strip())
+            if value:
+                self.fields[name], self.sources[name] = value, _short(key)
+                return
 
-    def number(name: str, *keys: str, convert: Any = None) -> None:
+    def rational(self, field: str, key: str) -> tuple[int, int] | None:
+        """The tag's first value as (numerator, denominator); None (and a problem) if it has none."""
+        try:
+            datum = self.data[key]
+            if datum.count() < 1:  # an empty value: nothing recorded
+                return None
+            num, den = datum.toRational(0)
+            return int(num), int(den)
+        except Exception:  # a malformed value is unusable, named
+            self.problems.append((field, f"{key} cannot be read as a number"))
+            return None
+
+    def number(self, name: str, kind: str, *keys: str, apex: Callable[[float], float] | None = None,
+               skip: Callable[[float], bool] | None = None) -> None:
+        """The first of ``keys`` whose value passes ``kind``'s range; the others present are named as problems.
+
+        0 means "not recorded" for a plain value (Exif's convention for
+        unknown), but is a real value for an APEX one (Av 0 is f/1).
+        """
+        if name in self.fields:
+            return
         for key in keys:
-            if key in data:
-                value = _float(data[key])
-                if value is not None and convert is not None:
-                    value = convert(value)
-                if value is not None and math.isfinite(value) and value > 0:
-                    fields[name], sources[name] = value, _short(key)
-                    return
+            if key not in self.data:
+                continue
+            raw = self.rational(name, key)
+            if raw is None:
+                continue
+            num, den = raw
+            if num == 0 and apex is None:
+                continue
+            shown = f"{num}/{den}" if den != 1 else str(num)
+            if den == 0:
+                self.unusable(name, key, shown, "has a zero denominator")
+                continue
+            value = num / den
+            if skip is not None and skip(value):
+                continue
+            if apex is not None:
+                converted = apex(value)
+                shown, value = f"{shown} (= {show(converted)})", converted
+            valid = outside(kind, value)
+            if valid is not None:
+                self.unusable(name, key, shown, f"is outside the valid range: {valid}")
+                continue
+            self.fields[name], self.sources[name] = value, _short(key)
+            return
 
-    text("make", "Exif.Image.Make")
-    text("model", "Exif.Image.Model")
-    text("lens", "Exif.Photo.LensModel", "Exif.Canon.LensModel")
-    number("focal_length_mm", "Exif.Photo.FocalLength", "Exif.Image.FocalLength")
-    number("focal_length_35mm", "Exif.Photo.FocalLengthIn35mmFilm")
-    # FNumber; else the APEX aperture value Av, N = 2^(Av/2) (Exif 2.32 ApertureValue)
-    number("f_number", "Exif.Photo.FNumber", "Exif.Image.FNumber")
-    number("f_number", "Exif.Photo.ApertureValue", convert=lambda av: 2.0 ** (av / 2.0)) \
-        if "f_number" not in fields else None
-    # ExposureTime; else the APEX shutter speed value Tv, t = 2^(−Tv) (Exif 2.32 ShutterSpeedValue)
-    number("shutter_s", "Exif.Photo.ExposureTime", "Exif.Image.ExposureTime")
-    if "shutter_s" not in fields:
-        number("shutter_s", "Exif.Photo.ShutterSpeedValue", convert=lambda tv: 2.0 ** (-tv))
-    # ISOSpeedRatings is a 16-bit field: cameras write 65535 for ISO 65535 and above and put the value in
-    # StandardOutputSensitivity or RecommendedExposureIndex (Exif 2.3, SensitivityType)
-    number("iso", "Exif.Photo.ISOSpeedRatings", convert=lambda iso: iso if iso < 65535 else None)
-    if "iso" not in fields:
-        number("iso", "Exif.Photo.StandardOutputSensitivity", "Exif.Photo.RecommendedExposureIndex")
-    _pixels(data, fields, image)
-    _focal_plane(data, fields)
-    _focus(data, fields)
-    return Reading(**fields)
+    def integer(self, field: str, key: str) -> int | None:
+        if key not in self.data:
+            return None
+        try:
+            datum = self.data[key]
+            return int(datum.toInt64(0)) if datum.count() >= 1 else None
+        except Exception:  # a malformed value is unusable, named
+            self.problems.append((field, f"{key} cannot be read as a number"))
+            return None
+
+    def pixels(self) -> None:
+        # The Exif image size (the one FocalPlaneXResolution refers to), else the image's own size
+        for w_key, h_key in (("Exif.Photo.PixelXDimension", "Exif.Photo.PixelYDimension"),
+                             ("Exif.Image.ImageWidth", "Exif.Image.ImageLength")):
+            w, h = self.integer("sensor", w_key), self.integer("sensor", h_key)
+            if w and h and w > 0 and h > 0:
+                self.fields["pixels_w"], self.fields["pixels_h"] = w, h
+                self.sources["pixels"] = f"{_short(w_key)}/{_short(h_key).rsplit('.', 1)[1]}"
+                return
+        try:
+            w, h = int(self.image.pixelWidth()), int(self.image.pixelHeight())
+        except Exception:  # no usable image size: the rungs that need one are passed over
+            return
+        if w > 0 and h > 0:
+            self.fields["pixels_w"], self.fields["pixels_h"] = w, h
+            self.sources["pixels"] = "image size"
+
+    def focal_plane(self) -> None:
+        """Sensor size from FocalPlaneX/YResolution (pixels per unit on the sensor) and the image size."""
+        w, h = self.fields.get("pixels_w"), self.fields.get("pixels_h")
+        if not (w and h):
+            return
+        for group in ("Photo", "Image"):
+            x_key, y_key = f"Exif.{group}.FocalPlaneXResolution", f"Exif.{group}.FocalPlaneYResolution"
+            if x_key not in self.data:
+                continue
+            x_raw = self.rational("sensor", x_key)
+            y_raw = self.rational("sensor", y_key) if y_key in self.data else x_raw
+            unit = self.integer("sensor", f"Exif.{group}.FocalPlaneResolutionUnit")
+            unit = 2 if unit is None else unit  # Exif default: inches
+            if x_raw is None or y_raw is None or unit not in _RESOLUTION_UNIT_MM:
+                continue
+            (xn, xd), (yn, yd) = x_raw, y_raw
+            if xn <= 0 or xd <= 0 or yn <= 0 or yd <= 0:
+                continue
+            width = w * xd / xn * _RESOLUTION_UNIT_MM[unit]
+            height = h * yd / yn * _RESOLUTION_UNIT_MM[unit]
+            # a diagonal outside 1 to 100 mm is a resized image or a wrong unit, not a sensor (the same
+            # sanity check as ExifTool's CalcScaleFactor35efl); the next source is used instead
+            if not 1.0 < math.hypot(width, height) < 100.0:
+                continue
+            valid = outside("sensor_side", min(width, height))
+            if valid is not None:
+                self.unusable("sensor", f"Exif.{group}.FocalPlaneX/YResolution", f"{xn}/{xd}, {yn}/{yd}",
+                              f"give a sensor of {show(width)} × {show(height)} mm, a side outside {valid}")
+                continue
+            self.fields["plane_width_mm"], self.fields["plane_height_mm"] = width, height
+            self.sources["sensor"] = f"{group}.FocalPlaneX/YResolution"
+            return
+
+    def distance(self, key: str, value: float | None) -> float | None:
+        """``value`` (mm) if it is a focus distance ``-s`` would take; else None, named as a problem."""
+        if value is None:
+            return None
+        valid = outside("distance", value)
+        if valid is not None:
+            self.unusable("focus_distance", key, f"(= {show(value)} mm)", f"is outside the valid range: {valid}")
+            return None
+        return value
+
+    def focus(self) -> None:
+        sources, fields, data = self.sources, self.fields, self.data
+        upper = self.integer("focus_distance", "Exif.CanonFi.FocusDistanceUpper")
+        lower = self.integer("focus_distance", "Exif.CanonFi.FocusDistanceLower")
+        far = makernotes.canon_focus_distance_mm(upper) if upper is not None else None
+        near = makernotes.canon_focus_distance_mm(lower) if lower is not None else None
+        if far is not None and near is not None:
+            near, far = min(near, far), max(near, far)
+            fields["focus_distance_min_mm"], fields["focus_distance_max_mm"] = near, far
+            # ExifTool's DOF takes the middle of the bracket (Composite.pm, DOF); the geometric mean would be
+            # no better founded, and the bracket's ends are reported beside it.
+            fields["focus_distance_mm"] = (near + far) / 2.0 if math.isfinite(far) else far
+            sources["focus_distance"] = "CanonFi.FocusDistanceUpper/Lower (middle)"
+            return
+        if far is not None:
+            fields["focus_distance_mm"], sources["focus_distance"] = far, "CanonFi.FocusDistanceUpper"
+            return
+        for key in ("Exif.NikonLd3.FocusDistance", "Exif.NikonLd4.FocusDistance", "Exif.NikonLd2.FocusDistance"):
+            raw = self.integer("focus_distance", key)
+            if raw:  # 0 is written by lenses without a distance encoder
+                value = self.distance(key, makernotes.nikon_focus_distance_mm(raw))
+                if value is not None:
+                    fields["focus_distance_mm"], sources["focus_distance"] = value, _short(key)
+                    return
+        if "Exif.OlympusFi.FocusDistance" in data:
+            raw_pair = self.rational("focus_distance", "Exif.OlympusFi.FocusDistance")
+            value = makernotes.olympus_focus_distance_mm(*raw_pair) if raw_pair is not None else None
+            value = self.distance("Exif.OlympusFi.FocusDistance", value)
+            if value is not None:
+                fields["focus_distance_mm"], sources["focus_distance"] = value, "OlympusFi.FocusDistance"
+                return
+        raw = self.integer("focus_distance", "Exif.CanonSi.SubjectDistance")
+        value = makernotes.canon_focus_distance_mm(raw) if raw is not None else None
+        value = self.distance("Exif.CanonSi.SubjectDistance", value)
+        if value is not None:
+            fields["focus_distance_mm"], sources["focus_distance"] = value, "CanonSi.SubjectDistance"
+            return
+        for key in ("Exif.Photo.SubjectDistance", "Exif.Image.SubjectDistance"):
+            if key in data:
+                raw_pair = self.rational("focus_distance", key)
+                if raw_pair is None:
+                    continue
+                value = self.distance(key, makernotes.exif_subject_distance_mm(*raw_pair))
+                if value is not None:
+                    fields["focus_distance_mm"], sources["focus_distance"] = value, _short(key)
+                    return
 
 
 def _short(key: str) -> str:
@@ -167,8 +519,8 @@ def _short(key: str) -> str:
 
 
 def _reason(error: Exception) -> str:
-    text = str(getattr(error, "message", "") or error).strip()
-    message = text.splitlines()[0] if text else type(error).__name__
+    text = printable(str(getattr(error, "message", "") or error).strip())
+    message = text.split("\\n")[0] if text else type(error).__name__
     lowered = message.lower()
     if "unknown image type" in lowered or "not an image" in lowered or "supported" in lowered:
         return "not an image libexiv2 can read"
@@ -177,111 +529,3 @@ def _reason(error: Exception) -> str:
     if any(word in lowered for word in ("corrupt", "eof", "truncat", "exceeds", "failed to read")):
         return f"truncated or corrupt ({message[:1].lower() + message[1:]})"
     return message
-
-
-def _float(datum: Any) -> float | None:
-    try:
-        if datum.count() < 1:
-            return None
-        num, den = datum.toRational(0)
-        if den == 0:
-            return None
-        return float(num) / float(den)
-    except Exception:  # a malformed value is treated as absent
-        return None
-
-
-def _int(datum: Any) -> int | None:
-    try:
-        return int(datum.toInt64(0)) if datum.count() >= 1 else None
-    except Exception:
-        return None
-
-
-def _pixels(data: dict[str, Any], fields: dict[str, Any], image: Any) -> None:
-    # The Exif image size (the one FocalPlaneXResolution refers to), else the image's own size
-    for w_key, h_key in (("Exif.Photo.PixelXDimension", "Exif.Photo.PixelYDimension"),
-                         ("Exif.Image.ImageWidth", "Exif.Image.ImageLength")):
-        w = _int(data[w_key]) if w_key in data else None
-        h = _int(data[h_key]) if h_key in data else None
-        if w and h and w > 0 and h > 0:
-            fields["pixels_w"], fields["pixels_h"] = w, h
-            fields["sources"]["pixels"] = f"{_short(w_key)}/{_short(h_key).rsplit('.', 1)[1]}"
-            return
-    try:
-        w, h = int(image.pixelWidth()), int(image.pixelHeight())
-    except Exception:
-        return
-    if w > 0 and h > 0:
-        fields["pixels_w"], fields["pixels_h"] = w, h
-        fields["sources"]["pixels"] = "image size"
-
-
-def _focal_plane(data: dict[str, Any], fields: dict[str, Any]) -> None:
-    """Sensor size from FocalPlaneX/YResolution (pixels per unit on the sensor) and the image size."""
-    w, h = fields.get("pixels_w"), fields.get("pixels_h")
-    if not (w and h):
-        return
-    for group in ("Photo", "Image"):
-        x_key, y_key = f"Exif.{group}.FocalPlaneXResolution", f"Exif.{group}.FocalPlaneYResolution"
-        unit_key = f"Exif.{group}.FocalPlaneResolutionUnit"
-        x = _float(data[x_key]) if x_key in data else None
-        y = _float(data[y_key]) if y_key in data else x
-        unit = _int(data[unit_key]) if unit_key in data else 2  # Exif default: inches
-        if x and y and x > 0 and y > 0 and unit in _RESOLUTION_UNIT_MM:
-            width, height = w / x * _RESOLUTION_UNIT_MM[unit], h / y * _RESOLUTION_UNIT_MM[unit]
-            # a diagonal outside 1 to 100 mm is a resized image or a wrong unit, not a sensor (the same
-            # sanity check as ExifTool's CalcScaleFactor35efl); the next source is used instead
-            if 1.0 < math.hypot(width, height) < 100.0:
-                fields["plane_width_mm"], fields["plane_height_mm"] = width, height
-                fields["sources"]["sensor"] = f"{group}.FocalPlaneX/YResolution"
-                return
-
-
-def _focus(data: dict[str, Any], fields: dict[str, Any]) -> None:
-    sources = fields["sources"]
-    upper = _int(data["Exif.CanonFi.FocusDistanceUpper"]) if "Exif.CanonFi.FocusDistanceUpper" in data else None
-    lower = _int(data["Exif.CanonFi.FocusDistanceLower"]) if "Exif.CanonFi.FocusDistanceLower" in data else None
-    far = makernotes.canon_focus_distance_mm(upper) if upper is not None else None
-    near = makernotes.canon_focus_distance_mm(lower) if lower is not None else None
-    if far is not None and near is not None:
-        near, far = min(near, far), max(near, far)
-        fields["focus_distance_min_mm"], fields["focus_distance_max_mm"] = near, far
-        # ExifTool's DOF takes the middle of the bracket (Composite.pm, DOF); the geometric mean would be
-        # no better founded, and the bracket's ends are reported beside it.
-        fields["focus_distance_mm"] = (near + far) / 2.0 if math.isfinite(far) else far
-        sources["focus_distance"] = "CanonFi.FocusDistanceUpper/Lower (middle)"
-        return
-    if far is not None:
-        fields["focus_distance_mm"], sources["focus_distance"] = far, "CanonFi.FocusDistanceUpper"
-        return
-    for key in ("Exif.NikonLd3.FocusDistance", "Exif.NikonLd4.FocusDistance", "Exif.NikonLd2.FocusDistance"):
-        raw = _int(data[key]) if key in data else None
-        if raw:  # 0 is written by lenses without a distance encoder
-            fields["focus_distance_mm"], sources["focus_distance"] = makernotes.nikon_focus_distance_mm(raw), _short(key)
-            return
-    if "Exif.OlympusFi.FocusDistance" in data:
-        try:
-            num, den = data["Exif.OlympusFi.FocusDistance"].toRational(0)
-        except Exception:
-            num, den = 0, 1
-        value = makernotes.olympus_focus_distance_mm(num, den)
-        if value is not None:
-            fields["focus_distance_mm"], sources["focus_distance"] = value, "OlympusFi.FocusDistance"
-            return
-    if "Exif.CanonSi.SubjectDistance" in data:
-        raw = _int(data["Exif.CanonSi.SubjectDistance"])
-        value = makernotes.canon_focus_distance_mm(raw) if raw is not None else None
-        if value is not None:
-            fields["focus_distance_mm"], sources["focus_distance"] = value, "CanonSi.SubjectDistance"
-            return
-    for key in ("Exif.Photo.SubjectDistance", "Exif.Image.SubjectDistance"):
-        if key in data:
-            try:
-                num, den = data[key].toRational(0)
-            except Exception:
-                continue
-            value = makernotes.exif_subject_distance_mm(num, den)
-            if value is not None:
-                fields["focus_distance_mm"], sources["focus_distance"] = value, _short(key)
-                return
