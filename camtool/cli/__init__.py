@@ -7,6 +7,7 @@ not for rich, numpy or the other commands.
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import importlib
 import importlib.util
@@ -86,21 +87,89 @@ class CamtoolGroup(click.Group):
         try:
             code = super().main(args=args, prog_name=prog_name or "camtool", standalone_mode=False, **extra)
             _flush_stdout()
+        except Interrupted:
+            _interrupted()
         except click.exceptions.Abort:
             click.echo("Aborted!", err=True)
             sys.exit(1)
         except click.ClickException as error:
             _flush_stdout()
-            click.echo(f"Error: {error.format_message()}", err=True)
+            click.echo(f"Error: {_shown(_hinted(error, args))}", err=True)
             sys.exit(error.exit_code)
         except FileError as error:  # a file found wrong only when a preset is used
-            click.echo(f"Error: {error}", err=True)
+            click.echo(f"Error: {_shown(str(error))}", err=True)
             sys.exit(1)
         except _WriteFailed as failure:
             _output_failed(failure.error)
         except OSError as error:
             _output_failed(error)
         sys.exit(code if isinstance(code, int) else 0)
+
+
+class Interrupted(BaseException):
+    """SIGINT (Ctrl-C), raised by camtool's own handler so that no library catches it on the way out."""
+
+
+def _on_sigint(signum: int, frame: Any) -> None:
+    raise Interrupted()
+
+
+def _interrupted() -> None:
+    """Ctrl-C: one line and exit 130 (128 + SIGINT), as shells expect, wherever it landed."""
+    _discard_stdout()
+    try:
+        sys.stderr.write("camtool: interrupted\n")
+        sys.stderr.flush()
+    except (OSError, ValueError):
+        pass
+    os._exit(130)
+
+
+def _shown(message: str) -> str:
+    """An error message as printed: one line, control characters escaped (it may quote what a file held)."""
+    from camtool.render.serial import printable
+
+    return printable(" ".join(message.split("\n")))
+
+
+_CHOICE_WORDS = {"feet": "imperial", "foot": "imperial", "ft": "imperial", "inches": "imperial", "us": "imperial",
+                 "metres": "metric", "meters": "metric", "m": "metric", "si": "metric", "mm": "metric",
+                 "text": "table", "tsv": "csv"}
+"""Words people type for a choice that is spelled otherwise (``--units feet``)."""
+
+_UNITS = {"m", "mm", "cm", "km", "ft", "in", "um", "µm", "s", "ms", "min", "h", "deg", "°", "stops", "ev"}
+
+
+def _hinted(error: click.ClickException, args: Any) -> str:
+    """click's message, with the hint a photographer needs: the unit apart from its number, a near-miss choice,
+    a bad CAMTOOL_FORMAT that nobody typed as --format."""
+    message = error.format_message()
+    typed = list(args) if args is not None else sys.argv[1:]
+    if isinstance(error, click.UsageError) and message.startswith("Got unexpected extra argument"):
+        extra = message[message.find("(") + 1:message.rfind(")")].split()
+        if extra and extra[0].lower() in _UNITS:
+            return f"{message}: a value and its unit are one word, e.g. 3m or 50mm, not 3 m"
+        if extra and extra[0][:1].isdigit():
+            return f"{message}: a list is written with commas and no spaces, e.g. -N 2.8,4,5.6"
+        return message
+    param = getattr(error, "param", None)
+    if isinstance(error, click.BadParameter) and param is not None and isinstance(param.type, click.Choice):
+        envvar = getattr(param, "envvar", None)
+        if isinstance(envvar, str) and os.environ.get(envvar) and not any(
+                arg in param.opts or any(arg.startswith(opt + "=") for opt in param.opts) for arg in typed):
+            choices = ", ".join(map(str, param.type.choices))
+            return f"{envvar}={os.environ[envvar]!r} is not one of {choices} (unset it, or give {param.opts[-1]})"
+        import difflib
+        import re
+
+        found = re.search(r"'([^']*)' is not one of", message)
+        if found:
+            choices = [str(c) for c in param.type.choices]
+            word = _CHOICE_WORDS.get(found.group(1).strip().lower())
+            close = [word] if word in choices else difflib.get_close_matches(found.group(1), choices, n=2, cutoff=0.5)
+            if close:
+                return f"{message} Did you mean {' or '.join(repr(c) for c in close)}?"
+    return message
 
 
 class _WriteFailed(Exception):
@@ -199,7 +268,13 @@ def cli() -> None:
 
 def main() -> None:
     """Console-script entry point."""
+    import signal
+
+    with contextlib.suppress(ValueError, OSError):  # not the main thread, or no such signal here
+        signal.signal(signal.SIGINT, _on_sigint)
     try:
         cli.main()
+    except Interrupted:
+        _interrupted()
     except OSError as error:
         _output_failed(error)

@@ -205,12 +205,11 @@ def ladder_errors(ctx: click.Context) -> Any:
             raise click.BadParameter(f"{error.model} is not available here: it needs {_missing(ctx, error)}",
                                      ctx=ctx, param=param_named(ctx, "model")) from None
         except DomainError as error:
-            name = _LENS_PARAMS.get(error.param)
-            if name is None:
+            if error.param not in _LENS_PARAMS:
                 raise
-            from camtool.cli.options import domain_message
+            from camtool.cli.options import bad_parameter
 
-            raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param_named(ctx, name)) from None
+            raise bad_parameter(ctx, error) from None
         except ValueError as error:
             raytrace = sys.modules.get("camtool.optics.tracer")  # numpy only where a ray trace ran
             if raytrace is not None and isinstance(error, raytrace.RayTraceError):
@@ -229,7 +228,7 @@ def _missing(ctx: click.Context, error: Any) -> str:
     return f"{error.needs} ({either(sources)})" if sources else error.missing
 
 
-_LENS_PARAMS = {"pupil_magnification": "pupil_mag", "hiatus_mm": "hiatus", "wavelength_nm": "wavelength"}
+_LENS_PARAMS = frozenset({"pupil_magnification", "hiatus_mm", "wavelength_nm"})
 
 
 def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,

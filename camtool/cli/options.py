@@ -31,6 +31,9 @@ PIXEL_PITCH_UM = LengthType("um", bounds=(ranges.PIXEL_PITCH_UM[0] / 1000, range
 
 # Library parameter name -> click parameter name, for error messages.
 PARAM_FOR = {
+    "pupil_magnification": "pupil_mag",
+    "hiatus_mm": "hiatus",
+    "wavelength_nm": "wavelength",
     "focal_length_mm": "focal_length",
     "f_number": "f_number",
     "coc_mm": "coc",
@@ -110,25 +113,39 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
     try:
         yield
     except DomainError as error:
-        name = PARAM_FOR.get(error.param, error.param)
-        param = param_named(ctx, name)
-        if param is not None:
-            raise click.BadParameter(domain_message(error, name), ctx=ctx, param=param) from None
-        # A value the library derived (a hyperfocal distance, an object distance from a magnification):
-        # blame the option the user typed that drives it, with the value typed.
-        blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _given(ctx, p)),
-                      None)
-        message = domain_message(error, name)
-        listed = error.value.split(",") if isinstance(error.value, str) else []
-        named = [p for p in (param_named(ctx, PARAM_FOR.get(n.strip(), n.strip())) for n in listed)
-                 if isinstance(p, click.Option)]
-        if named:  # options left out together ("exactly one of f_number, shutter_s, iso left to solve")
-            options = " and ".join("/".join(p.opts) for p in named)
-            raise click.UsageError(f"missing {options}: {error.valid}", ctx) from None
-        if blamed is not None:
-            message = (f"{_typed(ctx, blamed)} gives {_DERIVED.get(error.param, error.param)} of "
-                       + message.replace(" is outside the valid range", ", outside the valid range", 1))
-        raise click.BadParameter(message, ctx=ctx, param=blamed) from None
+        raise bad_parameter(ctx, error) from None
+
+
+def bad_parameter(ctx: click.Context, error: DomainError) -> click.ClickException:
+    """The one translation of a library :class:`DomainError` into a click error naming an option the user typed."""
+    name = PARAM_FOR.get(error.param, error.param)
+    param = param_named(ctx, name) or param_named(ctx, error.param)
+    if param is not None:
+        name = param.name or name
+    if param is not None and not _typed_by_user(ctx, param):
+        # the value is the option's default, or came from a preset: name what the user typed that it meets
+        partner = next((p for p in (param_named(ctx, n) for n in _PARTNERS.get(name, ()))
+                        if p is not None and _typed_by_user(ctx, p)), None)
+        if partner is not None:
+            source = "its default" if _from_default(ctx, param) else "the preset's value"
+            return click.BadParameter(f"{_typed(ctx, partner)} does not go with {'/'.join(param.opts)} at {source}: "
+                                      + domain_message(error, name), ctx=ctx, param=partner)
+    if param is not None:
+        return click.BadParameter(domain_message(error, name), ctx=ctx, param=param)
+    # A value the library derived (a hyperfocal distance, an object distance from a magnification):
+    # blame the option the user typed that drives it, with the value typed.
+    blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _given(ctx, p)), None)
+    message = domain_message(error, name)
+    listed = error.value.split(",") if isinstance(error.value, str) else []
+    named = [p for p in (param_named(ctx, PARAM_FOR.get(n.strip(), n.strip())) for n in listed)
+             if isinstance(p, click.Option)]
+    if named:  # options left out together ("exactly one of f_number, shutter_s, iso left to solve")
+        options = " and ".join("/".join(p.opts) for p in named)
+        return click.UsageError(f"missing {options}: {error.valid}", ctx)
+    if blamed is not None:
+        message = (f"{_typed(ctx, blamed)} gives {_DERIVED.get(error.param, error.param)} of "
+                   + message.replace(" is outside the valid range", ", outside the valid range", 1))
+    return click.BadParameter(message, ctx=ctx, param=blamed)
 
 
 BLAME_ORDER = ("magnification", "fill", "subject_size", "f_number", "focal_length", "coc", "coc_rule", "distance",
@@ -138,6 +155,20 @@ BLAME_ORDER = ("magnification", "fill", "subject_size", "f_number", "focal_lengt
 _DERIVED = {"distance_mm": "a distance", "near_mm": "a near limit", "far_mm": "a far limit",
             "magnification": "a magnification", "coc_mm": "a CoC", "focal_length_mm": "a focal length",
             "f_number": "an f-number"}
+
+
+_PARTNERS = {"hiatus": ("pupil_mag", "focal_length", "distance"), "pupil_mag": ("hiatus", "focal_length")}
+"""Options whose values meet in one check: when the one the library names was not typed, these are blamed."""
+
+
+def _typed_by_user(ctx: click.Context, param: click.Parameter) -> bool:
+    """Whether the user gave ``param`` (on the command line or in its environment variable)."""
+    source = ctx.get_parameter_source(param.name or "")
+    return source in (click.core.ParameterSource.COMMANDLINE, click.core.ParameterSource.ENVIRONMENT)
+
+
+def _from_default(ctx: click.Context, param: click.Parameter) -> bool:
+    return ctx.get_parameter_source(param.name or "") in (click.core.ParameterSource.DEFAULT, None)
 
 
 def _given(ctx: click.Context, param: click.Parameter) -> bool:

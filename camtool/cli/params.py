@@ -9,6 +9,7 @@ are flattened by :func:`flatten`. Bad values fail with click's one-line
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Iterable
 from typing import Any
 
@@ -31,6 +32,10 @@ class _ListType(click.ParamType):
         if isinstance(value, list):
             return value
         items = [item for item in str(value).split(",") if item.strip()] if isinstance(value, str) else [value]
+        if isinstance(value, str) and len(items) == 2:
+            message = self.decimal_comma(value.strip(), items[0].strip(), items[1].strip())
+            if message:
+                self.fail(message, param, ctx)
         if not items:
             self.fail(f"{value!r} is empty; expected {self.name}", param, ctx)
         out = []
@@ -44,6 +49,15 @@ class _ListType(click.ParamType):
                 self.fail(f"{shown} is outside the valid range: {self.valid}", param, ctx)
             out.append(number)
         return out
+
+
+    def decimal_comma(self, value: str, first: str, second: str) -> str | None:
+        """A message when ``first,second`` may be one number written with a decimal comma (see the subclasses)."""
+        return None
+
+
+_DIGITS = re.compile(r"^[0-9]+$")
+_DIGITS_UNIT = re.compile(r"^([0-9]+)\s*([a-zA-Zµ\"']+)$")
 
 
 class LengthType(_ListType):
@@ -70,6 +84,18 @@ class LengthType(_ListType):
     def parse(self, text: str) -> float:
         return parse_length(text, self.default_unit)
 
+    def decimal_comma(self, value: str, first: str, second: str) -> str | None:
+        """``3,5ft``: a bare whole number, then digits with a unit, reads as 3.5 ft written with a decimal comma.
+
+        A list of two bare numbers (``-s 3,5``) stays a list: it gives a row each, in plain sight.
+        """
+        unit = _DIGITS_UNIT.match(second)
+        if not (_DIGITS.match(first) and unit):
+            return None
+        shown = "µm" if self.default_unit == "um" else self.default_unit
+        return (f"{value!r} is ambiguous: {first}.{unit.group(1)} {unit.group(2)} is written {first}.{second} "
+                f"(a decimal point); for the two values {first} {shown} and {second} write {first}{shown},{second}")
+
     def check(self, value: float) -> bool:
         if value == math.inf:
             return self.allow_inf
@@ -92,6 +118,21 @@ class FNumberType(_ListType):
 
     def check(self, value: float) -> bool:
         return F_NUMBER[0] <= value <= F_NUMBER[1]
+
+    def decimal_comma(self, value: str, first: str, second: str) -> str | None:
+        """``2,8`` or ``5,6``: two bare digit strings that read as a third-stop f-number with a decimal comma.
+
+        ``8,11`` and ``4,8`` (no third stop) stay lists of two f-numbers.
+        """
+        if not (_DIGITS.match(first) and _DIGITS.match(second)):
+            return None
+        from camtool.exposure.stops import THIRD_STOP_F_NUMBERS
+
+        decimal = float(f"{first}.{second}")
+        if decimal != int(decimal) and decimal in THIRD_STOP_F_NUMBERS:
+            return (f"{value!r} is ambiguous: f/{decimal:g} is written {decimal:g} (a decimal point); for the two "
+                    f"f-numbers f/{first} and f/{second} write f{first},f{second}")
+        return None
 
 
 class TimeType(_ListType):

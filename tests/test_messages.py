@@ -1,0 +1,88 @@
+"""Errors name what the user typed, and say what they need: a decimal comma, a unit apart from its number, a near-miss
+choice, a bad CAMTOOL_FORMAT, an option left at its default, Ctrl-C."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+from cli_helpers import run, time_bound  # noqa: F401
+
+
+def _one_line_error(result, code: int = 2) -> str:
+    assert result.exit_code == code, result.output
+    assert result.stderr.count("\n") == 1 and result.stderr.startswith("Error: "), result.stderr
+    return result.stderr
+
+
+@pytest.mark.parametrize(("value", "reading"), [("2,8", "f/2.8"), ("5,6", "f/5.6"), ("1,4", "f/1.4"), ("4,5", "f/4.5")])
+def test_a_decimal_comma_f_number_is_an_error_with_both_readings(value: str, reading: str) -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-s", "3m", "-N", value))
+    first, second = value.split(",")
+    assert reading in message and f"f{first},f{second}" in message and "-N" in message
+
+
+@pytest.mark.parametrize("value", ["8,11", "2.8,4", "f2,f8", "1.4,2,2.8", "16,22"])
+def test_lists_that_cannot_be_a_decimal_comma_stay_lists(value: str) -> None:
+    result = run("dof", "-f", "50", "-s", "3m", "-N", value, "--format", "csv")
+    assert result.exit_code == 0, result.output
+    assert len(result.stdout.splitlines()) == 1 + len(value.split(","))
+
+
+def test_the_written_alternatives_give_what_they_say() -> None:
+    # the message's two spellings are the two readings: one row at f/2.8, or rows at f/2 and f/8
+    one = run("dof", "-f", "50", "-s", "3m", "-N", "2.8", "--field", "f_number")
+    two = run("dof", "-f", "50", "-s", "3m", "-N", "f2,f8", "--field", "f_number")
+    assert one.stdout.split() == ["2.8"] and two.stdout.split() == ["2.0", "8.0"]
+
+
+@pytest.mark.parametrize("value", ["3,5ft", "1,5m"])
+def test_a_decimal_comma_length_with_a_unit_is_an_error(value: str) -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-N", "8", "-s", value))
+    assert "ambiguous" in message and "-s" in message
+
+
+def test_a_unit_apart_from_its_number_gets_a_hint() -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-N", "8", "-s", "3", "m"))
+    assert "one word" in message and "3m" in message
+
+
+@pytest.mark.parametrize(("option", "value", "meant"), [("--model", "thn", "thin"), ("--units", "feet", "imperial"),
+                                                        ("--format", "jsn", "json")])
+def test_a_near_miss_choice_gets_a_suggestion(option: str, value: str, meant: str) -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-N", "8", "-s", "3m", option, value))
+    assert f"Did you mean '{meant}'" in message and option in message
+
+
+def test_a_bad_camtool_format_is_named_as_the_variable_not_as_an_option() -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-N", "8", "-s", "3m", env={"CAMTOOL_FORMAT": "garbage"}))
+    assert "CAMTOOL_FORMAT='garbage'" in message and "Invalid value for '--format'" not in message
+    assert run("dof", "-f", "50", "-N", "8", "-s", "3m", "--format", "json",
+               env={"CAMTOOL_FORMAT": "garbage"}).exit_code == 0
+
+
+def test_an_option_at_its_default_is_not_blamed_the_one_typed_is() -> None:
+    for command in (["hyperfocal", "-f", "50", "-N", "8"], ["dof", "-f", "50", "-N", "8", "-s", "3m", "--model", "thick"]):
+        message = _one_line_error(run(*command, "--pupil-mag", "0.4"))
+        assert "'--pupil-mag'" in message and "--hiatus at its default" in message
+
+
+def test_an_error_quoting_a_control_character_prints_it_escaped() -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-N", "8", "-s", "3m", "--model", "thin\x1b[2J"))
+    assert "\x1b" not in message and "\\x1b[2J" in message
+
+
+def test_ctrl_c_during_a_batch_is_one_line_and_exit_130(tmp_path) -> None:
+    scenes = tmp_path / "scenes.csv"
+    scenes.write_text("focal-length,f-number,distance\n" + "50,8,3m\n" * 2_000_000)
+    process = subprocess.Popen([sys.executable, "-m", "camtool", "dof", "--batch", os.fspath(scenes), "--format", "json",
+                                "--units", "metric"], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.PIPE, text=True)
+    time.sleep(2.0)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=30)
+    assert process.returncode == 130 and stderr == "camtool: interrupted\n", stderr
