@@ -109,3 +109,18 @@ def test_a_teleconverter_at_infinity_answers(k: str) -> None:
     f, n, c = row["focal_length_at_focus_mm"], row["f_number"], row["coc_mm"]
     assert row["far_mm"] is None and math.isclose(row["near_mm"], f * f / (n * c), rel_tol=1e-9)
     assert math.isclose(row["focal_length_mm"], 200 * float(k)) and math.isclose(row["f_number"], 4 * float(k))
+
+
+def test_model_all_with_a_row_where_nothing_is_sharp_prints_every_row() -> None:
+    # f/64 at 1:1 on a 0.0288 mm CoC: the Airy disc, 2.44·λ·N(1 + m) = 2.44 × 550e-6 × 128 ≈ 0.17 mm, fills it
+    for fmt in ("table", "json"):
+        result = run("dof", "-f", "100", "-N", "8,64", "-s", "400mm", "--diffraction", "--model", "all", "--format", fmt)
+        assert result.exit_code == 0, result.output
+    rows = run_json("dof", "-f", "100", "-N", "8,64", "-s", "400mm", "--diffraction", "--model", "all")
+    assert {row["f_number"] for row in rows if row["near_mm"] is None} == {64.0}
+    assert all(row["reason"] for row in rows if row["near_mm"] is None)
+
+
+def test_model_all_claims_no_key_it_leaves_null() -> None:
+    for row in run_json("dof", "-f", "50", "-N", "8", "-s", "3m", "--model", "all"):
+        assert None not in row.values(), row

@@ -171,7 +171,10 @@ def _records(source: IO[str], name: str) -> Iterator[Record]:
             yield number, record, None
     else:
         reader = csv.reader(_chain(first, lines))
-        header = next(reader)
+        try:
+            header = next(reader)
+        except csv.Error as error:
+            raise BatchFileError(f"--batch {name}: the header row is {_csv_message(error)}") from None
         yield 0, header, None
         number = 0
         while True:

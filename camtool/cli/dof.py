@@ -40,7 +40,9 @@ from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
         "hyperfocal_mm", "coc_mm", "magnification", "model", "error_estimate", "distance_from"]
-ALL_KEYS = [*KEYS, "difference_pct", "time_per_evaluation_s", *CLOSEUP_KEYS, *DIFFRACTION_KEYS]
+FAR_KEYS = [*KEYS, "difference_pct", "time_per_evaluation_s"]
+"""``--model all`` away from close-up: what every rung computes (no close-up or diffraction columns to leave null)."""
+ALL_KEYS = [*FAR_KEYS, *CLOSEUP_KEYS, *DIFFRACTION_KEYS]
 COLUMNS = [
     Column("focal_length_mm", "f", SMALL),
     Column("f_number", "N", FNUMBER),
@@ -90,7 +92,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
     Examples:
       camtool dof -f 50 -N 8 -s 3m
       camtool dof -f 85 -N 1.8,2.8,4 -s 2 --sensor aps-c --format json
-      camtool dof -N 2 -s 1m --prescription dgauss100.yaml --model all
+      camtool dof -N 2 -s 1m --prescription dgauss100 --model all
       camtool dof -f 100 -N 11,22 -s 0.5 --pupil-mag 0.8 --diffraction
       camtool dof -f 100 -N 8 -m 0.5,1,2
       camtool dof --lens mp-e-65 -N 2.8 -m 1,2,5 --diffraction
@@ -218,7 +220,9 @@ def _dominance(rows: list[dict[str, Any]]) -> str:
     return "depth dominated by the wave-optics or geometric term, row by row"
 
 
-def _percent(fraction: float) -> str:
+def _percent(fraction: float | None) -> str:
+    if fraction is None:  # a row with no depth of field (diffraction fills the CoC): no estimate either
+        return "—"
     return f"{fraction:.2%}".replace("%", " %") if fraction >= 1e-4 else "0.01 %" if fraction > 0 else "0 %"
 
 
@@ -243,7 +247,7 @@ def _all_models(ctx, count, f, n, s, c, distance_from, lens, diffraction, wavele
         rows.extend(model_rows[i] for model_rows in per_model)
     note = _comparison_note(rows, rungs[-1].result.model, "", cocs, coc_origin, sensor_label,
                             distance_from) if fmt == "table" else ""
-    return Output(rows, ALL_COLUMNS, ALL_KEYS, note)
+    return Output(rows, ALL_COLUMNS, FAR_KEYS, note)
 
 
 def _closeup_all_models(ctx, f, n, w, c, by_m, extension, teleconverter, distance_from, lens, diffraction, wavelength,
