@@ -55,6 +55,7 @@ from typing import Any
 from xml.etree import ElementTree
 
 from camtool.core.errors import CamtoolError
+from camtool.core.files import FileProblem, read_bytes
 from camtool.presets import paths
 from camtool.presets.schema import FULL_FRAME_DIAGONAL_MM, check_record, normalize, slugify
 
@@ -87,6 +88,10 @@ class ImportResult:
     def skipped_total(self) -> int:
         """Entries and files left out."""
         return sum(self.skipped.values()) + len(self.bad_files)
+
+
+MAX_XML_BYTES = 16 * 1024 * 1024
+"""Largest lensfun XML file read (the largest of lensfun's own is under 1 MiB)."""
 
 
 class LensfunImportError(CamtoolError):
@@ -427,8 +432,11 @@ def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | No
     collector = _Collector(taken or {})
     parsed = []
     for path in files:
-        try:
-            root = ElementTree.parse(path).getroot()
+        try:  # through the guarded reader: a FIFO or device named *.xml is refused at once, not waited on
+            root = ElementTree.fromstring(read_bytes(path, MAX_XML_BYTES))
+        except FileProblem as problem:
+            collector.result.bad_files.append((str(path), problem.problem))
+            continue
         except (ElementTree.ParseError, OSError, ValueError) as error:
             collector.result.bad_files.append((str(path), " ".join(str(error).split())))
             continue
