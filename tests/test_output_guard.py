@@ -124,3 +124,17 @@ def test_model_all_with_a_row_where_nothing_is_sharp_prints_every_row() -> None:
 def test_model_all_claims_no_key_it_leaves_null() -> None:
     for row in run_json("dof", "-f", "50", "-N", "8", "-s", "3m", "--model", "all"):
         assert None not in row.values(), row
+
+
+@pytest.mark.parametrize("command", [
+    "dof -f 50 -N 8 -s 3m", "fov -f 24,50", "hyperfocal -f 24 -N 8", "exposure -N 8 -t 1/60 --nd ND1000",
+    "stars -f 24 -N 2.8 --pixel-pitch 4.3", "flash --gn 40 -N 8 --iso 400", "equiv -f 25 -N 1.4 --sensor m43",
+    "compose --subject-size 1.8m --fill 0.8 -N 2.8", "focus -f 100 -s 0.5m -N 8", "tilt -f 90 -N 11 -s 2m --tilt 3",
+    "stack -m 1 -N 8 --depth 10mm", "presets list --kind sensor"])
+@pytest.mark.parametrize("columns", ["1", "20", "45"])
+def test_a_narrow_terminal_leaves_columns_out_but_never_crops_a_number(command: str, columns: str) -> None:
+    wide = run(*command.split())
+    narrow = run(*command.split(), env={"COLUMNS": columns})
+    assert wide.exit_code == narrow.exit_code == 0, narrow.output
+    shown = set(wide.stdout.split())
+    assert [word for word in narrow.stdout.split() if word not in shown and any(ch.isdigit() for ch in word)] == []
