@@ -61,8 +61,6 @@ _MAC_BYTES = 32
 _HEADER_MAX = 1024
 _HEADER_KEYS = frozenset({"format", "kind", "version", "source", "length", "mac"})
 
-_keys: dict[str, bytes | None] = {}
-
 
 def enabled() -> bool:
     """False when ``CAMTOOL_NO_CACHE`` is set to anything non-empty."""
@@ -125,9 +123,6 @@ def _read_key(path: str) -> bytes | None:
 def _key(create: bool) -> bytes | None:
     """This user's cache key (created when ``create`` and missing), or None when there is no usable one."""
     directory = root()
-    key = _keys.get(directory)
-    if key is not None:
-        return key
     path = os.path.join(directory, KEY_NAME)
     key = _read_key(path)
     if key is None and create and not os.path.lexists(path):
@@ -147,8 +142,6 @@ def _key(create: bool) -> bytes | None:
             if temporary is not None:
                 _remove(temporary)
         key = _read_key(path)
-    if key is not None:
-        _keys[directory] = key
     return key
 
 

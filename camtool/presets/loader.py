@@ -83,6 +83,7 @@ class FileData:
         self.problems: list[Problem] = []
         self._records = records if records is not None else {}
         self._cached = cached
+        self._handed: dict[str, list[list[str]]] = {}
 
     def records_of(self, kind: str) -> list[dict[str, Any]]:
         """The records of one kind (read from the cache, and checked, on first use)."""
@@ -105,16 +106,26 @@ class FileData:
             keys = self._cached.keys(kind)
             if keys is not None:
                 return keys
+            self._refresh()
         return [record["_keys"] for record in self.records_of(kind)]
 
     def record_at(self, kind: str, index: int) -> dict[str, Any]:
-        """The ``index``-th record of one kind."""
+        """The ``index``-th record of one kind (the one whose keys :meth:`keys_of` gave at ``index``)."""
         if kind not in self._records and self._cached is not None:
             record = self._cached.record(kind, index)
             if record is not None:
                 return record
             self._refresh()
-        return self.records_of(kind)[index]
+        records = self.records_of(kind)
+        handed = self._handed.get(kind)
+        if handed is not None and (index >= len(records) or records[index]["_keys"] != handed[index]):
+            # keys given out from an entry that did not match its records: the record those keys name
+            match = next((record for record in records if record["_keys"] == handed[index]), None)
+            if match is None:
+                raise PresetFileError(self.path, "its cache entry named a preset the file does not have; the entry "
+                                                 "has been rewritten, run the command again")
+            return match
+        return records[index]
 
     @property
     def records(self) -> dict[str, list[dict[str, Any]]]:
@@ -129,14 +140,10 @@ class FileData:
         cached = self._cached
         assert cached is not None
         self._cached = None
+        self._handed = cached.handed
         data = _parse_or_raise(self.path, cached.raw)
         self._records = data._records
         _write_cache(cached.cache_path, cached.source, self._records, cached.limit)
-        for kind, keys in cached.handed.items():
-            if keys != [record["_keys"] for record in self._records.get(kind, [])]:
-                # only an entry forged with this user's cache key gets here; the lookups made from it are void
-                raise PresetFileError(self.path, "its cache entry disagreed with the file and has been rewritten; "
-                                                 "run the command again")
 
 
 class _Cached:
@@ -196,7 +203,7 @@ class _Cached:
         if name in self.sections:
             keys = self._section(name)
         elif kind in self.sections:
-            return None  # records without their keys: the caller reads the records
+            return None  # records without their keys: not an entry this module writes
         else:
             keys = []
         if not isinstance(keys, list) or not all(_valid_keys(k) for k in keys):
