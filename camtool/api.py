@@ -6,7 +6,12 @@ seconds. Distances are measured from the sensor (focal) plane unless
 ``distance_from="lens"`` says otherwise, as on the command line (see
 ``docs/design.md`` §2). A value outside a formula's physical domain raises
 :class:`camtool.core.errors.DomainError`, a :class:`ValueError` naming the
-parameter, the value and the valid range.
+parameter, the value and the valid range; so does an argument of the wrong
+type (a string, None or a bool where a number belongs, a list holding
+anything but numbers) and a NaN or infinity where no infinite value is
+meaningful. Every public function checks its arguments the same way, by the
+kind its annotation names (:data:`Number`, :data:`FocalLength`, :data:`DistanceOrInf`, ...), before
+anything is computed; nothing else escapes but :class:`~camtool.core.errors.CamtoolError`.
 
 Examples
 --------
@@ -20,8 +25,27 @@ Examples
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+import functools
+import inspect
+import math
+import numbers
+import sys
+import typing
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Annotated, Any, NamedTuple, TypeVar
 
+from camtool.core.errors import DomainError
+from camtool.core.ranges import (
+    COC_MM,
+    DISTANCE_MM,
+    F_NUMBER,
+    FOCAL_LENGTH_MM,
+    MAGNIFICATION,
+    PIXEL_PITCH_UM,
+    SENSOR_SIDE_MM,
+    describe,
+)
 from camtool.dof.ladder import LensData
 from camtool.dof.limits import DofLimits
 from camtool.exposure.plan import ExposurePlan
@@ -48,6 +72,275 @@ __all__ = [
     "plan_exposure",
 ]
 
+@dataclass(frozen=True)
+class _Kind:
+    """What a public function's parameter takes; :func:`_checked` checks each argument against it."""
+
+    what: str  # "number", "choice", "text", "flag", "prescription"
+    optional: bool = False  # None allowed (it then means "not given")
+    allow_inf: bool = False  # +inf allowed (a distance at infinity)
+    scalar: bool = False  # one number only, no array
+    positive: bool = False  # > 0 (a ratio such as a pupil magnification, which divides)
+    bounds: tuple[float, float] | None = None  # the closed range of the option it stands for (a low 0 is open)
+    zero_ok: bool = False  # a low bound of 0 is closed (a magnification of 0: the subject at infinity)
+    unit: str = ""
+    choices: tuple[str, ...] = ()
+
+    def describe(self) -> str:
+        if self.what == "number":
+            text = ("a number" if self.bounds else "a finite number") + (" > 0" if self.positive else "") + (
+                "" if self.scalar else " or an array of them")
+            if self.bounds is not None:
+                shown = describe(self.bounds, self.unit, self.allow_inf)
+                text = f"{shown.removeprefix('> ') if self.zero_ok else shown} ({text})"
+            elif self.allow_inf:
+                text += " (+inf allowed)"
+        elif self.what == "choice":
+            text = "one of " + ", ".join(repr(c) for c in self.choices)
+        elif self.what == "text":
+            text = "a string"
+        elif self.what == "flag":
+            text = "True or False"
+        else:
+            text = "a camtool.optics.prescription.Prescription"
+        return text + (", or None" if self.optional else "")
+
+
+Number = Annotated[Any, _Kind("number")]
+"""A finite float or int (not a bool), or an array or (nested) list of them."""
+OptionalNumber = Annotated[Any, _Kind("number", optional=True)]
+"""As :data:`Number`, or None for "not given"."""
+Real = Annotated[float, _Kind("number", scalar=True)]
+"""One finite float or int (not a bool, not an array)."""
+OptionalReal = Annotated[Any, _Kind("number", scalar=True, optional=True)]
+"""As :data:`Real`, or None for "not given"."""
+
+# The optical inputs within the ranges their command-line options take (camtool.core.ranges).
+FocalLength = Annotated[Any, _Kind("number", bounds=FOCAL_LENGTH_MM, unit="mm")]
+OptionalFocalLength = Annotated[Any, _Kind("number", optional=True, bounds=FOCAL_LENGTH_MM, unit="mm")]
+FNumber = Annotated[Any, _Kind("number", bounds=F_NUMBER)]
+CoC = Annotated[Any, _Kind("number", bounds=COC_MM, unit="mm")]
+Distance = Annotated[Any, _Kind("number", bounds=DISTANCE_MM, unit="mm")]
+DistanceOrInf = Annotated[Any, _Kind("number", allow_inf=True, bounds=DISTANCE_MM, unit="mm")]
+SensorSide = Annotated[Any, _Kind("number", bounds=SENSOR_SIDE_MM, unit="mm")]
+SensorSideReal = Annotated[float, _Kind("number", scalar=True, bounds=SENSOR_SIDE_MM, unit="mm")]
+Magnification = Annotated[Any, _Kind("number", bounds=MAGNIFICATION)]
+MagnificationOrZero = Annotated[Any, _Kind("number", bounds=(0.0, MAGNIFICATION[1]), zero_ok=True)]
+"""A magnification, or 0 for a subject at infinity (closed at 0, unlike :data:`Magnification`)."""
+PUPIL_MAGNIFICATION = (0.05, 20.0)
+"""The pupil magnification P, as ``--pupil-mag`` takes it: retrofocus wide angles to long telephotos."""
+PupilMagnification = Annotated[Any, _Kind("number", bounds=PUPIL_MAGNIFICATION)]
+OptionalPupilMagnification = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=PUPIL_MAGNIFICATION)]
+Wavelength = Annotated[Any, _Kind("number", bounds=(200.0, 2000.0), unit="nm")]
+"""A wavelength, as ``--wavelength`` takes it: near ultraviolet to near infrared."""
+Tolerance = Annotated[float, _Kind("number", scalar=True, bounds=(0.0, 1.0))]
+"""A relative tolerance, one number above 0 (up to 1, 100 %)."""
+PixelPitch = Annotated[Any, _Kind("number", scalar=True, optional=True,
+                                  bounds=(PIXEL_PITCH_UM[0] / 1000.0, PIXEL_PITCH_UM[1] / 1000.0), unit="mm")]
+Flag = Annotated[bool, _Kind("flag")]
+DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
+Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
+Text = Annotated[str, _Kind("text")]
+OptionalPrescription = Annotated[Any, _Kind("prescription", optional=True)]
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+def _kinds(function: Callable[..., Any]) -> dict[str, _Kind]:
+    hints = typing.get_type_hints(function, include_extras=True)
+    kinds = {}
+    for name in inspect.signature(function).parameters:
+        meta = [m for m in getattr(hints.get(name), "__metadata__", ()) if isinstance(m, _Kind)]
+        if not meta:
+            raise TypeError(f"{function.__name__}: parameter {name} has no checked kind")
+        kinds[name] = meta[0]
+    return kinds
+
+
+def _checked(function: _F) -> _F:
+    """Check every argument of a public function against the kind its annotation names, then call it.
+
+    A wrong type or a non-finite number raises :class:`DomainError` naming the
+    parameter as the function spells it; an error from the calculation that
+    is not a :class:`CamtoolError` is a defect, so it is not disguised here.
+    """
+    signature = inspect.signature(function)
+    kinds = _kinds(function)
+
+    @functools.wraps(function)
+    def call(*args: Any, **kwargs: Any) -> Any:
+        try:
+            bound = signature.bind(*args, **kwargs)
+        except TypeError as error:  # a missing, unknown or repeated argument
+            raise _call_error(function, signature, args, kwargs, error) from None
+        for name, value in bound.arguments.items():
+            bound.arguments[name] = _check(name, value, kinds[name])
+        _broadcast(bound.arguments)
+        try:
+            return function(*bound.args, **bound.kwargs)
+        except DomainError as error:
+            if error.param in kinds:
+                raise
+            raise _renamed(error, bound.arguments, kinds) from None
+
+    return typing.cast(_F, call)
+
+
+def _broadcast(arguments: dict[str, Any]) -> None:
+    """Raise :class:`DomainError` naming the first array whose shape does not broadcast with those before it."""
+    numpy = sys.modules.get("numpy")
+    if numpy is None:
+        return
+    shape: tuple[int, ...] = ()
+    for name, value in arguments.items():
+        if isinstance(value, numpy.ndarray):
+            try:
+                shape = numpy.broadcast_shapes(shape, value.shape)
+            except ValueError:
+                raise DomainError(name, f"an array of shape {value.shape}", f"an array that broadcasts with shape "
+                                  f"{shape} (the arrays given before it)") from None
+
+
+def _renamed(error: DomainError, arguments: dict[str, Any], kinds: dict[str, _Kind]) -> DomainError:
+    """The error of a formula that spells a parameter its own way (``sensor_mm``), naming the caller's argument.
+
+    The argument named is the one holding the offending value (``sensor_height_mm=0``); when none holds it
+    (a rule about several arguments), the first number given.
+    """
+    numbers_given = [name for name, kind in kinds.items() if kind.what == "number" and arguments.get(name) is not None]
+    for name in numbers_given:
+        if _holds(arguments[name], error.value):
+            return DomainError(name, error.value, error.valid, error.detail, error.limit)
+    name = numbers_given[0] if numbers_given else next(iter(kinds))
+    return DomainError(name, arguments.get(name), error.valid, error.detail, error.limit)
+
+
+def _holds(argument: Any, value: Any) -> bool:
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
+        return False
+    if isinstance(argument, (int, float)):
+        return bool(argument == value)
+    import numpy as np
+
+    return bool(np.any(np.asarray(argument) == value))
+
+
+def _call_error(function: Callable[..., Any], signature: inspect.Signature, args: tuple[Any, ...],
+                kwargs: dict[str, Any], error: TypeError) -> DomainError:
+    names = list(signature.parameters)
+    for name in kwargs:
+        if name not in signature.parameters:
+            return DomainError(name, kwargs[name], f"a parameter of {function.__name__}: " + ", ".join(names),
+                               "no such parameter")
+    positional = [p.name for p in signature.parameters.values()
+                  if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    if len(args) > len(positional):
+        return DomainError(names[-1], args[len(positional)], f"at most {len(positional)} positional arguments "
+                           f"({', '.join(positional)}); give the others by name", "too many positional arguments")
+    for name in positional[:len(args)]:
+        if name in kwargs:
+            return DomainError(name, kwargs[name], "given once", "given both by position and by name")
+    missing = [p.name for p in signature.parameters.values()
+               if p.default is p.empty and p.name not in kwargs and p.name not in positional[:len(args)]]
+    return DomainError(missing[0] if missing else names[0], None, "a value is required", str(error))
+
+
+def _check(name: str, value: Any, kind: _Kind) -> Any:
+    """``value`` if it is of ``kind`` (a list of numbers as a float array), else :class:`DomainError` naming ``name``."""
+    if value is None:
+        if kind.optional:
+            return None
+        raise DomainError(name, None, kind.describe(), "missing")
+    if kind.what == "number":
+        return _check_number(name, value, kind)
+    if kind.what == "choice":
+        if not isinstance(value, str) or value not in kind.choices:
+            raise DomainError(name, _shown(value), kind.describe())
+    elif kind.what == "text":
+        if not isinstance(value, str):
+            raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
+    elif kind.what == "flag":
+        numpy = sys.modules.get("numpy")
+        if not (isinstance(value, bool) or (numpy is not None and isinstance(value, numpy.bool_))):
+            raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
+    else:
+        from camtool.optics.prescription import Prescription
+
+        if not isinstance(value, Prescription):
+            raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
+    return value
+
+
+def _shown(value: Any) -> Any:
+    """The value as an error message shows it: a string quoted, a long text cut short."""
+    text = repr(value) if isinstance(value, (str, bytes)) else value
+    if isinstance(text, str) and len(text) > 60:
+        text = text[:57] + "..."
+    return text
+
+
+def _finite(name: str, number: float, kind: _Kind) -> None:
+    if math.isnan(number) or (math.isinf(number) and not (kind.allow_inf and number > 0)) or (
+            kind.positive and not number > 0) or (kind.bounds is not None and not _within(number, kind)):
+        raise DomainError(name, number, kind.describe())
+
+
+def _within(number: Any, kind: _Kind) -> Any:
+    """Whether ``number`` (a float or an array) lies in ``kind.bounds``: closed, but a low bound of 0 is open."""
+    assert kind.bounds is not None
+    low, high = kind.bounds
+    inside = ((number > low) if low == 0 and not kind.zero_ok else (number >= low)) & (number <= high)
+    return inside | (number == math.inf) if kind.allow_inf else inside
+
+
+def _check_number(name: str, value: Any, kind: _Kind) -> Any:
+    if isinstance(value, bool):
+        raise DomainError(name, value, kind.describe(), "a bool is not a number")
+    if isinstance(value, (int, float)):
+        try:
+            number = float(value)
+        except OverflowError:  # only an int can be too large for a float
+            raise DomainError(name, f"an integer of {int(value).bit_length()} bits", kind.describe(),
+                              "too large for a float") from None
+        _finite(name, number, kind)
+        return value
+    numpy = sys.modules.get("numpy")
+    if not (numpy is not None and isinstance(value, (numpy.ndarray, numpy.generic))) and not isinstance(
+            value, (list, tuple)):
+        if isinstance(value, numbers.Real):  # a Fraction, a Decimal-like real: say which type to give
+            raise DomainError(name, _shown(str(value)), kind.describe(), f"a {type(value).__name__}; give a float")
+        raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
+    import numpy as np
+
+    try:
+        array = np.asarray(value)
+    except (ValueError, TypeError, OverflowError):  # a ragged list, or something numpy cannot hold
+        raise DomainError(name, _shown(str(value)), kind.describe(), "not a rectangular array") from None
+    if array.dtype.kind not in "iuf" or (isinstance(value, (list, tuple)) and _holds_bool(value)):
+        held = {"b": "bools", "c": "complex numbers", "O": "objects", "U": "strings", "S": "bytes"}
+        what = held.get(array.dtype.kind, "bools" if array.dtype.kind in "iuf" else "non-numbers")
+        raise DomainError(name, _shown(str(value)), kind.describe(), f"holds {what}")
+    if kind.scalar and array.ndim:
+        raise DomainError(name, _shown(str(value)), kind.describe(), "an array; give one number")
+    if array.size == 0:
+        raise DomainError(name, _shown(str(value)), kind.describe(), "an empty array")
+    if array.dtype.kind != "f":
+        array = array.astype(float)  # integer arithmetic would wrap around (uint8: 200 + 100 = 44)
+    bad = np.isnan(array) | (np.isinf(array) & ~((array > 0) & kind.allow_inf)) | (kind.positive & ~(array > 0))
+    if kind.bounds is not None:
+        bad |= ~_within(array, kind)
+    if bool(bad.any()):
+        raise DomainError(name, float(array[bad].flat[0]), kind.describe())
+    return float(array) if array.ndim == 0 else array
+
+
+def _holds_bool(value: Any) -> bool:
+    if isinstance(value, (list, tuple)):
+        return any(_holds_bool(item) for item in value)
+    numpy = sys.modules.get("numpy")
+    return isinstance(value, bool) or (numpy is not None and isinstance(value, numpy.bool_))
+
+
 class DepthOfField(NamedTuple):
     """The result of :func:`depth_of_field`, distances in mm from the plane the focus was given in.
 
@@ -73,20 +366,21 @@ def _lens(pupil_magnification: Any, hiatus_mm: Any, prescription: Any) -> LensDa
     return LensData(pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm, prescription=prescription)
 
 
+@_checked
 def depth_of_field(
-    focal_length_mm: Any,
-    f_number: Any,
-    coc_mm: Any,
-    distance_mm: Any,
+    focal_length_mm: OptionalFocalLength,
+    f_number: FNumber,
+    coc_mm: CoC,
+    distance_mm: DistanceOrInf,
     *,
-    distance_from: str = "sensor",
-    model: str = "auto",
-    pupil_magnification: Any = None,
-    hiatus_mm: Any = None,
-    prescription: Any = None,
-    diffraction: bool = False,
-    wavelength_nm: float = 550.0,
-    tolerance: float = 0.01,
+    distance_from: DistanceFrom = "sensor",
+    model: Model = "auto",
+    pupil_magnification: OptionalPupilMagnification = None,
+    hiatus_mm: OptionalReal = None,
+    prescription: OptionalPrescription = None,
+    diffraction: Flag = False,
+    wavelength_nm: Wavelength = 550.0,
+    tolerance: Tolerance = 0.01,
 ) -> DepthOfField:
     """Near and far limits of acceptable sharpness in mm, by a rung of the model ladder.
 
@@ -123,16 +417,17 @@ def depth_of_field(
     return DepthOfField(*result.limits, result.model, result.error_estimate)
 
 
+@_checked
 def hyperfocal_distance(
-    focal_length_mm: Any,
-    f_number: Any,
-    coc_mm: Any,
+    focal_length_mm: OptionalFocalLength,
+    f_number: FNumber,
+    coc_mm: CoC,
     *,
-    distance_from: str = "sensor",
-    model: str = "auto",
-    pupil_magnification: Any = None,
-    hiatus_mm: Any = None,
-    prescription: Any = None,
+    distance_from: DistanceFrom = "sensor",
+    model: Model = "auto",
+    pupil_magnification: OptionalPupilMagnification = None,
+    hiatus_mm: OptionalReal = None,
+    prescription: OptionalPrescription = None,
 ) -> DofLimits:
     """The hyperfocal distance in mm and the near limit when focused there.
 
@@ -153,13 +448,14 @@ def hyperfocal_distance(
     return run(model, focal_length_mm, f_number, coc_mm, first.hyperfocal_mm, distance_from, lens).limits
 
 
+@_checked
 def field_of_view(
-    focal_length_mm: Any,
-    sensor_width_mm: Any,
-    sensor_height_mm: Any,
+    focal_length_mm: FocalLength,
+    sensor_width_mm: SensorSide,
+    sensor_height_mm: SensorSide,
     *,
-    magnification: Any = 0.0,
-    pupil_magnification: Any = 1.0,
+    magnification: MagnificationOrZero = 0.0,
+    pupil_magnification: PupilMagnification = 1.0,
 ) -> FieldOfView:
     """Horizontal, vertical and diagonal angles of view in degrees (with focus breathing at ``magnification``).
 
@@ -180,8 +476,10 @@ class FocusPlan(NamedTuple):
     f_number: Any
 
 
+@_checked
 def focus_for_limits(
-    focal_length_mm: Any, coc_mm: Any, near_mm: Any, far_mm: Any, *, distance_from: str = "sensor"
+    focal_length_mm: FocalLength, coc_mm: CoC, near_mm: Distance, far_mm: DistanceOrInf, *,
+    distance_from: DistanceFrom = "sensor"
 ) -> FocusPlan:
     """The focus distance in mm and the f-number whose thin-lens depth of field is exactly [near, far].
 
@@ -197,7 +495,9 @@ def focus_for_limits(
     return FocusPlan(solution.distance_mm, solution.f_number)
 
 
-def focus_for_magnification(focal_length_mm: Any, magnification: Any, *, hiatus_mm: Any = 0.0) -> FocusGeometry:
+@_checked
+def focus_for_magnification(focal_length_mm: FocalLength, magnification: Magnification, *,
+                            hiatus_mm: Number = 0.0) -> FocusGeometry:
     """Object and image distances in mm (and the sensor-plane focus distance) for a magnification m > 0.
 
     Examples
@@ -210,8 +510,9 @@ def focus_for_magnification(focal_length_mm: Any, magnification: Any, *, hiatus_
     return run(focal_length_mm, magnification, hiatus_mm)
 
 
-def circle_of_confusion(sensor_width_mm: float, sensor_height_mm: float, rule: str = "d/1500",
-                        *, pixel_pitch_mm: float | None = None) -> float:
+@_checked
+def circle_of_confusion(sensor_width_mm: SensorSideReal, sensor_height_mm: SensorSideReal, rule: Text = "d/1500",
+                        *, pixel_pitch_mm: PixelPitch = None) -> float:
     """The circle of confusion in mm from a rule (``d/1500``, ``d/1730``, ``px:2``, ``print:8x10in@25cm``).
 
     Examples
@@ -219,12 +520,18 @@ def circle_of_confusion(sensor_width_mm: float, sensor_height_mm: float, rule: s
     >>> round(circle_of_confusion(36, 24), 4)
     0.0288
     """
+    from camtool.core.units import UnitError
     from camtool.geometry.coc import coc_from_rule
 
-    return coc_from_rule(rule, sensor_width_mm, sensor_height_mm, pixel_pitch_mm).coc_mm
+    try:
+        return coc_from_rule(rule, sensor_width_mm, sensor_height_mm, pixel_pitch_mm).coc_mm
+    except UnitError as error:  # the rule could not be read
+        raise DomainError("rule", _shown(rule), "d/N, px:K or print:WxH@DISTANCE", str(error)) from None
 
 
-def composition(focal_length_mm: Any, magnification: Any, sensor_width_mm: Any, sensor_height_mm: Any) -> Composition:
+@_checked
+def composition(focal_length_mm: FocalLength, magnification: Magnification, sensor_width_mm: SensorSide,
+                sensor_height_mm: SensorSide) -> Composition:
     """Where to stand for a framing: the distance, field and angles at a magnification (see ``camtool compose``).
 
     Examples
@@ -238,15 +545,16 @@ def composition(focal_length_mm: Any, magnification: Any, sensor_width_mm: Any, 
     return run(focal_length_mm, magnification, sensor_width_mm, sensor_height_mm)
 
 
+@_checked
 def plan_exposure(
     *,
-    ev100: Any = None,
-    f_number: Any = None,
-    shutter_s: Any = None,
-    iso: Any = None,
-    nd_stops: Any = 0.0,
-    magnification: Any = 0.0,
-    pupil_magnification: Any = 1.0,
+    ev100: OptionalNumber = None,
+    f_number: OptionalNumber = None,
+    shutter_s: OptionalNumber = None,
+    iso: OptionalNumber = None,
+    nd_stops: Number = 0.0,
+    magnification: MagnificationOrZero = 0.0,
+    pupil_magnification: PupilMagnification = 1.0,
 ) -> ExposurePlan:
     """A whole exposure: from a light level (EV100) and two settings, the third; or the EV100 of settings.
 
