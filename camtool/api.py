@@ -360,7 +360,9 @@ class DepthOfField(NamedTuple):
     error_estimate: Any
 
 
-def _lens(pupil_magnification: Any, hiatus_mm: Any, prescription: Any) -> LensData | None:
+def _lens(pupil_magnification: Any, hiatus_mm: Any, prescription: Any, focal_length_mm: Any = 0.0) -> LensData | None:
+    if focal_length_mm is None and prescription is None:
+        raise DomainError("focal_length_mm", None, describe(FOCAL_LENGTH_MM, "mm"), "None only with a prescription")
     if pupil_magnification is None and hiatus_mm is None and prescription is None:
         return None
     return LensData(pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm, prescription=prescription)
@@ -411,7 +413,7 @@ def depth_of_field(
     """
     from camtool.dof.ladder import depth_of_field as run
 
-    lens = _lens(pupil_magnification, hiatus_mm, prescription)
+    lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
     result = run(model, focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
                  wavelength_nm, tolerance)
     return DepthOfField(*result.limits, result.model, result.error_estimate)
@@ -443,7 +445,7 @@ def hyperfocal_distance(
     """
     from camtool.dof.ladder import depth_of_field as run
 
-    lens = _lens(pupil_magnification, hiatus_mm, prescription)
+    lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
     first = run(model, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens).limits
     return run(model, focal_length_mm, f_number, coc_mm, first.hyperfocal_mm, distance_from, lens).limits
 

@@ -64,8 +64,19 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "distance_from": st.sampled_from(["sensor", "lens"]),
     "rule": st.sampled_from(["d/1500", "d/1730", "px:2", "print:8x10in@25cm", "d/1000"]),
     "diffraction": st.booleans(),
-    "prescription": st.just(None),
+    "prescription": st.sampled_from([None, "dgauss100"]).map(lambda name: name and _prescription(name)),
 }
+
+def _prescription(name: str) -> Any:
+    """A shipped lens prescription (the double Gauss 100 mm), loaded once."""
+    if name not in _PRESCRIPTIONS:
+        from camtool.presets.database import load_db
+
+        _PRESCRIPTIONS[name] = load_db(use_cache=False).prescription(name).optics
+    return _PRESCRIPTIONS[name]
+
+
+_PRESCRIPTIONS: dict[str, Any] = {}
 
 HOSTILE = [
     None, True, False, "50", "", "nan", "inf", b"8", [], ["a"], [1.0, "a"], [[1.0, 2.0], [3.0]], [None],
@@ -184,6 +195,7 @@ def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
 @pytest.mark.parametrize(("call", "param"), [
     (lambda: camtool.depth_of_field("50", 8, 0.03, 3000), "focal_length_mm"),
     (lambda: camtool.depth_of_field(50, None, 0.03, 3000), "f_number"),
+    (lambda: camtool.depth_of_field(None, 8, 0.03, 3000), "focal_length_mm"),  # None only with a prescription
     (lambda: camtool.depth_of_field(50, True, 0.03, 3000), "f_number"),
     (lambda: camtool.depth_of_field(50, 8, math.nan, 3000), "coc_mm"),
     (lambda: camtool.depth_of_field(50, 8, 0.03, -math.inf), "distance_mm"),
