@@ -13,6 +13,7 @@ from camtool.cli.common import rows_from
 from camtool.cli.options import library_errors, param_named
 from camtool.cli.params import FNumberType, NumberType, TimeType, _ListType, flatten
 from camtool.core.units import TStop, UnitError, exact_f_number
+from camtool.exposure.calculator import KEYS as ROW_KEYS
 from camtool.render.columns import NUMBER, TEXT, Column
 
 LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
@@ -46,6 +47,8 @@ METERED_COLUMNS = [
     Column("corrected", "time to set", TEXT),
 ]
 LOSS_COLUMNS = [Column("nd_stops", "ND stops", NUMBER), Column("bellows_stops", "bellows stops", NUMBER)]
+KEYS = [*ROW_KEYS, *(key for key in EQUIVALENT_KEYS if key not in ROW_KEYS)]
+"""Every key a row of the command can carry: a worked-out exposure's, then what --equivalents adds."""
 RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
 SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
 
@@ -115,7 +118,7 @@ def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
 
 
 # No --batch: a row of this command is a choice among light sources and solved settings, not a grid point.
-@camtool_command("exposure", batch=False)
+@camtool_command("exposure", keys=KEYS, batch=False)
 @click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
               help="f-number (8, f/8, f8) or T-stop (T2; exposure uses it as is); a list 2.8,4 gives a row each. "
                    "Without a light level: the metered f-number. Left out with --lens of a cinema lens: its "
@@ -179,6 +182,9 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     out, the equivalent f-number and time pairs. -N and -t alone give their EV
     and the scene's EV100. EV = log2(N²/t) is the settings'; EV100 = EV −
     log2(ISO/100) the scene's. Times over 30 s are bulb times, shown exactly.
+    JSON and CSV rows carry every setting, correction and APEX value (each
+    key listed in camtool-exposure(1) and docs/exposure.md); --equivalents
+    rows carry the f-number, times and EV of each pair.
 
     \b
     Examples:
