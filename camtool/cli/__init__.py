@@ -164,9 +164,9 @@ def _hinted(error: click.ClickException, args: Any) -> str:
 
         found = re.search(r"'([^']*)' is not one of", message)
         if found:
-            choices = [str(c) for c in param.type.choices]
-            word = _CHOICE_WORDS.get(found.group(1).strip().lower())
-            close = [word] if word in choices else difflib.get_close_matches(found.group(1), choices, n=2, cutoff=0.5)
+            names = [str(c) for c in param.type.choices]
+            word = _CHOICE_WORDS.get(found.group(1).strip().lower(), "")
+            close = [word] if word in names else difflib.get_close_matches(found.group(1), names, n=2, cutoff=0.5)
             if close:
                 return f"{message} Did you mean {' or '.join(repr(c) for c in close)}?"
     return message
