@@ -12,7 +12,7 @@ stands for (the f-number that of ``-N``, the focal length that of ``-f``, the
 focus distance that of ``-s``) or is left out and named in ``problems``
 (``Exif.Photo.FNumber 65288 is outside the valid range: f/0.7 to f/1024``);
 every string read from a tag has its control characters escaped
-(:func:`printable`).
+(:func:`camtool.core.text.printable`).
 
 The focus distance is read, most specific first: the maker note's recorded
 bracket (Canon FocusDistanceUpper/Lower), the maker note's single distance
@@ -37,6 +37,7 @@ from typing import Any, NamedTuple
 
 from camtool.core import domain, ranges
 from camtool.core.errors import CamtoolError, DomainError
+from camtool.core.text import printable
 from camtool.exif import makernotes
 
 
@@ -75,49 +76,6 @@ class Reading(NamedTuple):
     focus_distance_max_mm: float | None = None
     sources: dict[str, str] = {}  # noqa: RUF012 - NamedTuple default, never mutated (a fresh dict per reading)
     problems: tuple[tuple[str, str], ...] = ()
-
-
-# -- strings: nothing from a file reaches a terminal, a CSV cell or a --field line raw ---------------------
-
-_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
-# line and paragraph separators and the bidirectional controls: invisible, and they reorder or break lines
-_INVISIBLE = frozenset("\u2028\u2029\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
-
-
-def _escape(char: str) -> str:
-    code = ord(char)
-    if char in _NAMED:
-        return _NAMED[char]
-    if code < 0x20 or 0x7F <= code <= 0x9F:
-        return f"\\x{code:02x}"
-    if 0xDC80 <= code <= 0xDCFF:  # a byte that is not UTF-8, as os.fsdecode and surrogateescape carry it
-        return f"\\x{code - 0xDC00:02x}"
-    if 0xD800 <= code <= 0xDFFF or char in _INVISIBLE:
-        return f"\\u{code:04x}"
-    return char
-
-
-def printable(text: str) -> str:
-    r"""``text`` with every control character in one visible form: ``\n``, ``\r``, ``\t``, else ``\xNN``.
-
-    Escaped: C0 (U+0000 to U+001F, ESC among them), DEL, C1 (U+0080 to
-    U+009F); a byte of a file name that is not UTF-8 (carried as a lone
-    surrogate by :func:`os.fsdecode`) as ``\xNN`` of that byte; other lone
-    surrogates, the line and paragraph separators and the bidirectional
-    controls as ``\uNNNN``. Everything else, backslashes included, is kept.
-
-    Examples
-    --------
-    >>> printable("\x1b[2JCanon")
-    '\\x1b[2JCanon'
-    >>> printable("EF\n50mm\tf/1.8\x9b")
-    'EF\\n50mm\\tf/1.8\\x9b'
-    >>> printable(os.fsdecode(b"caf\xe9.jpg")), printable("café")
-    ('caf\\xe9.jpg', 'café')
-    """
-    if text.isprintable():
-        return text
-    return "".join(_escape(char) if not char.isprintable() or char in _INVISIBLE else char for char in text)
 
 
 # -- numbers: the range of the option each one stands for ---------------------------------------------------

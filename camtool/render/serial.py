@@ -19,9 +19,10 @@ from __future__ import annotations
 
 import json
 import math
-import re
 from collections.abc import Sequence
 from typing import Any
+
+from camtool.core.text import printable
 
 Row = dict[str, Any]
 
@@ -29,30 +30,6 @@ ERROR = "error"
 """The key of a skipped row's message."""
 
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
-
-_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
-_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
-
-
-def printable(text: str) -> str:
-    r"""``text`` with every control character shown as an escape, never sent raw to a terminal or a file.
-
-    A string read from a file (an EXIF tag, a preset name, a batch cell) may
-    hold terminal escape sequences or line breaks; every string cell of every
-    output format passes through here, so a tag cannot clear the screen or
-    split one ``--field`` row into several lines.
-
-    >>> printable("Canon\x1b[2J\nEOS")
-    'Canon\\x1b[2J\\nEOS'
-    >>> printable("plain ×")
-    'plain ×'
-    """
-    if _CONTROL.search(text) is None:
-        return text
-    return _CONTROL.sub(lambda match: _NAMED.get(match.group(), f"\\x{ord(match.group()):02x}"
-                                                 if ord(match.group()) < 0x100 else f"\\u{ord(match.group()):04x}"),
-                        text)
-
 
 def unanswered(row: Row, keys: Sequence[str]) -> list[str]:
     """The keys of ``row`` whose value is a NaN: a quantity with no answer, which must never be printed as one."""
