@@ -19,7 +19,9 @@ LAYERS = [
     {"optics"},
     {"dof"},
     {"presets", "render"},
-    {"api", "exif"},
+    {"exif"},
+    {"plans"},
+    {"api"},
     {"cli", "__main__"},
 ]
 
