@@ -17,7 +17,7 @@ import click
 
 from camtool.cli.params import FNumberType, LengthType
 from camtool.core import ranges
-from camtool.core.errors import DomainError
+from camtool.core.errors import DomainError, InputError
 from camtool.core.planes import FOCUS_PLANES
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -116,8 +116,19 @@ def library_errors(ctx: click.Context) -> Iterator[None]:
         raise bad_parameter(ctx, error) from None
 
 
-def bad_parameter(ctx: click.Context, error: DomainError) -> click.ClickException:
-    """The one translation of a library :class:`DomainError` into a click error naming an option the user typed."""
+def bad_parameter(ctx: click.Context, error: DomainError | InputError) -> click.ClickException:
+    """The one translation of a library error on an input into a click error naming an option the user typed.
+
+    An :class:`InputError` has its inputs spelled as this command's options
+    (``{focal_length}`` as ``-f``); a :class:`DomainError` is placed on the
+    option its parameter stands for (or the typed one it meets, or the one
+    that drives a derived value).
+    """
+    if isinstance(error, InputError):
+        text = error.render(lambda name: _spelling(ctx, PARAM_FOR.get(str(name), str(name))))
+        if error.usage:
+            return click.UsageError(text, ctx)
+        return click.BadParameter(text, ctx=ctx, param=param_named(ctx, PARAM_FOR.get(error.param, error.param)))
     name = PARAM_FOR.get(error.param, error.param)
     param = param_named(ctx, name) or param_named(ctx, error.param)
     if param is not None:
@@ -193,6 +204,15 @@ class FileParameterError(click.BadParameter):
 def file_error(ctx: click.Context, name: str, error: Exception) -> click.BadParameter:
     """An unreadable or invalid file given to option ``name``: one line naming the option and the file, exit 1."""
     return FileParameterError(str(error), ctx=ctx, param=param_named(ctx, name))
+
+
+def _spelling(ctx: click.Context, name: str) -> str:
+    """How the user writes the input ``name`` on this command: its shortest option spelling that starts with --,
+    else its first (``--lens``, ``-f``)."""
+    param = param_named(ctx, name)
+    if param is None:
+        return "--" + name.replace("_", "-")
+    return param.opts[0] if name == "focal_length" else max(param.opts, key=len)
 
 
 def param_named(ctx: click.Context, name: str) -> click.Parameter | None:

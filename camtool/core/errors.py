@@ -38,6 +38,35 @@ class DomainError(CamtoolError, ValueError):
         super().__init__(text)
 
 
+class InputError(CamtoolError, ValueError):
+    """An input that cannot be used, in words: ``param`` names it, ``template`` says why.
+
+    Inputs are named in the template by placeholder, ``{focal_length}``, so
+    each caller spells them its own way: the command line as the option
+    (``-f``), the Python API as the argument; ``str()`` shows the bare
+    names. ``usage`` marks a combination of inputs rather than one bad value.
+
+    >>> error = InputError("crop", "give {sensor} or {crop}, not both", usage=True)
+    >>> str(error), error.render(lambda name: "--" + name)
+    ('give sensor or crop, not both', 'give --sensor or --crop, not both')
+    """
+
+    def __init__(self, param: str, template: str, usage: bool = False) -> None:
+        self.param = param
+        self.template = template
+        self.usage = usage
+        super().__init__(self.render(lambda name: name))
+
+    def render(self, spell: Any) -> str:
+        """The message with each ``{name}`` spelled by ``spell(name)``."""
+
+        class Spelled(dict[str, str]):
+            def __missing__(self, key: str) -> str:
+                return str(spell(key))
+
+        return self.template.format_map(Spelled())
+
+
 class FileError(CamtoolError):
     """A file camtool was asked to read cannot be read or is invalid: exit status 1, one line naming the file.
 

@@ -21,6 +21,7 @@ class PresetNotFound(CamtoolError, LookupError):
         self.kind = kind
         self.name = name
         self.suggestions = list(suggestions)
+        self.param = kind  # the input that named it (a lens's own sensor is named by the lens)
         super().__init__(kind, name)
 
     def __str__(self) -> str:

@@ -1,0 +1,323 @@
+"""Equipment resolution: which sensor, which circle of confusion and why, and what a lens allows.
+
+Every command that takes ``--scene``, ``--camera``, ``--lens``, ``--sensor``,
+``--crop``, ``--coc``, ``--coc-rule`` or ``--pixel-pitch`` (and the Python
+API) asks these functions; the precedence rules live here and nowhere else:
+
+- **sensor**: ``sensor`` (a preset name or an inline ``WxH``) or ``crop`` >
+  a fixed or phone lens's own format > the camera's sensor > an
+  interchangeable lens's own format > full frame 36 × 24 mm;
+- **CoC**: ``coc`` > ``coc_rule`` > the sensor preset's own CoC > d/1500,
+  with the pixel pitch from ``pixel_pitch`` or else the camera's;
+- **scene**: a scene preset fills every input left empty (what is given wins),
+  and brings its camera (unless a sensor is given) and lens;
+- **lens**: a prime's focal length and a single-aperture lens's f-number fill
+  what is left empty; focal lengths, f-numbers and focus distances outside
+  what the lens does are refused.
+
+The preset database is opened only when a preset is named (``database`` is
+called then): the default sensor and an inline size need no YAML at all.
+Errors are :class:`~camtool.core.errors.InputError` (or ``DomainError`` and
+``PresetNotFound``) naming the input by its parameter name; the command line
+spells it as the option, the API as the argument.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Sequence
+from typing import Any, NamedTuple
+
+from camtool.core.errors import DomainError, InputError
+from camtool.core.units import TStop, UnitError
+from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
+
+FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
+_SIDE = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)\s*([a-zA-Zµ\"]*)"
+_INLINE = re.compile(rf"^\s*{_SIDE}\s*[x×X*]\s*{_SIDE}\s*$")
+
+Database = Callable[[], Any]
+"""A function returning the preset database, called only when a preset is named."""
+
+
+class SensorChoice(NamedTuple):
+    """The sensor in use: size in mm, a label for the footer, and preset extras."""
+
+    width_mm: float
+    height_mm: float
+    label: str
+    coc_mm: float | None = None
+    pixel_pitch_mm: float | None = None
+
+    @property
+    def crop_factor(self) -> float:
+        """Ratio of the 36 × 24 mm diagonal to this sensor's diagonal.
+
+        >>> round(SensorChoice(23.5, 15.6, "APS-C").crop_factor, 4)
+        1.5339
+        """
+        return FULL_FRAME_DIAGONAL_MM / math.hypot(self.width_mm, self.height_mm)
+
+
+FULL_FRAME = SensorChoice(36.0, 24.0, "full frame 36 × 24 mm")
+
+
+class CocChoice(NamedTuple):
+    """The circles of confusion in mm (one per value given, else one) and where they came from."""
+
+    coc_mm: list[float]
+    origin: str
+
+
+def find(database: Database, kind: str, name: str, param: str) -> Any:
+    """The preset of ``kind`` called ``name``; an unknown name is ``PresetNotFound`` naming input ``param``."""
+    from camtool.presets import PresetNotFound
+
+    try:
+        return database().get(kind, name)
+    except PresetNotFound as error:
+        error.param = param
+        raise
+
+
+def resolve_sensor(*, sensor: str | None = None, crop: float | None = None, camera: Any = None, lens: Any = None,
+                   database: Database) -> SensorChoice:
+    """The sensor in use, by the precedence in the module docstring.
+
+    >>> resolve_sensor(crop=2.0, database=lambda: None)
+    SensorChoice(width_mm=18.0, height_mm=12.0, label='crop 2 (18 × 12 mm)', coc_mm=None, pixel_pitch_mm=None)
+    >>> resolve_sensor(sensor="36x24", database=lambda: _NoSensors())
+    SensorChoice(width_mm=36.0, height_mm=24.0, label='36 × 24 mm', coc_mm=None, pixel_pitch_mm=None)
+    """
+    if sensor is not None and crop is not None:
+        raise InputError("crop", "give {sensor} or {crop}, not both", usage=True)
+    if crop is not None:
+        from camtool.core.ranges import CROP_FACTOR, describe
+
+        if not CROP_FACTOR[0] <= crop <= CROP_FACTOR[1]:
+            raise DomainError("crop", crop, describe(CROP_FACTOR))
+        w, h = 36.0 / crop, 24.0 / crop
+        return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
+    fixed = getattr(lens, "sensor_id", None)
+    built_in = getattr(lens, "mount", None) == "fixed lens"
+    if sensor is None and fixed is not None and (camera is None or built_in):
+        # a lens's own format (the one it is made for) beats the full-frame default; a fixed or phone
+        # lens's beats the camera's too (a phone's other modules are not on the camera preset's main
+        # sensor), while an interchangeable lens is on the body's sensor; a sensor given beats both
+        own = find(database, "sensor", fixed, "lens")
+        same = camera is not None and camera.sensor.id == own.id
+        return SensorChoice(own.width_mm, own.height_mm,
+                            f"{own.name} {own.width_mm:g} × {own.height_mm:g} mm (the lens's own format)", own.coc_mm,
+                            camera.pixel_pitch_mm if same and camera is not None else None)
+    if sensor is None and camera is not None:
+        body = camera.sensor
+        return SensorChoice(body.width_mm, body.height_mm, f"{camera.name} ({body.width_mm:g} × {body.height_mm:g} mm)",
+                            body.coc_mm, camera.pixel_pitch_mm)
+    if sensor is None:
+        return FULL_FRAME
+    match = _INLINE.match(sensor)
+    unitless = match is not None and not match.group(2) and not match.group(4)
+    preset = _sensor_preset(database, sensor, quiet=match is not None)
+    if preset is not None:
+        pitch = camera.pixel_pitch_mm if camera is not None else None
+        label = f"{preset.name} {preset.width_mm:g} × {preset.height_mm:g} mm"
+        sides = sorted((float(match.group(1)), float(match.group(3)))) if unitless and match else []
+        if sides and sides != sorted((preset.width_mm, preset.height_mm)):
+            label += f" (--sensor {sensor.strip()} is the preset; write {sensor.strip()}mm for a size in mm)"
+        return SensorChoice(preset.width_mm, preset.height_mm, label, preset.coc_mm, pitch)
+    assert match is not None  # a name that is no preset raised above
+    w = _side(sensor, match.group(1), match.group(2) or match.group(4))
+    h = _side(sensor, match.group(3), match.group(4) or match.group(2))
+    return SensorChoice(max(w, h), min(w, h), f"{max(w, h):g} × {min(w, h):g} mm")
+
+
+class _NoSensors:
+    """A database with no sensor presets (for the doctest of an inline size)."""
+
+    def get(self, kind: str, name: str) -> Any:
+        from camtool.presets import PresetNotFound
+
+        raise PresetNotFound(kind, name)
+
+
+def _sensor_preset(database: Database, name: str, quiet: bool) -> Any:
+    """The sensor preset called ``name``, or None when there is none and ``quiet`` (an inline size)."""
+    from camtool.presets import PresetNotFound
+
+    if not quiet:
+        return find(database, "sensor", name, "sensor")
+    try:
+        return database().get("sensor", name)
+    except PresetNotFound:
+        return None
+
+
+def _side(sensor: str, number: str, unit: str) -> float:
+    """One side of an inline sensor size in mm (a bare number is mm), checked against its range."""
+    from camtool.core.ranges import SENSOR_SIDE_MM, describe
+    from camtool.core.units import parse_length
+
+    try:
+        mm = parse_length(number + (unit or ""), "mm")
+    except UnitError as error:
+        raise InputError("sensor", _braced(str(error))) from None
+    if not SENSOR_SIDE_MM[0] <= mm <= SENSOR_SIDE_MM[1]:
+        raise DomainError("sensor", sensor, f"each side {describe(SENSOR_SIDE_MM, 'mm')}")
+    return mm
+
+
+def _braced(text: str) -> str:
+    """``text`` safe as a template: literal braces doubled."""
+    return text.replace("{", "{{").replace("}", "}}")
+
+
+def resolve_coc(*, coc: Sequence[float] = (), coc_rule: str | None = None, sensor: SensorChoice,
+                pixel_pitch_mm: Sequence[float] | None = None, camera: Any = None) -> CocChoice:
+    """The CoC values in mm and where they came from (the precedence in the module docstring).
+
+    >>> resolve_coc(sensor=FULL_FRAME)
+    CocChoice(coc_mm=[0.028844410203711916], origin='d/1500 of 43.3 mm')
+    >>> resolve_coc(coc=[0.03], sensor=FULL_FRAME).origin
+    '--coc'
+    """
+    if coc:
+        return CocChoice(list(coc), "--coc")
+    if coc_rule is None and sensor.coc_mm is not None:
+        return CocChoice([sensor.coc_mm], f"{sensor.label} preset")
+    pitch = pixel_pitch_mm[0] if pixel_pitch_mm else sensor.pixel_pitch_mm
+    try:
+        choice = coc_from_rule(coc_rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
+    except UnitError as error:
+        text = str(error)
+        if pitch is None and camera is not None:  # the lens's own sensor is not the camera's
+            text = text.replace("give --camera or --pixel-pitch",
+                                "--camera's is its main sensor's, not this lens's; give --pixel-pitch")
+        raise InputError("coc_rule", _braced(text)) from None
+    from camtool.core.ranges import COC_MM, describe
+
+    if not COC_MM[0] <= choice.coc_mm <= COC_MM[1]:
+        shown = coc_rule or DEFAULT_RULE
+        param = "coc_rule" if coc_rule is not None else ("pixel_pitch" if pixel_pitch_mm else "sensor")
+        raise InputError(param, _braced(f"{shown} gives a CoC of {choice.coc_mm:.4g} mm, outside the valid range: "
+                                        f"{describe(COC_MM, 'mm')}"))
+    return CocChoice([choice.coc_mm], choice.origin)
+
+
+SCENE_FIELDS = {
+    "focal_length_mm": "focal_length", "f_number": "f_number", "distance_mm": "distance",
+    "subject_size_mm": "subject_size", "background_mm": "background", "coc_mm": "coc",
+    "magnification": "magnification",
+}
+"""Scene preset fields -> the input each one fills."""
+
+
+class Equipment(NamedTuple):
+    """The presets in use: a scene's values for the inputs left empty, its camera, lens and sensor name."""
+
+    filled: dict[str, Any]
+    camera: Any
+    lens: Any
+    sensor: str | None
+
+
+def resolve_equipment(*, scene: str | None = None, camera: str | None = None, lens: str | None = None,
+                      empty: Sequence[str] = (), sensor_given: bool = True, database: Database) -> Equipment:
+    """The scene, camera and lens presets named, and what the scene fills.
+
+    ``empty`` are the inputs left empty that this command has (a scene
+    fills only those); ``sensor_given`` is whether a sensor was given (a
+    scene's camera is then not used, nor its sensor).
+    """
+    filled: dict[str, Any] = {}
+    sensor_name = None
+    if scene:
+        preset = find(database, "scene", scene, "scene")
+        for field, name in SCENE_FIELDS.items():
+            value = getattr(preset, field, None)
+            if value is not None and name in empty:
+                filled[name] = value
+        if preset.camera is not None and camera is None and not sensor_given:
+            camera = preset.camera.id
+        elif preset.sensor is not None and not sensor_given:
+            sensor_name = preset.sensor.id
+        if preset.lens is not None and lens is None:
+            lens = preset.lens.id
+    body = find(database, "camera", camera, "camera") if camera else None
+    glass = find(database, "lens", lens, "lens") if lens else None
+    return Equipment(filled, body, glass, sensor_name)
+
+
+def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any]) -> dict[str, float]:
+    """What a lens brings that was left empty: a prime's focal length, a single-aperture lens's f-number.
+
+    A zoom needs its focal length given; a lens with a range of apertures needs
+    the f-number given.
+    """
+    out: dict[str, float] = {}
+    if not focal_lengths:
+        if lens.is_zoom:
+            raise InputError("focal_length", f"{{lens}} {lens.id} is a zoom ({lens.focal_min_mm:g}–{lens.focal_max_mm:g} "
+                                             "mm): give the focal length with {focal_length}", usage=True)
+        out["focal_length"] = lens.focal_min_mm
+    if not f_numbers and lens.f_number_min is not None and lens.f_number_max == lens.f_number_min \
+            and lens.f_number_max_tele in (None, lens.f_number_min):
+        out["f_number"] = lens.f_number_min  # a phone module or a fixed-aperture lens: one f-number
+    return out
+
+
+def check_lens(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any], distances_mm: Sequence[float],
+               distance_from: str = "sensor") -> None:
+    """Refuse a focal length, f-number (or T-stop) or focus distance the lens cannot do."""
+    for f in focal_lengths:
+        if not lens.focal_min_mm * 0.995 <= f <= lens.focal_max_mm * 1.005:
+            span = f"{lens.focal_min_mm:g}–{lens.focal_max_mm:g} mm" if lens.is_zoom else f"{lens.focal_min_mm:g} mm"
+            raise InputError("focal_length", f"{f:g} mm is outside the valid range of {{lens}} {lens.id}: {span}")
+    focal = list(focal_lengths) or [lens.focal_min_mm]
+    for n in f_numbers:
+        if isinstance(n, TStop):
+            _check_t_stop(lens, n)
+            continue
+        for f in focal:
+            widest = lens.widest_f_number(f) or n
+            # A preset without a smallest aperture (none published) bounds the f-number from below only.
+            smallest = lens.smallest_f_number(f)
+            slowest = smallest or n
+            if not widest * 0.99 <= n <= slowest * 1.01:
+                span = f"f/{widest:g} to f/{slowest:g}" if smallest else f"from f/{widest:g}"
+                raise InputError("f_number", f"f/{n:g} is outside the valid range of {{lens}} {lens.id} at {f:g} mm: "
+                                             f"{span}")
+    if lens.min_focus_mm and distance_from == "sensor":
+        for d in distances_mm:
+            if d < lens.min_focus_mm:
+                raise InputError("distance", f"{d / 1000:.4g} m is outside the valid range of {{lens}} {lens.id}: at "
+                                             f"least its closest focus, {lens.min_focus_mm / 1000:.4g} m from the sensor")
+
+
+def _check_t_stop(lens: Any, t: float) -> None:
+    """Refuse a T-stop below the lens's widest T-stop (or its widest f-number: T is never below N)."""
+    widest = lens.t_number_min or lens.f_number_min
+    if widest is not None and t < widest * 0.99:
+        span = f"T{widest:g}" if lens.t_number_min else f"f/{widest:g} (a T-stop is never below the f-number)"
+        raise InputError("f_number", f"T{t:g} is outside the valid range of {{lens}} {lens.id}: from {span}")
+
+
+def check_hiatus(hiatus_mm: float | None, *, focal_lengths: Sequence[float], pupil_magnification: float | None) -> None:
+    """A hiatus must keep every distance positive, whichever model uses it.
+
+    From the sensor the entrance pupil lies δ + v + f(1 − 1/P) in front of
+    it; the smallest image distance v is f (focus at infinity), so δ must
+    exceed −f(2 − 1/P). Retrofocus and telephoto designs reach several focal
+    lengths, so |δ| is allowed up to :data:`camtool.core.ranges.HIATUS_FOCAL_LENGTHS` × f.
+    """
+    if hiatus_mm is None:
+        return
+    from camtool.core.ranges import HIATUS_FOCAL_LENGTHS
+
+    p = pupil_magnification or 1.0
+    for f in focal_lengths:
+        low, high = -f * (2.0 - 1.0 / p), HIATUS_FOCAL_LENGTHS * f
+        if not low < hiatus_mm <= high:
+            raise InputError("hiatus", f"{hiatus_mm:g} mm is outside the valid range: more than {low:.4g} mm (the "
+                                       f"entrance pupil in front of the sensor) and at most {high:.4g} mm "
+                                       f"({HIATUS_FOCAL_LENGTHS:g} × focal length) for f = {f:g} mm")
