@@ -90,3 +90,11 @@ def test_every_phone_module_needs_neither_f_nor_n_on_the_command_line() -> None:
             continue
         (row,) = run_json("dof", "--lens", lens.id, "-s", "2m")
         assert math.isclose(row["focal_length_mm"], lens.focal_min_mm) and math.isclose(row["f_number"], lens.f_number_min)
+
+
+def test_a_built_in_lens_with_a_range_of_apertures_answers_wide_open() -> None:
+    db = DB()
+    q3 = db.lens("leica-summilux-28mm-f1.7-asph-q3")  # Leica: Summilux 28 f/1.7 ASPH., built in
+    assert equipment.lens_defaults(q3, focal_lengths=[], f_numbers=[]) == {"focal_length": 28.0, "f_number": 1.7}
+    interchangeable = db.lens("nikon-z-24mm-f1.8-s")
+    assert "f_number" not in equipment.lens_defaults(interchangeable, focal_lengths=[], f_numbers=[])

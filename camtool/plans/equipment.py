@@ -249,10 +249,13 @@ def resolve_equipment(*, scene: str | None = None, camera: str | None = None, le
 
 
 def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any]) -> dict[str, float]:
-    """What a lens brings that was left empty: a prime's focal length, a single-aperture lens's f-number.
+    """What a lens brings that was left empty: a prime's focal length; a single-aperture lens's f-number, and a
+    fixed (built-in) lens's widest.
 
-    A zoom needs its focal length given; a lens with a range of apertures needs
-    the f-number given.
+    A zoom needs its focal length given. An interchangeable lens with a range
+    of apertures needs the f-number given; a camera's built-in lens (a
+    compact's, a phone's) answers wide open, where its depth of field is
+    least, at the widest aperture every focal length asked for reaches.
     """
     out: dict[str, float] = {}
     if not focal_lengths:
@@ -260,9 +263,14 @@ def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Seque
             raise InputError("focal_length", f"{{lens}} {lens.id} is a zoom ({lens.focal_min_mm:g}–{lens.focal_max_mm:g} "
                                              "mm): give the focal length with {focal_length}", usage=True)
         out["focal_length"] = lens.focal_min_mm
-    if not f_numbers and lens.f_number_min is not None and lens.f_number_max == lens.f_number_min \
-            and lens.f_number_max_tele in (None, lens.f_number_min):
+    if f_numbers or lens.f_number_min is None:
+        return out
+    single = lens.f_number_max == lens.f_number_min and lens.f_number_max_tele in (None, lens.f_number_min)
+    if single:
         out["f_number"] = lens.f_number_min  # a phone module or a fixed-aperture lens: one f-number
+    elif lens.mount == "fixed lens":
+        focal = list(focal_lengths) or [out.get("focal_length", lens.focal_min_mm)]
+        out["f_number"] = max(lens.widest_f_number(f) or lens.f_number_min for f in focal)
     return out
 
 
