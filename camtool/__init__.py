@@ -14,33 +14,24 @@ from typing import Any
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "Composition",
-    "DepthOfField",
-    "DofLimits",
-    "ExposurePlan",
-    "FieldOfView",
-    "FocusGeometry",
-    "FocusPlan",
-    "LensData",
-    "circle_of_confusion",
-    "composition",
-    "depth_of_field",
-    "field_of_view",
-    "focus_for_limits",
-    "focus_for_magnification",
-    "hyperfocal_distance",
-    "plan_exposure",
-]
-
-
 def __getattr__(name: str) -> Any:
-    if name in __all__:
-        from camtool import api
-
+    # The public names are written once, as camtool.api.__all__; they (and __all__ itself) are loaded on first
+    # use, so a command that never touches the API never imports it.
+    if (name.startswith("_") and name != "__all__") or name == "api":
+        raise AttributeError(f"module 'camtool' has no attribute {name!r}")
+    api = _api()
+    if name == "__all__":
+        return list(api.__all__)
+    if name in api.__all__:
         return getattr(api, name)
     raise AttributeError(f"module 'camtool' has no attribute {name!r}")
 
 
 def __dir__() -> list[str]:
-    return sorted([*globals(), *__all__])
+    return sorted([*globals(), *_api().__all__])
+
+
+def _api() -> Any:
+    import importlib
+
+    return importlib.import_module("camtool.api")
