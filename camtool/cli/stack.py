@@ -8,21 +8,25 @@ from typing import Any
 import click
 
 from camtool.cli.closeup import MAGNIFICATION, focus_models, has_focus_model
-from camtool.cli.command import Output, camtool_command
+from camtool.cli.command import GRID, MAX_TABLE_ROWS, Output, camtool_command
 from camtool.cli.common import f_numbers, flatten, footer, one_value, required
 from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.grid import CHUNK
 from camtool.cli.lensdata import ladder_errors, lens_data, model_options, pupil_and_hiatus
 from camtool.cli.options import (
     DISTANCE_M,
+    FOCAL_MM,
     LENGTH_MM,
     coc_options,
     distance_plane_option,
+    domain_message,
     library_errors,
     param_named,
     sensor_options,
 )
 from camtool.cli.params import FNumberType, NumberType
 from camtool.dof.ladder import focal_lengths, model_choices, model_help
+from camtool.render.columnar import ColumnRows
 from camtool.render.columns import NUMBER, TEXT, Column
 
 KEYS = ["frame", "distance_mm", "near_mm", "far_mm", "magnification", "step_mm", "extension_step_mm",
@@ -38,7 +42,14 @@ COLUMNS = [
 DEFAULT_OVERLAP = 0.2
 """A fifth of each frame's depth shared with the next: margin for rail and focus-ring error."""
 MAX_FRAMES = 10_000
-"""The most frames a bracketing plan may have on the command line."""
+"""The most frames a bracketing plan may have on the command line (thin and approx models, in closed form)."""
+SOLVED_FRAMES = {"thick": 2_000, "paraxial": 2_000, "raytrace": 250}
+"""The most frames of a plan whose every frame is solved numerically through a rung of the model ladder.
+
+Each frame there costs many evaluations of the model (a few ms for thick and
+paraxial, some 40 ms for raytrace), so the plan is bounded in time as well
+as in frames: about ten seconds at most on one core.
+"""
 WAVE_FROM = 1.0
 """From this magnification on (life size), the default criterion is the wave-optics depth."""
 
@@ -50,7 +61,7 @@ def _one(ctx: click.Context, values: list[float], option: str, name: str) -> flo
 
 
 @camtool_command("stack", keys=KEYS, batch=False)
-@click.option("-f", "--focal-length", "focal_length", type=LENGTH_MM, multiple=True,
+@click.option("-f", "--focal-length", "focal_length", type=FOCAL_MM, multiple=True,
               help="Focal length, e.g. 24 or 24mm (bare numbers are mm); one value. Bracketing mode needs it; "
                    "in rail mode it makes the classic depth exact.")
 @click.option("-N", "--f-number", "f_number", type=FNumberType(), multiple=True,
@@ -101,7 +112,9 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     is focused at the hyperfocal distance. Distances are in the
     --distance-from plane (the sensor stays put while the lens moves); the
     frames are solved by the --model chosen. More than 10000 frames is an
-    error on --near.
+    error on --near (2000 with thick or paraxial, 250 with raytrace, which
+    solve each frame numerically). A rail plan streams (JSON, CSV, --field) up
+    to 10⁷ frames; a table holds at most 100000.
     """
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     n = _one(ctx, apertures, "-N", "f_number")
@@ -126,7 +139,7 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
                                      "form (thin, or thick with the pupil magnification); it applies to --near/--far",
                                      ctx=ctx, param=param_named(ctx, "model"))
         focal = flatten(focal_length)
-        f = float(focal[0]) if focal else None
+        f = _one(ctx, focal, "-f", "focal_length") if focal else None
         chosen_criterion = criterion or ("wave" if m >= WAVE_FROM else "classic")
         return _rail(ctx, float(depth), n, m, chosen_criterion, c, float(overlap), p, wavelength, f, diffraction,
                      fmt, cocs, coc_origin, chosen.label, distance_from)
@@ -154,27 +167,82 @@ def _usable(ctx: click.Context, n: float, c: float, m: float, p: float, waveleng
 
 def _rail(ctx, depth, n, m, criterion, c, overlap, p, wavelength, f, diffraction, fmt, cocs, coc_origin,
           sensor_label, distance_from) -> Output:
+    """The rail plan's frames, or the current chunk of them: a long plan is written a chunk at a time."""
+    from camtool.core.errors import DomainError
     from camtool.dof.stack import rail_plan
 
     if diffraction and criterion == "classic":
         c = _usable(ctx, n, c, m, p, wavelength)
     with library_errors(ctx):
-        plan = rail_plan(depth, n, m, criterion, c, overlap, p, wavelength, f)
-    frame_depth = plan.front_mm + plan.rear_mm
-    rows = []
-    for k in range(1, plan.frames + 1):
-        near = (k - 1) * plan.step_mm
-        rows.append({"frame": k, "distance_mm": near + plan.front_mm, "near_mm": near, "far_mm": near + frame_depth,
-                     "magnification": m, "step_mm": plan.step_mm if k > 1 else 0.0,
-                     "extension_step_mm": plan.extension_step_mm if k > 1 else 0.0, "criterion": criterion,
-                     "mode": "rail", "distance_from": "subject"})
+        try:
+            plan = rail_plan(depth, n, m, criterion, c, overlap, p, wavelength, f)
+        except DomainError as error:
+            if error.param != "depth_mm":
+                raise
+            raise click.BadParameter(domain_message(error, "depth"), ctx=ctx, param=param_named(ctx, "depth")) \
+                from None
+    grid = ctx.meta.get(GRID)
+    if grid is None or grid.whole:  # a table (or a caller without a grid): every frame at once
+        if fmt == "table" and plan.frames > MAX_TABLE_ROWS:
+            raise click.BadParameter(
+                f"{depth:g} mm is outside the valid range for a table: at most {MAX_TABLE_ROWS:,} frames "
+                f"(this plan has {plan.frames:,} of {plan.step_mm:.4g} mm; --format csv or --format json "
+                "stream any number)", ctx=ctx, param=param_named(ctx, "depth"))
+        start, stop = 0, plan.frames
+    else:
+        if grid.count is None:
+            grid.count = plan.frames
+        start, stop = grid.start, grid.stop
+    rows = _rail_rows(plan, m, start, stop)
     note = ""
     if fmt == "table":
+        frame_depth = plan.front_mm + plan.rear_mm
         what = (f"{criterion} depth " + ("λ/NA²" if criterion == "wave" else f"(CoC {c:.3g} mm, {coc_origin})"))
-        note = (f"{plan.frames} frames · step {plan.step_mm:.4g} mm at the subject ({plan.extension_step_mm:.4g} mm "
-                f"of lens extension) · total depth {depth:.4g} mm · {what} · frame depth {frame_depth:.4g} mm, "
-                f"overlap {overlap:g} · positions along the subject from its nearest point")
+        if math.isinf(plan.rear_mm):
+            note = (f"1 frame · sharp from {plan.front_mm:.4g} mm in front of its focus to infinity behind it "
+                    f"(the subject at {m:g}× is at or beyond the hyperfocal distance): it covers any depth · "
+                    f"total depth {depth:.4g} mm · {what} · positions along the subject from its nearest point")
+        else:
+            note = (f"{plan.frames} frames · step {plan.step_mm:.4g} mm at the subject ({plan.extension_step_mm:.4g} "
+                    f"mm of lens extension) · total depth {depth:.4g} mm · {what} · frame depth {frame_depth:.4g} mm, "
+                    f"overlap {overlap:g} · positions along the subject from its nearest point")
     return Output(rows, COLUMNS, KEYS, note)
+
+
+def _rail_rows(plan: Any, m: float, start: int, stop: int) -> ColumnRows:
+    """Frames ``start + 1`` to ``stop`` of a rail plan, as columns: frame k's near limit is (k − 1)·step.
+
+    A plan of more than one chunk is computed as arrays (the writer turns a
+    float array into text in one pass); the values are the same products
+    k·step either way.
+    """
+    count = max(0, stop - start)
+    front, depth = plan.front_mm, plan.front_mm + plan.rear_mm
+    step: Any
+    extension: Any
+    if math.isinf(plan.step_mm):  # one frame, sharp to infinity behind its focus: no step
+        near: Any = [0.0] * count
+        step = extension = [0.0] * count
+        focus: Any = [front] * count
+        far: Any = [math.inf] * count
+    elif plan.frames <= CHUNK:
+        near = [k * plan.step_mm for k in range(start, stop)]
+        step, extension = [plan.step_mm] * count, [plan.extension_step_mm] * count
+        if start == 0 and count:
+            step[0] = extension[0] = 0.0
+        focus, far = [x + front for x in near], [x + depth for x in near]
+    else:
+        import numpy as np
+
+        near = np.arange(start, stop, dtype=np.float64) * plan.step_mm
+        step, extension = np.full(count, plan.step_mm), np.full(count, plan.extension_step_mm)
+        if start == 0:
+            step[0] = extension[0] = 0.0
+        focus, far = near + front, near + depth
+    columns = {"frame": list(range(start + 1, stop + 1)), "distance_mm": focus, "near_mm": near, "far_mm": far,
+               "magnification": float(m), "step_mm": step, "extension_step_mm": extension,
+               "criterion": plan.criterion, "mode": "rail", "distance_from": "subject"}
+    return ColumnRows(count, columns)
 
 
 def _bracket(ctx, f, n, c, near, far, overlap, criterion, model, lens, p, wavelength, diffraction, tolerance,
@@ -200,13 +268,20 @@ def _bracket(ctx, f, n, c, near, far, overlap, criterion, model, lens, p, wavele
 
         by_rung = None if rung in ("thin", "approx") else _ladder_limits_at(ctx, rung, n, c, lens, tolerance)
         with library_errors(ctx):
-            plan = internal_bracket_plan(focusing, n, c, near, far, overlap, rung, MAX_FRAMES, by_rung,
+            if by_rung is not None:
+                _bounded(ctx, rung, lambda most: internal_bracket_plan(focusing, n, c, near, far, overlap, "thin",
+                                                                       most, None, distance_from))
+            plan = internal_bracket_plan(focusing, n, c, near, far, overlap, rung, _most_frames(rung), by_rung,
                                          distance_from)
     else:
         if rung not in ("thin", "approx"):
+            with library_errors(ctx):
+                _bounded(ctx, rung, lambda most: bracket_plan(f, n, c, near, far, overlap, "thin", most, None, None,
+                                                              distance_from, delta))
             limits, hyper = _ladder_limits(ctx, rung, f, n, c, lens, tolerance)
         with library_errors(ctx):
-            plan = bracket_plan(f, n, c, near, far, overlap, rung, MAX_FRAMES, limits, hyper, distance_from, delta)
+            plan = bracket_plan(f, n, c, near, far, overlap, rung, _most_frames(rung), limits, hyper, distance_from,
+                                delta)
         _check_closest_focus(ctx, plan.frames[0].distance_mm, f, distance_from, delta)
     rows = []
     previous = None
@@ -226,6 +301,35 @@ def _bracket(ctx, f, n, c, near, far, overlap, criterion, model, lens, p, wavele
         note = (f"{len(rows)} frames · {near / 1000:.4g} m to {end} · {what} · {rung} model · overlap {overlap:g} · "
                 + footer(None, cocs if criterion == "classic" else None, coc_origin, sensor_label, distance_from))
     return Output(rows, COLUMNS, KEYS, note)
+
+
+def _most_frames(rung: str) -> int:
+    """The most frames of a bracketing plan by this model: fewer where each frame is solved numerically."""
+    return SOLVED_FRAMES.get(rung, MAX_FRAMES)
+
+
+def _bounded(ctx: click.Context, rung: str, thin_plan: Any) -> None:
+    """Refuse at once a plan the thin lens puts past the ``rung``'s frame limit, before solving any frame by it.
+
+    The thin lens's frames (closed form, a few µs each) stand in for the
+    count: a plan whose every frame is solved through a numerical rung takes
+    milliseconds a frame, so one far beyond the limit is refused without
+    spending seconds to find out. A count near the limit is settled by the
+    rung's own plan, which stops at the same limit.
+    """
+    from camtool.core.errors import DomainError
+
+    most = _most_frames(rung)
+    try:
+        thin_plan(most + most // 10)  # a margin: the rung's own count may be a little lower
+    except DomainError as error:
+        if error.param == "near_mm" and "frames" in error.detail:
+            near = float(ctx.params.get("near") or 0.0)
+            raise click.BadParameter(
+                f"{near / 1000:.4g} m is outside the valid range: far enough that at most {most} frames reach "
+                f"--far with the {rung} model (it solves each frame numerically; the thin and approx models plan up "
+                f"to {MAX_FRAMES})", ctx=ctx, param=param_named(ctx, "near")) from None
+        # any other error is the rung's own to report
 
 
 def _check_closest_focus(ctx: click.Context, first: float, f: float, plane: str, delta: float) -> None:

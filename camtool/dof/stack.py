@@ -44,6 +44,7 @@ from camtool.geometry.closeup import InternalFocus
 
 __all__ = [
     "CRITERIA",
+    "MAX_RAIL_FRAMES",
     "BracketFrame",
     "BracketPlan",
     "RailPlan",
@@ -58,6 +59,8 @@ CRITERIA = ("classic", "wave")
 """``classic``: the circle-of-confusion depth; ``wave``: the quarter-wave depth λ/NA²."""
 
 _MM_PER_NM = 1e-6
+MAX_RAIL_FRAMES = 10_000_000
+"""The most frames of a rail plan: 10⁷, some 116 days of shooting at one frame a second."""
 
 
 def wave_coc_mm(f_number: Any, magnification: Any = 0.0, pupil_magnification: Any = 1.0,
@@ -116,12 +119,21 @@ class RailPlan(NamedTuple):
 
 def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion: str = "wave",
               coc_mm: float = 0.03, overlap: float = 0.2, pupil_magnification: float = 1.0,
-              wavelength_nm: float = 550.0, focal_length_mm: float | None = None) -> RailPlan:
+              wavelength_nm: float = 550.0, focal_length_mm: float | None = None,
+              max_frames: int = MAX_RAIL_FRAMES) -> RailPlan:
     """Frames and rail step in mm that cover a subject depth at constant magnification.
 
     step = D·(1 − o), D the frame depth (:func:`frame_depth_mm`), and
     frames = ⌈depth/step⌉, so that frames·step ≥ depth: frame k (1-based)
     has its sharp zone centred on [(k − 1)·s, k·s] along the subject.
+
+    A frame sharp to infinity behind its focus (classic criterion with a focal
+    length, the subject u = f·(1 + 1/m) at or beyond the hyperfocal distance)
+    covers any depth: the plan is one frame, with step and covered depth ∞.
+    Only the plan's figures are returned, never a list of frames: frame k's
+    near limit is (k − 1)·step, so a plan of any length is written frame by
+    frame in constant memory. More than ``max_frames`` frames is a
+    :class:`DomainError` on ``depth_mm``.
 
     Parameters
     ----------
@@ -134,6 +146,7 @@ def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion:
     pupil_magnification : float, P > 0
     wavelength_nm : float, λ > 0
     focal_length_mm : float or None (classic: exact close-up depth when given)
+    max_frames : int, the most frames a plan may have
 
     References
     ----------
@@ -150,9 +163,18 @@ def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion:
     require("overlap", overlap, 0.0 <= overlap < 1.0, "0 to below 1")
     front, rear = frame_depth_mm(f_number, magnification, criterion, coc_mm, pupil_magnification, wavelength_nm,
                                  focal_length_mm)
+    require("magnification", magnification, math.isfinite(front) and front > 0.0 and rear > 0.0,
+            "one whose frame has a depth (no finite depth in front of the focus)")
     depth = front + rear
     step = depth * (1.0 - overlap)
-    frames = max(1, math.ceil(depth_mm / step * (1.0 - 1e-12)))
+    if math.isinf(rear):  # sharp to infinity behind the focus: one frame covers any depth
+        return RailPlan(1, math.inf, math.inf, front, rear, math.inf, criterion)
+    ratio = depth_mm / step * (1.0 - 1e-12)
+    require("depth_mm", depth_mm, ratio <= max_frames, "at most {limit} ({frames:,} frames of "
+            "{step:.4g} mm each)".format(limit="{limit}", frames=max_frames, step=step),
+            detail=f"more than {max_frames:,} frames: a smaller magnification, a larger f-number or more "
+                   "depth per frame needs fewer", limit=max_frames * step / (1.0 - 1e-12))
+    frames = max(1, math.ceil(ratio))
     return RailPlan(frames, step, magnification * magnification * step, front, rear, (frames - 1) * step + depth,
                     criterion)
 
@@ -261,6 +283,14 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
             u = new
         return u
 
+    # the farthest frame is focused at H: a focus the lens reaches (beyond f from the lens; at most 1:1 from
+    # the sensor, as --near is). Only the approx rule's H = f²/(N·c) can fall closer (the thin lens's
+    # H = f²/(N·c) + f never does): the rule has no frame there.
+    nearest_focus = 2.0 * f if sensor else f
+    require("distance_mm", hyper + offset(hyper) if hyper > f else hyper, hyper > nearest_focus,
+            "more than {limit} " + ("from the sensor (4f + hiatus, 1:1)" if sensor else "from the lens (f)"),
+            detail=f"the {model} model's hyperfocal distance, where the farthest frame is focused",
+            limit=nearest_focus + offset(nearest_focus) if sensor else f)
     # the near limit when focused at H: any wanted near limit beyond it is met by focusing at H
     near_at_hyper = limits(hyper)[0] + offset(hyper)
     u = hyper
@@ -289,6 +319,7 @@ def _chain(frame_for: Callable[[float], BracketFrame], near_mm: float, far_mm: f
     wanted = float(near_mm)
     while True:
         each = frame_for(wanted)
+        _check_frame(each, frames[-1] if frames else None)
         frames.append(each)
         if each.far_mm >= far_mm:
             return frames
@@ -296,6 +327,25 @@ def _chain(frame_for: Callable[[float], BracketFrame], near_mm: float, far_mm: f
             require("near_mm", near_mm, False, f"far enough that at most {max_frames} frames reach --far",
                     detail=f"more than {max_frames} frames: a larger f-number, CoC or --near needs fewer")
         wanted = each.far_mm - overlap * (each.far_mm - each.near_mm)
+
+
+def _check_frame(frame: BracketFrame, previous: BracketFrame | None) -> None:
+    """A :class:`DomainError` unless the frame is finite, 0 < near ≤ focus ≤ far, and beyond the previous one.
+
+    The frames of a model evaluated far outside the range it was made for
+    (a rung of the ladder at an extreme aperture, say) are refused rather than
+    printed: a plan never holds a NaN, a negative distance or a focus that
+    steps back.
+    """
+    focus, near, far = frame.distance_mm, frame.near_mm, frame.far_mm
+    ordered = 0.0 < near <= focus * (1.0 + 1e-12) and focus <= far * (1.0 + 1e-12) and math.isfinite(focus) \
+        and not math.isnan(far) and math.isfinite(frame.magnification) and frame.magnification > 0.0
+    require("distance_mm", focus, ordered, "a focus with 0 < near ≤ focus ≤ far",
+            detail="a frame the model has no answer for")
+    if previous is not None:
+        require("distance_mm", focus, focus > previous.distance_mm and near >= previous.near_mm,
+                "beyond the previous frame's focus, {limit}", limit=previous.distance_mm,
+                detail="the model's frames step back: no plan")
 
 
 FocusLimits = Callable[[float, float], tuple[float, float]]
@@ -366,7 +416,9 @@ def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, n
         low, high = m_min, m_max
         if math.isinf(closest.far_mm):
             low = m_max
-        while high - low > 1e-13 * high:
+        for _ in range(200):  # bisection in log m: about 50 halvings of log(m_max/m_min) reach 1e-13
+            if high - low <= 1e-13 * high:
+                break
             mid = math.sqrt(low * high)
             if math.isinf(frame(mid).far_mm):
                 low = mid
