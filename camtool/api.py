@@ -35,9 +35,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Annotated, Any, NamedTuple, TypeVar
 
-from camtool.core.errors import DomainError
+from camtool.core.domain import ISO_RANGE, SHUTTER_RANGE_S
+from camtool.core.errors import DomainError, InputError
 from camtool.core.ranges import (
     COC_MM,
+    CROP_FACTOR,
     DISTANCE_MM,
     F_NUMBER,
     FOCAL_LENGTH_MM,
@@ -48,7 +50,10 @@ from camtool.core.ranges import (
 )
 from camtool.dof.ladder import LensData
 from camtool.dof.limits import DofLimits
+from camtool.exposure.equivalence import Equivalent
+from camtool.exposure.flash import Flash
 from camtool.exposure.plan import ExposurePlan
+from camtool.exposure.stars import StarLimits
 from camtool.geometry.compose import Composition
 from camtool.geometry.fov import FieldOfView
 from camtool.geometry.thinlens import FocusGeometry
@@ -57,19 +62,28 @@ __all__ = [
     "Composition",
     "DepthOfField",
     "DofLimits",
+    "Equivalent",
     "ExposurePlan",
     "FieldOfView",
+    "Flash",
     "FocusGeometry",
     "FocusPlan",
     "LensData",
+    "StarLimits",
     "circle_of_confusion",
     "composition",
     "depth_of_field",
+    "equivalent_settings",
     "field_of_view",
+    "film_time",
+    "flash_exposure",
     "focus_for_limits",
     "focus_for_magnification",
     "hyperfocal_distance",
     "plan_exposure",
+    "preset",
+    "preset_names",
+    "star_trail_limits",
 ]
 
 @dataclass(frozen=True)
@@ -138,10 +152,24 @@ Tolerance = Annotated[float, _Kind("number", scalar=True, bounds=(0.0, 1.0))]
 PixelPitch = Annotated[Any, _Kind("number", scalar=True, optional=True,
                                   bounds=(PIXEL_PITCH_UM[0] / 1000.0, PIXEL_PITCH_UM[1] / 1000.0), unit="mm")]
 Flag = Annotated[bool, _Kind("flag")]
+ISO = Annotated[Any, _Kind("number", bounds=ISO_RANGE)]
+OptionalISO = Annotated[Any, _Kind("number", optional=True, bounds=ISO_RANGE)]
+ISOReal = Annotated[float, _Kind("number", scalar=True, bounds=ISO_RANGE)]
+OptionalFNumber = Annotated[Any, _Kind("number", optional=True, bounds=F_NUMBER)]
+OptionalPositive = Annotated[Any, _Kind("number", optional=True, positive=True)]
+Positive = Annotated[Any, _Kind("number", positive=True)]
+Crop = Annotated[Any, _Kind("number", bounds=CROP_FACTOR)]
+Declination = Annotated[Any, _Kind("number", bounds=(-89.0, 89.0), unit="°", zero_ok=True)]
+OptionalPixelPitchUm = Annotated[Any, _Kind("number", optional=True, bounds=PIXEL_PITCH_UM, unit="µm")]
+ShutterTime = Annotated[Any, _Kind("number", bounds=SHUTTER_RANGE_S, unit="s")]
+Diagonal = Annotated[Any, _Kind("number", bounds=(0.5, 2000.0 * math.sqrt(2.0)), unit="mm")]
 DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
 Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
 Text = Annotated[str, _Kind("text")]
 OptionalPrescription = Annotated[Any, _Kind("prescription", optional=True)]
+
+FULL_FRAME_DIAGONAL = math.hypot(36.0, 24.0)
+PRESET_KINDS = ("sensor", "camera", "lens", "prescription", "scene", "film")
 
 _F = TypeVar("_F", bound=Callable[..., Any])
 
@@ -569,3 +597,124 @@ def plan_exposure(
     from camtool.exposure.plan import plan_exposure as run
 
     return run(ev100, f_number, shutter_s, iso, nd_stops, magnification, pupil_magnification)
+
+
+@_checked
+def star_trail_limits(focal_length_mm: FocalLength, f_number: FNumber, *, crop_factor: Crop = 1.0,
+                      pixel_pitch_um: OptionalPixelPitchUm = None, declination_deg: Declination = 0.0,
+                      rule_constant: Annotated[float, _Kind("number", scalar=True, bounds=(100.0, 1000.0))] = 500.0,
+                      npf_k: Annotated[float, _Kind("number", scalar=True, bounds=(0.1, 10.0))] = 1.0) -> StarLimits:
+    """The longest exposure in seconds before stars trail, as ``camtool stars`` gives it: the 500 rule and the NPF rule.
+
+    ``rule500_s`` = constant/(f·crop); ``npf_simple_s`` and ``npf_s`` (F. Michaud's NPF rule) need the pixel
+    pitch in µm and are None without it.
+
+    Examples
+    --------
+    >>> s = star_trail_limits(24, 2.8, pixel_pitch_um=4.3)
+    >>> round(s.rule500_s, 2), round(s.npf_s, 2)  # 500/24; (16.856·2.8 + 0.0997·24 + 13.713·4.3)/24
+    (20.83, 4.52)
+    """
+    from camtool.exposure.stars import star_limits
+
+    return star_limits(focal_length_mm, f_number, crop_factor, pixel_pitch_um, declination_deg, rule_constant, npf_k)
+
+
+@_checked
+def flash_exposure(*, guide_number_m: OptionalPositive = None, distance_mm: OptionalPositive = None,
+                   f_number: OptionalFNumber = None, iso: OptionalISO = None, guide_number_iso: ISOReal = 100.0) -> Flash:
+    """Give three of guide number (metres, quoted at ``guide_number_iso``), distance, f-number and ISO; get the fourth.
+
+    As ``camtool flash``: GN = distance × N at the quoted ISO, × √(ISO/quoted) at another. The result's
+    ``distance_m`` is in metres, like the guide number; exactly one of the four must be left out.
+
+    Examples
+    --------
+    >>> round(flash_exposure(guide_number_m=40, f_number=8, iso=400).distance_m, 6)  # 40·√4/8
+    10.0
+    """
+    from camtool.exposure.flash import solve_flash
+
+    given = {"guide_number_m": guide_number_m, "distance_m": None if distance_mm is None else distance_mm / 1000.0,
+             "f_number": f_number, "iso": iso}
+    if sum(value is None for value in given.values()) != 1:
+        left = ", ".join("{distance_mm}" if name == "distance_m" else "{" + name + "}"
+                         for name, value in given.items() if value is None) or "none"
+        raise InputError("guide_number_m", "give three of {guide_number_m}, {distance_mm}, {f_number} and {iso} to "
+                                           f"solve for the fourth (left out: {left})")
+    return solve_flash(**given, quoted_iso=guide_number_iso)
+
+
+@_checked
+def equivalent_settings(focal_length_mm: FocalLength, f_number: FNumber, iso: ISO, *,
+                        sensor_diagonal_mm: Diagonal, target_diagonal_mm: Diagonal = FULL_FRAME_DIAGONAL,
+                        converter: Annotated[Any, _Kind("number", bounds=(0.1, 10.0))] = 1.0) -> Equivalent:
+    """The same picture on another format, as ``camtool equiv``: focal length × r, f-number × r, ISO × r².
+
+    r is the ratio of the diagonals (source over target; full frame's 43.27 mm by default).
+
+    Examples
+    --------
+    >>> e = equivalent_settings(25, 1.4, 200, sensor_diagonal_mm=21.6)  # Micro Four Thirds: r = 43.27/21.6
+    >>> round(e.focal_length_mm, 1), round(e.f_number, 2), round(e.iso)
+    (50.1, 2.8, 802)
+    """
+    from camtool.exposure.equivalence import equivalent_settings as run
+
+    return run(focal_length_mm, f_number, iso, sensor_diagonal_mm, target_diagonal_mm, converter)
+
+
+@_checked
+def film_time(film: Text, metered_s: ShutterTime) -> Any:
+    """The exposure time in seconds a film needs for a metered time, with its reciprocity failure.
+
+    ``film`` is a film preset's name (``camtool presets list --kind film``); below its threshold the metered
+    time stands.
+
+    Examples
+    --------
+    >>> film_time("hp5", 0.5)  # under a second: no correction (Ilford's HP5 Plus datasheet)
+    0.5
+    """
+    from camtool.exposure.reciprocity import film_time_s, find_film
+
+    try:
+        chosen = find_film(film)
+    except ValueError as error:
+        raise DomainError("film", _shown(film), "a film preset's name", str(error)) from None
+    return film_time_s(chosen, metered_s)
+
+
+@_checked
+def preset(kind: Annotated[str, _Kind("choice", choices=PRESET_KINDS)], name: Text) -> Any:
+    """The preset of ``kind`` called ``name`` (any spelling of its id or aliases), from the shipped database and the
+    user's files, as the command line finds it.
+
+    An unknown name raises :class:`~camtool.core.errors.DomainError` on ``name``, with the closest names.
+
+    Examples
+    --------
+    >>> lens = preset("lens", "NIKKOR Z 24mm f/1.8 S")  # its name as Nikon writes it
+    >>> lens.id, lens.focal_min_mm, lens.f_number_min
+    ('nikon-z-24mm-f1.8-s', 24.0, 1.8)
+    """
+    from camtool.presets import PresetNotFound, load_db
+
+    try:
+        return load_db().get(kind, name)
+    except PresetNotFound as error:
+        raise DomainError("name", _shown(name), f"the name of a {kind} preset", str(error)) from None
+
+
+@_checked
+def preset_names(kind: Annotated[str, _Kind("choice", choices=PRESET_KINDS)]) -> list[str]:
+    """The ids of every preset of ``kind``, as ``camtool presets list --kind KIND`` lists them.
+
+    Examples
+    --------
+    >>> "full-frame" in preset_names("sensor")
+    True
+    """
+    from camtool.presets import load_db
+
+    return load_db().names(kind)

@@ -65,6 +65,21 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "rule": st.sampled_from(["d/1500", "d/1730", "px:2", "print:8x10in@25cm", "d/1000"]),
     "diffraction": st.booleans(),
     "prescription": st.sampled_from([None, "dgauss100"]).map(lambda name: name and _prescription(name)),
+    "crop_factor": st.floats(0.1, 100.0),
+    "pixel_pitch_um": st.one_of(st.none(), st.floats(0.2, 100.0)),
+    "declination_deg": st.floats(-89.0, 89.0),
+    "rule_constant": st.floats(100.0, 1000.0),
+    "npf_k": st.floats(0.1, 10.0),
+    "guide_number_m": st.one_of(st.none(), st.floats(1.0, 100.0)),
+    "guide_number_iso": st.floats(25.0, 400.0),
+    "sensor_diagonal_mm": st.floats(1.0, 100.0),
+    "target_diagonal_mm": st.floats(1.0, 100.0),
+    "converter": st.floats(0.5, 2.0),
+    "film": st.sampled_from(["hp5", "tri-x", "portra-400", "velvia-50", "no-such-film"]),
+    "metered_s": st.floats(1e-4, 1e4),
+    "kind": st.sampled_from(["sensor", "camera", "lens", "prescription", "scene", "film"]),
+    "name": st.sampled_from(["full-frame", "nikon-z-8", "nikon-z-24mm-f1.8-s", "dgauss100", "hp5", "Full Frame",
+                             "no-such-preset"]),
 }
 
 def _prescription(name: str) -> Any:
@@ -94,7 +109,8 @@ WRONG_TEXT = [None, 1, 1.5, True, b"thin", ["thin"], "", "THIN", "d/0", "d/-5", 
 # Where an infinite result is a right answer: the far limit and what follows from it when the far limit is
 # at infinity, the front depth when the focus is at infinity; a distance at infinity for a subject there.
 INFINITE_OK = {"front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hyperfocal_mm", "lens_distance_mm",
-               "sensor_distance_mm", "object_distance_mm", "image_distance_mm"}
+               "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
+               "radius_mm"}  # a prescription's flat surface
 
 
 def hostile_arrays() -> st.SearchStrategy[Any]:
@@ -105,11 +121,12 @@ def hostile_arrays() -> st.SearchStrategy[Any]:
 
 def argument(name: str) -> st.SearchStrategy[Any]:
     valid = VALID[name]
-    if name in ("model", "distance_from", "rule", "diffraction", "prescription"):
+    if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()
-               | st.lists(valid, min_size=1, max_size=3) | hnp.arrays(np.float64, 2, elements=valid))
+               | st.lists(valid, min_size=1, max_size=3)
+               | hnp.arrays(np.float64, 2, elements=valid.filter(lambda v: v is not None)))
     return st.integers(0, 3).flatmap(lambda pick: bad if pick == 0 else valid)
 
 
@@ -128,6 +145,8 @@ def _values(result: Any, field: str = "") -> list[tuple[str, Any]]:
         return []
     if isinstance(result, (list, tuple)):
         return [v for item in result for v in _values(item, field)]
+    if isinstance(result, dict):  # a preset's raw record, as its file gives it
+        return [v for key, item in result.items() for v in _values(item, f"{field}.{key}")]
     if isinstance(result, np.ndarray) and result.dtype.kind in "USO":  # the model that ran, per element
         return [v for item in result.ravel().tolist() for v in _values(item, field)]
     if isinstance(result, (int, float, np.ndarray, np.generic)):
@@ -152,7 +171,7 @@ def defect(function: Any, kwargs: dict[str, Any]) -> str | None:
             return f"{field} is a {type(value).__name__}"
         if math.isnan(value):
             return f"{field} is NaN"
-        if math.isinf(value) and (value < 0 or field not in INFINITE_OK):
+        if math.isinf(value) and (value < 0 or field.split(".")[-1] not in INFINITE_OK):
             return f"{field} is {value}"
     return None
 
@@ -186,7 +205,8 @@ def test_every_public_function_answers_or_names_the_argument(name: str) -> None:
 
 def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
-                "focus_for_magnification", "hyperfocal_distance", "plan_exposure"}
+                "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
+                "flash_exposure", "preset", "preset_names", "star_trail_limits"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)
