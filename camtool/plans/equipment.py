@@ -227,7 +227,9 @@ def resolve_equipment(*, scene: str | None = None, camera: str | None = None, le
 
     ``empty`` are the inputs left empty that this command has (a scene
     fills only those); ``sensor_given`` is whether a sensor was given (a
-    scene's camera is then not used, nor its sensor).
+    scene's camera is then not used, nor its sensor). A camera with a lens
+    of its own (a compact's, a phone's main module) brings that lens when no
+    lens is named; a lens named, or a scene's, wins.
     """
     filled: dict[str, Any] = {}
     sensor_name = None
@@ -244,7 +246,12 @@ def resolve_equipment(*, scene: str | None = None, camera: str | None = None, le
         if preset.lens is not None and lens is None:
             lens = preset.lens.id
     body = find(database, "camera", camera, "camera") if camera else None
-    glass = find(database, "lens", lens, "lens") if lens else None
+    if lens:
+        glass = find(database, "lens", lens, "lens")
+    elif body is not None and getattr(body, "lens_id", None) is not None:
+        glass = find(database, "lens", body.lens_id, "camera")
+    else:
+        glass = None
     return Equipment(filled, body, glass, sensor_name)
 
 

@@ -245,6 +245,22 @@ class Database:
             raise PresetFileError(entry.path, str(error), line=entry.record["_refs"].get(key) or entry.record["_line"],
                                   kind=kind, preset_id=entry.id, key=key) from None
 
+    def _existing(self, entry: _Entry, kind: str, key: str) -> str:
+        """The id of the preset that ``key`` of ``entry`` names, found without building it (else as :meth:`_reference`).
+
+        A camera's lens is looked up this way: the lens's own ``sensor`` may
+        name the camera (a compact whose body size has no sensor preset), and
+        building one from the other would never end.
+        """
+        target = REFERENCES[kind][key]
+        name = str(entry.record[key])
+        found = self._index(target).find(normalize(name))
+        if found is None:
+            error = PresetNotFound(target, name, self.suggestions(target, name))
+            raise PresetFileError(entry.path, str(error), line=entry.record["_refs"].get(key) or entry.record["_line"],
+                                  kind=kind, preset_id=entry.id, key=key)
+        return found.id
+
 
 def _clash(kind: str, entry: _Entry, position: int, other: _Entry) -> PresetFileError:
     record = entry.record
@@ -283,8 +299,10 @@ def _build_camera(db: Database, entry: _Entry) -> Camera:
                         tier=entry.tier)
     else:
         sensor = db._reference(entry, "camera", "sensor")
+    lens_id = db._existing(entry, "camera", "lens") if "lens" in r else None
     return Camera(r["id"], r["name"], sensor, r.get("pixels_w"), r.get("pixels_h"), r.get("mount"),
-                  category=r.get("category"), approximate=r.get("approximate", False), **_common(entry))
+                  category=r.get("category"), approximate=r.get("approximate", False), lens_id=lens_id,
+                  **_common(entry))
 
 
 def _build_lens(db: Database, entry: _Entry) -> Lens:
@@ -294,13 +312,18 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
     assert focal_min is not None and focal_max is not None  # the schema requires one of the two spellings
     prescription = db._reference(entry, "lens", "prescription") if "prescription" in r else None
     sensor = db._reference(entry, "lens", "sensor") if "sensor" in r else None
+    sensor_id = sensor.id if sensor else None
+    if sensor is not None and db._index("sensor").find(normalize(sensor.id)) is None:
+        # the lens names a camera, whose own size has no sensor preset (a compact's): keep the
+        # name it was given, which finds that camera's sensor again
+        sensor_id = str(r["sensor"])
     return Lens(
         r["id"], r["name"], float(focal_min), float(focal_max), r.get("f_number_min"), r.get("f_number_max"),
         r.get("f_number_min_tele"), r.get("min_focus_mm"), r.get("max_magnification"),
         r.get("pupil_magnification"), r.get("hiatus_mm"),
         prescription_id=prescription.id if prescription else None,
         prescription=prescription.optics if prescription else None,
-        sensor_id=sensor.id if sensor else None, mount=r.get("mount"), category=r.get("category"),
+        sensor_id=sensor_id, mount=r.get("mount"), category=r.get("category"),
         f_number_max_tele=r.get("f_number_max_tele"),
         approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))

@@ -368,6 +368,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
     "camera": {
         **_COMMON,
         "sensor": sensor_ref,
+        "lens": reference,
         "pixels_w": pixel_count,
         "pixels_h": pixel_count,
         "mount": text,
@@ -447,7 +448,7 @@ REQUIRED = {
 }
 
 REFERENCES = {
-    "camera": {"sensor": "sensor"},
+    "camera": {"sensor": "sensor", "lens": "lens"},
     "lens": {"prescription": "prescription", "sensor": "sensor"},
     "scene": {"camera": "camera", "sensor": "sensor", "lens": "lens"},
 }
@@ -665,7 +666,12 @@ class Sensor:
 
 @dataclass(frozen=True)
 class Camera:
-    """A camera body: its sensor (resolved to a :class:`Sensor`), pixel counts and mount.
+    """A camera body: its sensor (resolved to a :class:`Sensor`), pixel counts, mount and built-in lens.
+
+    ``lens_id`` is the id of the lens preset of a camera whose lens is part of
+    it (a compact's or a phone's main module), or None; the lens is looked up
+    by id when it is used, so a lens whose own ``sensor`` names this camera
+    does not make the two presets build each other.
 
     >>> body = Camera("x", "X", Sensor("s", "S", 36.0, 24.0), 6000, 4000)
     >>> round(body.pixel_pitch_mm * 1000, 3), body.megapixels
@@ -685,6 +691,7 @@ class Camera:
     notes: str | None = None
     origin: str | None = None
     tier: str | None = None
+    lens_id: str | None = None
 
     kind = "camera"
 
