@@ -163,7 +163,8 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
         # The estimate is of what the model leaves out of the lens data given; 0 (nothing left out) is not shown.
         worst = max(row["error_estimate"] for row in rows)
         used = " / ".join(dict.fromkeys(row["model"] for row in rows))
-        label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
+        label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "") + _h_note(
+            model, lens, rows)
         extra = branch_note(rows) if close else ""
         note = label + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from, extra)
     return Output(rows, columns, keys, note)
@@ -202,13 +203,24 @@ def _closeup(ctx, model, f, n, w, c, by_m, extension, teleconverter, distance_fr
                                  if row["near_mm"] is not None else row["reason"])
         worst = max(row["error_estimate"] for row in answered)
         used = " / ".join(dict.fromkeys(row["model"] for row in answered))
-        label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
+        label = f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "") + _h_note(
+            model, lens, answered)
         extra = " · ".join(part for part in (branch_note(rows) if not by_m else "",
                                              "-s is the lens's own focus setting; focus is where the subject then is"
                                              if (extension or teleconverter) and not by_m else "",
                                              _dominance(rows) if diffraction else "") if part)
         note = label + " · " + footer(None, cocs, coc_origin, sensor_label, distance_from, extra)
     return Output(rows, columns, keys, note)
+
+
+def _h_note(model: str, lens: Any, rows: Any) -> str:
+    """Under auto, when some row's limits came from a cheaper rung: the one rung the H column is computed by."""
+    from camtool.dof.ladder import hyperfocal_rung
+
+    rung = hyperfocal_rung(lens)
+    if model != "auto" or all(str(row["model"]).split("+")[0] == rung for row in rows):
+        return ""
+    return f"; H by the {rung} model"
 
 
 def _dominance(rows: list[dict[str, Any]]) -> str:

@@ -7,7 +7,7 @@ import click
 from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from
-from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import ladder_errors, lens_data, lens_geometry_options
 from camtool.cli.options import (
     aperture_options,
@@ -17,8 +17,8 @@ from camtool.cli.options import (
     library_errors,
     sensor_options,
 )
-from camtool.dof.ladder import hyperfocal as hyperfocal_distance
 from camtool.dof.ladder import hyperfocal_choices, hyperfocal_help
+from camtool.plans.depth import hyperfocal_plan
 from camtool.render.columns import FNUMBER, SMALL, Column
 
 KEYS = ["focal_length_mm", "f_number", "hyperfocal_mm", "near_mm", "coc_mm", "model", "distance_from"]
@@ -52,16 +52,21 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
       camtool hyperfocal -f 300 -N 4 --teleconverter 1.4
 
     With --teleconverter K the lens is taken as K·f at K·N (docs/closeup.md §7);
-    the rows show those.
+    the rows show those. A lens preset with a published closest focus focuses
+    internally: H is its focus setting whose far limit is infinite with the
+    focal length in effect there. Focusing dof at the exact value of
+    --field hyperfocal_mm gives a far limit of ∞ (the table rounds it).
     """
     focal = required(ctx, focal_length, "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    k = teleconverter or 1.0
-    count, (f, n, c) = combine_params(ctx, [k * v for v in focal], [k * v for v in apertures], cocs)
+    count, (f, n, c) = combine_params(ctx, focal, apertures, cocs)
     with library_errors(ctx), ladder_errors(ctx):
-        result = hyperfocal_distance(model, f, n, c, distance_from, lens_data(ctx, pupil_mag, hiatus, None))
+        result = hyperfocal_plan(model=model, focal_length_mm=f, f_number=n, coc_mm=c, distance_from=distance_from,
+                                 lens=lens_data(ctx, pupil_mag, hiatus, None), lens_preset=ctx.meta.get(LENS),
+                                 teleconverter=teleconverter)
+    f, n = result.focal_length_mm, result.f_number
     rows = rows_from(count, {
         "focal_length_mm": f, "f_number": n, "hyperfocal_mm": result.hyperfocal_mm, "near_mm": result.near_mm,
         "coc_mm": c, "model": result.model, "distance_from": distance_from,

@@ -39,6 +39,7 @@ __all__ = [
     "focal_lengths",
     "hyperfocal",
     "hyperfocal_choices",
+    "hyperfocal_rung",
     "model_choices",
     "prescription_focal_length",
 ]
@@ -217,7 +218,26 @@ def hyperfocal_choices() -> tuple[str, ...]:
     return (*(rung.name for rung in rungs.RUNGS if rung.hyperfocal_help), "auto")
 
 
-HYPERFOCAL_AUTO_HELP = "thick when that lens data is known, else thin."
+HYPERFOCAL_AUTO_HELP = "thick when that lens data is known, else thin (the rung auto uses at and beyond H)."
+
+
+def hyperfocal_rung(lens: LensData | None = None) -> str:
+    """The rung of the hyperfocal distance under ``auto``: the most complete closed form the lens data allow.
+
+    ``thick`` when the lens's pupil magnification or hiatus is known and
+    differs from 1 and 0, else ``thin``. It is the rung of
+    :func:`hyperfocal` under ``auto``, and the one :func:`depth_of_field`
+    runs under ``auto`` for a focus at or beyond that hyperfocal distance
+    (where a cheaper rung would put the start of the infinite far limit
+    elsewhere), so the two answer with one hyperfocal distance.
+
+    Examples
+    --------
+    >>> hyperfocal_rung(), hyperfocal_rung(LensData(pupil_magnification=0.7)), hyperfocal_rung(LensData(hiatus_mm=0.0))
+    ('thin', 'thick', 'thin')
+    """
+    known = None if lens is None else lens.thick_parameters()
+    return "thick" if known is not None and (float(known[0]), float(known[1])) != (1.0, 0.0) else "thin"
 
 
 def hyperfocal_help() -> str:
@@ -238,10 +258,12 @@ def hyperfocal(
 
     H in the chosen plane is where the far limit first reaches infinity: the
     limits of a focus at infinity carry it, and focusing there gives the near
-    limit. ``auto`` is the most complete closed form the lens data allow
-    (``thick`` with a pupil magnification or hiatus other than 1 and 0, else
-    ``thin``): the distance itself is the answer, not a depth of field whose
-    error could be weighed against a tolerance.
+    limit. ``auto`` is :func:`hyperfocal_rung` (``thick`` with a pupil
+    magnification or hiatus other than 1 and 0, else ``thin``), the rung
+    :func:`depth_of_field` runs under ``auto`` for a focus at H, so its
+    limits there reach infinity and its ``hyperfocal_mm`` is this H. A lens
+    that focuses internally changes its focal length as it focuses: its
+    hyperfocal focus setting is :func:`camtool.plans.depth.hyperfocal_setting`.
 
     Parameters
     ----------
@@ -269,7 +291,7 @@ def hyperfocal(
     known = None if lens is None else lens.thick_parameters()
     p, delta = known if known is not None else (1.0, 0.0)
     data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
-    rung = ("thick" if data else "thin") if model == "auto" else model
+    rung = hyperfocal_rung(lens) if model == "auto" else model
     at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data)
     h = at_infinity.limits.hyperfocal_mm
     at_h = depth_of_field(rung, focal_length_mm, f_number, coc_mm, h, distance_from, lens=data)
@@ -364,6 +386,15 @@ def depth_of_field(
 ) -> ModelResult:
     """Depth of field by the named model, or by the cheapest one the scene needs (``auto``).
 
+    ``auto`` (the one meaning every command and the API share): the cheapest
+    rung whose estimated error (:func:`camtool.dof.auto.depth_error`) is
+    within ``tolerance``; but a rung cheaper than :func:`hyperfocal_rung`
+    qualifies only in front of the hyperfocal distance (where both give a
+    finite far limit): at and beyond it the hyperfocal rung runs, so a focus
+    at the distance :func:`hyperfocal` reports gets a far limit of infinity.
+    ``hyperfocal_mm`` is always the hyperfocal rung's, whatever rung gave
+    the limits, so it does not change with the focus of the scene.
+
     Parameters
     ----------
     model : str
@@ -440,9 +471,26 @@ def depth_of_field(
     if all(isinstance(v, (int, float)) for v in (*inputs, airy)):
         name, applied = choose(effects, available_models(lens), diffraction, tolerance)
         limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
+        rung_h = _hyperfocal_rung_of(lens)
+        order = rungs.names()
+        if order.index(name) < order.index(rung_h):
+            at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
+            if limits.far_mm == float("inf") or at_h.far_mm == float("inf"):
+                # at or beyond the hyperfocal distance: its rung, whose far limit starts being infinite at H
+                return ModelResult(at_h, _label(rung_h, applied), left_out(effects, rung_h, applied))
+            limits = limits._replace(hyperfocal_mm=at_h.hyperfocal_mm)
         return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
     return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
                       focus)
+
+
+def _hyperfocal_rung_of(lens: LensData) -> str:
+    """:func:`hyperfocal_rung` where the ladder offers it for ``lens`` (a prescription's thick is its paraxial)."""
+    name = hyperfocal_rung(lens)
+    models = available_models(lens)
+    if name in models:
+        return name
+    return "paraxial" if "paraxial" in models else "thin"
 
 
 def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tolerance: float,
@@ -484,6 +532,24 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
             names[rows] = _label(name, add)
             part = Effects(*(v[rows] for v in each))
             estimate[rows] = left_out(part, name, True) + (0.0 if add or not diffraction else part.diffraction)
+    rung_h = _hyperfocal_rung_of(lens)
+    cheaper = chosen < models.index(rung_h) if rung_h in models else np.full(count, False)
+    for add in (False, True):
+        rows = np.nonzero(cheaper & (applied == add))[0]
+        if rows.size == 0:
+            continue
+        f, n, c, s, usable, *uv = (v[rows] for v in flat)
+        part_focus = None if focus is None else rungs.Focus(
+            FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
+        at_h = _run(rung_h, add, f, n, c, s, plane, lens, usable, part_focus)
+        beyond = np.isinf(fields[1][rows]) | np.isinf(np.broadcast_to(at_h.far_mm, rows.shape))
+        hyper_index = DofLimits._fields.index("hyperfocal_mm")
+        for k, (out, value) in enumerate(zip(fields, at_h)):
+            value = np.broadcast_to(np.asarray(value, dtype=float), rows.shape)
+            out[rows] = np.where(beyond | (k == hyper_index), value, out[rows])
+        names[rows[beyond]] = _label(rung_h, add)
+        part = Effects(*(v[rows[beyond]] for v in each))
+        estimate[rows[beyond]] = left_out(part, rung_h, True) + (0.0 if add or not diffraction else part.diffraction)
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 
