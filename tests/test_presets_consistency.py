@@ -421,6 +421,9 @@ CITED_F_NUMBER_MAX = [
     ("leica-summilux-m-50mm-f1.4-asph", 16),
     # zakkeys.com, Tamron 17-28mm F/2.8 Di III RXD basic specifications: smallest aperture f/22 throughout.
     ("tamron-17-28mm-f2.8-di-iii-rxd", 22),
+    # DPReview's Ricoh GR III page (open-product-data/digital-cameras, database/ricoh_griii.yaml):
+    # MaximumAperture F2.8-16; tekgenius.pt's announcement: 18.3mm f/2.8-f/16.
+    ("ricoh-gr-iii-lens", 16),
 ]
 
 
