@@ -151,7 +151,7 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
             equipment.check_lens(lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params
                                  else [], f_numbers=flatten(params.get("f_number")),
                                  distances_mm=flatten(params.get("distance")),
-                                 distance_from=params.get("distance_from", "sensor"))
+                                 distance_from=params.get("distance_from", "sensor"), camera=found.camera)
         if "focal_length" in params:
             equipment.check_hiatus(params.get("hiatus"), focal_lengths=flatten(params.get("focal_length")),
                                    pupil_magnification=params.get("pupil_mag"))

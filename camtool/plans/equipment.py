@@ -101,7 +101,8 @@ def resolve_sensor(*, sensor: str | None = None, crop: float | None = None, came
         return SensorChoice(w, h, f"crop {crop:g} ({w:.4g} × {h:.4g} mm)")
     fixed = getattr(lens, "sensor_id", None)
     built_in = getattr(lens, "mount", None) == "fixed lens"
-    if sensor is None and fixed is not None and (camera is None or built_in):
+    own_lens = camera is not None and lens is not None and getattr(camera, "lens_id", None) == lens.id
+    if sensor is None and fixed is not None and (camera is None or built_in) and not own_lens:
         # a lens's own format (the one it is made for) beats the full-frame default; a fixed or phone
         # lens's beats the camera's too (a phone's other modules are not on the camera preset's main
         # sensor), while an interchangeable lens is on the body's sensor; a sensor given beats both
@@ -282,16 +283,22 @@ def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Seque
 
 
 def check_lens(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any], distances_mm: Sequence[float],
-               distance_from: str = "sensor") -> None:
-    """Refuse a focal length, f-number (or T-stop) or focus distance the lens cannot do."""
+               distance_from: str = "sensor", camera: Any = None) -> None:
+    """Refuse a focal length, f-number (or T-stop) or focus distance the lens cannot do.
+
+    ``camera``: the camera whose own lens this is, when no lens was named (the
+    messages then name the camera, which is what was given).
+    """
+    own = camera is not None and getattr(camera, "lens_id", None) == lens.id
+    who = f"{{camera}} {camera.id}'s lens" if own else f"{{lens}} {lens.id}"
     for f in focal_lengths:
         if not lens.focal_min_mm * 0.995 <= f <= lens.focal_max_mm * 1.005:
             span = f"{lens.focal_min_mm:g}–{lens.focal_max_mm:g} mm" if lens.is_zoom else f"{lens.focal_min_mm:g} mm"
-            raise InputError("focal_length", f"{f:g} mm is outside the valid range of {{lens}} {lens.id}: {span}")
+            raise InputError("focal_length", f"{f:g} mm is outside the valid range of {who}: {span}")
     focal = list(focal_lengths) or [lens.focal_min_mm]
     for n in f_numbers:
         if isinstance(n, TStop):
-            _check_t_stop(lens, n)
+            _check_t_stop(lens, n, who)
             continue
         for f in focal:
             widest = lens.widest_f_number(f) or n
@@ -300,21 +307,20 @@ def check_lens(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence
             slowest = smallest or n
             if not widest * 0.99 <= n <= slowest * 1.01:
                 span = f"f/{widest:g} to f/{slowest:g}" if smallest else f"from f/{widest:g}"
-                raise InputError("f_number", f"f/{n:g} is outside the valid range of {{lens}} {lens.id} at {f:g} mm: "
-                                             f"{span}")
+                raise InputError("f_number", f"f/{n:g} is outside the valid range of {who} at {f:g} mm: {span}")
     if lens.min_focus_mm and distance_from == "sensor":
         for d in distances_mm:
             if d < lens.min_focus_mm:
-                raise InputError("distance", f"{d / 1000:.4g} m is outside the valid range of {{lens}} {lens.id}: at "
-                                             f"least its closest focus, {lens.min_focus_mm / 1000:.4g} m from the sensor")
+                raise InputError("distance", f"{d / 1000:.4g} m is outside the valid range of {who}: at least its "
+                                             f"closest focus, {lens.min_focus_mm / 1000:.4g} m from the sensor")
 
 
-def _check_t_stop(lens: Any, t: float) -> None:
+def _check_t_stop(lens: Any, t: float, who: str) -> None:
     """Refuse a T-stop below the lens's widest T-stop (or its widest f-number: T is never below N)."""
     widest = lens.t_number_min or lens.f_number_min
     if widest is not None and t < widest * 0.99:
         span = f"T{widest:g}" if lens.t_number_min else f"f/{widest:g} (a T-stop is never below the f-number)"
-        raise InputError("f_number", f"T{t:g} is outside the valid range of {{lens}} {lens.id}: from {span}")
+        raise InputError("f_number", f"T{t:g} is outside the valid range of {who}: from {span}")
 
 
 def check_hiatus(hiatus_mm: float | None, *, focal_lengths: Sequence[float], pupil_magnification: float | None) -> None:
