@@ -68,6 +68,7 @@ __all__ = [
     "Flash",
     "FocusGeometry",
     "FocusPlan",
+    "HyperfocalDistance",
     "LensData",
     "StarLimits",
     "circle_of_confusion",
@@ -166,6 +167,7 @@ Diagonal = Annotated[Any, _Kind("number", bounds=(0.5, 2000.0 * math.sqrt(2.0)),
 DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
 Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
 Text = Annotated[str, _Kind("text")]
+OptionalText = Annotated[Any, _Kind("text", optional=True)]
 OptionalPrescription = Annotated[Any, _Kind("prescription", optional=True)]
 
 FULL_FRAME_DIAGONAL = math.hypot(36.0, 24.0)
@@ -447,6 +449,14 @@ def depth_of_field(
     return DepthOfField(*result.limits, result.model, result.error_estimate)
 
 
+class HyperfocalDistance(NamedTuple):
+    """The result of :func:`hyperfocal_distance`: H and the near limit when focused there (mm), and the model."""
+
+    hyperfocal_mm: Any
+    near_mm: Any
+    model: Any
+
+
 @_checked
 def hyperfocal_distance(
     focal_length_mm: OptionalFocalLength,
@@ -458,24 +468,48 @@ def hyperfocal_distance(
     pupil_magnification: OptionalPupilMagnification = None,
     hiatus_mm: OptionalReal = None,
     prescription: OptionalPrescription = None,
-) -> DofLimits:
-    """The hyperfocal distance in mm and the near limit when focused there.
+    lens: OptionalText = None,
+) -> HyperfocalDistance:
+    """The hyperfocal distance in mm and the near limit when focused there: the answer of ``camtool hyperfocal``.
 
-    The result's ``hyperfocal_mm`` is the closest focus at which the far limit
-    reaches infinity; ``near_mm`` is the near limit with that focus (half the
-    hyperfocal distance for the ``approx`` rung).
+    ``hyperfocal_mm`` is the closest focus at which the far limit reaches
+    infinity; ``near_mm`` is the near limit with that focus (half the
+    hyperfocal distance for the ``approx`` rung). ``auto`` means what it means
+    on the command line (:func:`camtool.dof.ladder.hyperfocal_rung`: ``thick``
+    with pupil data, else ``thin``); ``paraxial`` and ``raytrace`` find H with
+    that rung's own limits. ``lens`` names a lens preset: one that focuses
+    internally has its H where its far limit reaches infinity at the focal
+    length in effect there, as ``camtool hyperfocal --lens`` gives it.
 
     Examples
     --------
     >>> h = hyperfocal_distance(24, 11, 0.03, model="approx")
-    >>> round(h.hyperfocal_mm)
-    1745
+    >>> round(h.hyperfocal_mm), h.model  # f²/(N·c) = 576/0.33, plus the lens-to-sensor spacing f + N·c
+    (1745, 'approx')
     """
-    from camtool.dof.ladder import depth_of_field as run
+    data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    if model in ("paraxial", "raytrace"):
+        from camtool.dof.ladder import depth_of_field as run
 
-    lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
-    first = run(model, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens).limits
-    return run(model, focal_length_mm, f_number, coc_mm, first.hyperfocal_mm, distance_from, lens).limits
+        first = run(model, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, data)
+        at_h = run(model, focal_length_mm, f_number, coc_mm, first.limits.hyperfocal_mm, distance_from, data)
+        return HyperfocalDistance(at_h.limits.hyperfocal_mm, at_h.limits.near_mm, at_h.model)
+    from camtool.plans.depth import hyperfocal_plan
+
+    preset_lens = None
+    if lens is not None:
+        from camtool.plans import equipment
+
+        preset_lens = preset("lens", lens)
+        focal = list(map(float, getattr(focal_length_mm, "ravel", lambda: [focal_length_mm])()))
+        equipment.check_lens(preset_lens, focal_lengths=focal, f_numbers=[], distances_mm=[])
+    if focal_length_mm is None and data is not None and data.prescription is not None:
+        from camtool.dof.ladder import prescription_focal_length
+
+        focal_length_mm = prescription_focal_length(data)
+    plan = hyperfocal_plan(model=model, focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm,
+                           distance_from=distance_from, lens=data, lens_preset=preset_lens)
+    return HyperfocalDistance(plan.hyperfocal_mm, plan.near_mm, plan.model)
 
 
 @_checked

@@ -78,6 +78,7 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "film": st.sampled_from(["hp5", "tri-x", "portra-400", "velvia-50", "no-such-film"]),
     "metered_s": st.floats(1e-4, 1e4),
     "kind": st.sampled_from(["sensor", "camera", "lens", "prescription", "scene", "film"]),
+    "lens": st.sampled_from([None, "nikon-z-24mm-f1.8-s", "sony-fe-85mm-f1.8", "nikon-z-24-70mm-f4-s", "no-such-lens"]),
     "name": st.sampled_from(["full-frame", "nikon-z-8", "nikon-z-24mm-f1.8-s", "dgauss100", "hp5", "Full Frame",
                              "no-such-preset"]),
 }
@@ -121,7 +122,7 @@ def hostile_arrays() -> st.SearchStrategy[Any]:
 
 def argument(name: str) -> st.SearchStrategy[Any]:
     valid = VALID[name]
-    if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name"):
+    if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name", "lens"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()

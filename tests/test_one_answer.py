@@ -3,8 +3,8 @@
 Over random scenes and every lens preset without a prescription (primes,
 zooms, lenses that focus internally, lenses with pupil data): the hyperfocal
 distance of ``camtool hyperfocal`` (JSON and ``--field``), the H column of
-``camtool dof`` and :func:`camtool.plans.depth.hyperfocal_setting` are the
-same float, and ``dof`` focused at that distance (typed as ``--field`` prints
+``camtool dof``, :func:`camtool.plans.depth.hyperfocal_setting` and the Python
+API's :func:`camtool.hyperfocal_distance` are the same float, and ``dof`` focused at that distance (typed as ``--field`` prints
 it) has a far limit of infinity. Independent checks: the thin model's closed
 form of an internally focusing lens's hyperfocal focus, f(m) = f₀/(1 + κm) at
 m = N·c/(f₀ − κ·N·c) (so f = f₀ − κ·N·c and H = f²/(N·c) + f from the lens),
@@ -69,6 +69,12 @@ def test_hyperfocal_dof_and_the_plan_give_one_h_and_focusing_there_gives_infinit
                               coc_mm=row["coc_mm"], distance_from=plane,
                               lens=None if data == LensData() else data, lens_preset=lens)
     assert plan.hyperfocal_mm == h and plan.model == row["model"]
+    import camtool
+
+    through_api = camtool.hyperfocal_distance(row["focal_length_mm"], row["f_number"], row["coc_mm"],
+                                              distance_from=plane, model=model, lens=lens.id,
+                                              pupil_magnification=lens.pupil_magnification, hiatus_mm=lens.hiatus_mm)
+    assert through_api.hyperfocal_mm == h and through_api.model == row["model"]  # the Python API, the same float
 
 
 @pytest.mark.parametrize("lens", FOCUSING[::5], ids=lambda lens: lens.id)
