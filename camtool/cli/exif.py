@@ -1,14 +1,8 @@
 """``camtool exif``: the depth of field, angle of view and exposure of photos, from their metadata.
 
-Reading is python-exiv2's (the optional ``exif`` extra), imported only when
-this command runs; see :mod:`camtool.exif` and docs/exif.md. One row per file;
-a file that cannot be read (or is not a regular file) gives a row of nulls, a
-one-line message on stderr and exit status 1; a value the file does not carry
-is null and named on stderr, and the rest of the row is still computed; a
-value the file carries but that lies outside the range of the option it
-stands for is null too, named with its tag on the same line, and makes the
-exit status 1. File names and tag strings are printed with their control
-characters escaped (``\\x1b``, ``\\n``).
+Reading is python-exiv2's (the optional ``exif`` extra), imported only when this command runs; the rules that
+turn a photo's metadata into a row are :mod:`camtool.plans.photo`'s; see docs/exif.md. A file that cannot be
+read, or holds a value outside its option's range, is named on stderr and makes the exit status 1.
 """
 
 from __future__ import annotations
@@ -28,18 +22,10 @@ from camtool.dof.ladder import model_choices
 from camtool.plans.photo import KEYS, names_from_lines
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, TEXT, Column
 
-COLUMNS = [
-    Column("file", "file", TEXT),
-    Column("focal_length_mm", "f", SMALL),
-    Column("f_number", "N", FNUMBER),
-    Column("focus_distance_mm", "focus"),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("total_mm", "depth"),
-    Column("hyperfocal_mm", "H"),
-    Column("horizontal_deg", "h. angle", ANGLE),
-    Column("ev100", "EV100", NUMBER),
-]
+COLUMNS = [Column("file", "file", TEXT), Column("focal_length_mm", "f", SMALL), Column("f_number", "N", FNUMBER),
+           Column("focus_distance_mm", "focus"), Column("near_mm", "near"), Column("far_mm", "far"),
+           Column("total_mm", "depth"), Column("hyperfocal_mm", "H"), Column("horizontal_deg", "h. angle", ANGLE),
+           Column("ev100", "EV100", NUMBER)]
 
 
 @camtool_command("exif", keys=KEYS, batch=False)
@@ -51,8 +37,7 @@ COLUMNS = [
 @sensor_options
 @coc_options
 @distance_plane_option
-@click.option("--model", type=click.Choice([m for m in model_choices() if m != "all"]),
-              default="auto", show_default=True,
+@click.option("--model", type=click.Choice([m for m in model_choices() if m != "all"]), default="auto", show_default=True,
               help="Depth-of-field model (see camtool dof --help); --model thin --distance-from lens "
                    "--coc-rule d/1440 gives ExifTool's Composite:DOF.")
 @model_options
@@ -179,5 +164,4 @@ def _warn(answer: Any) -> None:
 
 def _stdin_names() -> list[str]:
     """The paths standard input lists, one a line (bytes decoded as the file system does)."""
-    stream = getattr(sys.stdin, "buffer", None)
-    return names_from_lines([os.fsencode(line) for line in sys.stdin] if stream is None else list(stream))
+    return names_from_lines(getattr(sys.stdin, "buffer", None) or [os.fsencode(line) for line in sys.stdin])

@@ -31,28 +31,15 @@ from camtool.core.units import UnitError, parse_length
 from camtool.plans.tilt import KEYS
 from camtool.render.columns import ANGLE, FNUMBER, SMALL, TEXT, Column
 
-COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("f_number", "N", FNUMBER),
-    Column("tilt_deg", "tilt", ANGLE),
-    Column("hinge_mm", "hinge J"),
-    Column("focus_mm", "focus"),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("focus_plane_deg", "focus plane", ANGLE),
-    Column("near_plane_deg", "near plane", ANGLE),
-    Column("far_plane_deg", "far plane", ANGLE),
-    Column("hyperfocal_mm", "hyperfocal"),
-]
+COLUMNS = [Column("focal_length_mm", "f", SMALL), Column("f_number", "N", FNUMBER), Column("tilt_deg", "tilt", ANGLE),
+           Column("hinge_mm", "hinge J"), Column("focus_mm", "focus"), Column("near_mm", "near"), Column("far_mm", "far"),
+           Column("focus_plane_deg", "focus plane", ANGLE), Column("near_plane_deg", "near plane", ANGLE),
+           Column("far_plane_deg", "far plane", ANGLE), Column("hyperfocal_mm", "hyperfocal")]
 AT_COLUMNS = [Column("at_mm", "at"), Column("above_mm", "above"), Column("below_mm", "below")]
 NEED_COLUMNS = [Column("half_depth_mm", "± wanted"), Column("f_number_needed", "needs", FNUMBER)]
 OPTIMUM_COLUMNS = [Column("f_number_optimum", "optimum", FNUMBER), Column("blur_optimum_mm", "blur there", SMALL)]
 MODEL_COLUMN = Column("model", "model", TEXT)
 
-ALONG_TEXT = {"sight": "along the line of sight (the film's normal through the lens)", "axis": "along the lens axis"}
-ANGLE_TEXT = {"film": "from the film plane", "lens": "from the lens plane", "horizon": "from the line of sight"}
-HINGE_TEXT = {"lens": "J from the lens (front principal point), parallel to the film",
-              "pupil": "J from the entrance pupil, parallel to the film"}
 TILT_MAX = 89.0
 
 
@@ -87,13 +74,11 @@ class PointType(click.ParamType):
             return value
         text = str(value).strip()
         if text.count("@") != 1:
-            self.fail(f"{text!r} is not a point: write DIST@HEIGHT, e.g. 3m@-1.6m (1.6 m below the lens)",
-                      param, ctx)
+            self.fail(f"{text!r} is not a point: write DIST@HEIGHT, e.g. 3m@-1.6m (1.6 m below the lens)", param, ctx)
         left, right = (part.strip() for part in text.split("@"))
         try:
             distance = parse_length(left, "m")
-            sign = -1.0 if right.startswith("-") else 1.0
-            height = sign * parse_length(right.lstrip("+-") or "x", "m")
+            height = (-1.0 if right.startswith("-") else 1.0) * parse_length(right.lstrip("+-") or "x", "m")
         except UnitError as error:
             self.fail(f"{text}: {error}", param, ctx)
         if not (distance > 0 and math.isfinite(distance) and math.isfinite(height)):
@@ -104,35 +89,30 @@ class PointType(click.ParamType):
 @camtool_command("tilt", keys=KEYS, batch=False)
 @focal_option
 @aperture_options
-@click.option("--tilt", "tilt", type=AngleType(), multiple=True, metavar="ANGLE",
-              help="Lens tilt from the film plane in degrees (3, 3deg, 3°; negative tilts the other way); "
-                   "a list gives a row each.")
-@click.option("--swing", "swing", type=AngleType(), multiple=True, metavar="ANGLE",
-              help="Swing instead of tilt: the same geometry about the vertical axis (above/below read "
-                   "as the two sides).")
-@click.option("--hinge", type=DISTANCE_M, multiple=True, metavar="LENGTH",
-              help="Wanted hinge distance J, e.g. the camera's height above the ground: 1.6m (bare numbers "
-                   "are metres); gives the tilt asin(f/J).")
+@click.option("--tilt", "tilt", type=AngleType(), multiple=True, metavar="ANGLE", help="Lens tilt from the film plane "
+              "in degrees (3, 3deg, 3°; negative tilts the other way); a list gives a row each.")
+@click.option("--swing", "swing", type=AngleType(), multiple=True, metavar="ANGLE", help="Swing instead of tilt: the "
+              "same geometry about the vertical axis (above/below read as the two sides).")
+@click.option("--hinge", type=DISTANCE_M, multiple=True, metavar="LENGTH", help="Wanted hinge distance J, e.g. the "
+              "camera's height above the ground: 1.6m (bare numbers are metres); gives the tilt asin(f/J).")
 @click.option("--point", "points", type=PointType(), multiple=True,
               help="A point the plane of sharp focus must pass through, DIST@HEIGHT (metres; height above the "
                    "lens, negative below), e.g. 2m@-1.5m; give it twice to get the tilt and the focus.")
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus: where the plane of sharp focus crosses the line of sight (or the lens axis with "
                    "--along axis), e.g. 5m, inf; a list gives a row each.")
-@click.option("--image-distance", type=LENGTH_MM, multiple=True, metavar="LENGTH",
-              help="Focus by the lens-to-film distance along the lens axis (rear principal point to film, mm).")
-@click.option("--hyperfocal", is_flag=True,
-              help="Focus so that the far limit of the wedge is parallel to the line of sight (or the lens axis "
-                   "with --along axis): sharp from the near limit plane to the horizon.")
+@click.option("--image-distance", type=LENGTH_MM, multiple=True, metavar="LENGTH", help="Focus by the lens-to-film "
+              "distance along the lens axis (rear principal point to film, mm).")
+@click.option("--hyperfocal", is_flag=True, help="Focus so that the far limit of the wedge is parallel to the line "
+              "of sight (or the lens axis with --along axis): sharp from the near limit plane to the horizon.")
 @click.option("--at", "at", type=DISTANCE_M, metavar="DIST",
               help="Also give the wedge's extent above and below the plane of focus (parallel to the film) at "
                    "this distance along the line of sight, e.g. 20m.")
 @click.option("--half-depth", type=DISTANCE_M, metavar="LENGTH",
               help="Wanted extent of the wedge on either side of the plane of focus at --at (parallel to the "
                    "film); gives the f-number that needs (metres, e.g. 0.5).")
-@click.option("--optimum", is_flag=True,
-              help="With --half-depth: also the f-number that balances the wedge's defocus blur against "
-                   "diffraction, and the blur there.")
+@click.option("--optimum", is_flag=True, help="With --half-depth: also the f-number that balances the wedge's defocus "
+              "blur against diffraction, and the blur there.")
 @click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
               help="Wavelength for --optimum: 550, 550nm or 0.55um.")
 @sensor_options
@@ -147,8 +127,7 @@ class PointType(click.ParamType):
 @click.option("--hinge-from", type=click.Choice(["lens", "pupil"]), default="lens", show_default=True,
               help="Where J is measured from (parallel to the film): the lens (front principal point, where "
                    "J = f/sin θ holds exactly) or the entrance pupil.")
-@click.option("--model", type=click.Choice(["thin", "thick", "raytrace", "auto", "all"]), default="auto",
-              show_default=True,
+@click.option("--model", type=click.Choice(["thin", "thick", "raytrace", "auto", "all"]), default="auto", show_default=True,
               help="thin: the hinge and Scheimpflug rules with the pupils at the lens; thick: pupil magnification "
                    "and hiatus (--pupil-mag, --hiatus, --lens); raytrace: real rays through --prescription for the "
                    "plane of focus (the wedge from thick); auto: thick when lens data is known, else thin; all: "
@@ -198,20 +177,8 @@ def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, h
     rows = [row._asdict() for row in answer.rows]
     columns: list[Column] = [MODEL_COLUMN] * (model == "all") + COLUMNS + AT_COLUMNS * (question["at_mm"] is not None)
     columns += NEED_COLUMNS * (question["half_depth_mm"] is not None) + OPTIMUM_COLUMNS * optimum
-    note = ""
-    if fmt == "table":
-        parts = [f"{' / '.join(answer.models)} model", f"{answer.movement} θ and angles {ANGLE_TEXT[angles_from]}",
-                 HINGE_TEXT[hinge_from], f"focus, near, far {ALONG_TEXT[along]}",
-                 f"hyperfocal: {plan.HYPERFOCAL_DEFINITION[along]}"]
-        if any(r.tilt_deg == 0 for r in answer.rows):
-            parts.append("no tilt: the wedge is ordinary depth of field (hinge at infinity)")
-        if question["at_mm"] is not None:
-            parts.append("above/below: the wedge either side of the plane of focus, parallel to the film")
-        if "raytrace" in answer.models:
-            parts.append("raytrace: film at the real focus, plane of focus by real rays across the picture's height, "
-                         + ("wedge along the axis by real rays" if along == "axis" else "wedge from thick"))
-        note = " · ".join(parts) + " · " + footer(None, cocs, coc_origin, chosen.label, distance_from)
-    return Output(rows, columns, plan.KEYS, note)
+    note = " · ".join((*answer.notes, footer(None, cocs, coc_origin, chosen.label, distance_from)))
+    return Output(rows, columns, plan.KEYS, note if fmt == "table" else "")
 
 
 def _single(ctx: click.Context, values: Any, name: str) -> float | None:
@@ -220,11 +187,8 @@ def _single(ctx: click.Context, values: Any, name: str) -> float | None:
     if len(flat) > 1:
         raise click.BadParameter(f"{len(flat)} values given: give one", ctx=ctx, param=param_named(ctx, name))
     if flat and math.isinf(flat[0]):
-        raise click.BadParameter("inf is outside the valid range: a finite distance", ctx=ctx,
-                                 param=param_named(ctx, name))
+        raise click.BadParameter("inf is outside the valid range: a finite distance", ctx=ctx, param=param_named(ctx, name))
     return flat[0] if flat else None
-
-
 
 
 # library parameter -> option, where the names differ

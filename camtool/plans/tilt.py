@@ -45,6 +45,10 @@ MODELS = ("thin", "thick", "raytrace", "auto", "all")
 HYPERFOCAL_DEFINITION = {"sight": "far limit plane parallel to the line of sight (Merklinger)",
                          "axis": "far limit plane parallel to the lens axis"}
 """What the hyperfocal setting means along each line (a row's ``hyperfocal_definition``)."""
+ALONG_TEXT = {"sight": "along the line of sight (the film's normal through the lens)", "axis": "along the lens axis"}
+ANGLE_TEXT = {"film": "from the film plane", "lens": "from the lens plane", "horizon": "from the line of sight"}
+HINGE_TEXT = {"lens": "J from the lens (front principal point), parallel to the film",
+              "pupil": "J from the entrance pupil, parallel to the film"}
 _COMPUTED = KEYS[7:25]  # the keys left None when the focus is not set
 
 
@@ -101,11 +105,13 @@ class TiltRow(NamedTuple):
 
 
 class TiltAnswer(NamedTuple):
-    """The rows (one per scene and model, scenes in the order of the lists), the movement and the models used."""
+    """The rows (one per scene and model, scenes in the order of the lists), the movement, the models used,
+    and what the numbers mean in words (the models, the conventions, no tilt, the wedge's extent, real rays)."""
 
     rows: tuple[TiltRow, ...]
     movement: str
     models: tuple[str, ...]
+    notes: tuple[str, ...]
 
 
 def check_question(*, tilt_deg: Sequence[float] = (), swing_deg: Sequence[float] = (), hinge_mm: Sequence[float] = (),
@@ -213,7 +219,17 @@ def solve_tilt(*, focal_length_mm: Sequence[float] = (), f_number: Sequence[floa
             row = scene.row(name, thick, f, n, c, setting, focus)
             row["movement"] = movement
             rows.append(TiltRow(**row))
-    return TiltAnswer(tuple(rows), movement, tuple(dict.fromkeys(r.model for r in rows)))
+    models = tuple(dict.fromkeys(r.model for r in rows))
+    notes = [f"{' / '.join(models)} model", f"{movement} θ and angles {ANGLE_TEXT[angles_from]}", HINGE_TEXT[hinge_from],
+             f"focus, near, far {ALONG_TEXT[along]}", f"hyperfocal: {HYPERFOCAL_DEFINITION[along]}"]
+    if any(r.tilt_deg == 0 for r in rows):
+        notes.append("no tilt: the wedge is ordinary depth of field (hinge at infinity)")
+    if at_mm is not None:
+        notes.append("above/below: the wedge either side of the plane of focus, parallel to the film")
+    if "raytrace" in models:
+        notes.append("raytrace: film at the real focus, plane of focus by real rays across the picture's height, "
+                     + ("wedge along the axis by real rays" if along == "axis" else "wedge from thick"))
+    return TiltAnswer(tuple(rows), movement, models, tuple(notes))
 
 
 def _models(model: str, lens: LensData | None) -> list[tuple[str, bool]]:
