@@ -128,3 +128,24 @@ def test_half_depth_needs_a_tilt() -> None:
         solve_tilt(focal_length_mm=[24.0], f_number=[8.0], coc_mm=[0.03], tilt_deg=[0.0], focus_mm=[3000.0],
                    at_mm=5000.0, half_depth_mm=100.0)
     assert caught.value.param == "half_depth_mm"
+
+
+def test_lens_checks_come_before_the_equipment() -> None:
+    from camtool.plans.tilt import check_lens
+
+    check_lens(focal_length_mm=[90.0], f_number=[8.0])
+    check_lens(focal_length_mm=[90.0], half_depth_mm=1000.0)  # the f-number is what the wedge asks for
+    with pytest.raises(SettingsError) as caught:
+        check_lens(f_number=[8.0])
+    assert caught.value.names == ("focal_length_mm",)
+    with pytest.raises(ModelUnavailable):
+        check_lens(model="raytrace", focal_length_mm=[90.0], f_number=[8.0])
+
+
+def test_notes_say_what_the_numbers_mean() -> None:
+    answer = solve_tilt(focal_length_mm=[90.0], f_number=[11.0], coc_mm=[0.03], tilt_deg=[0.0], focus_mm=[3000.0],
+                        at_mm=5000.0, along="axis", angles_from="horizon", hinge_from="pupil")
+    assert answer.notes[0] == "thin model"
+    assert any("from the line of sight" in n for n in answer.notes)  # angles from the horizon
+    assert any("entrance pupil" in n for n in answer.notes) and any("lens axis" in n for n in answer.notes)
+    assert any("no tilt" in n for n in answer.notes) and any("above/below" in n for n in answer.notes)

@@ -161,16 +161,20 @@ def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, h
     from camtool.plans import tilt as plan
 
     question = {"tilt_deg": flatten(tilt), "swing_deg": flatten(swing), "hinge_mm": flatten(hinge), "points": points,
-                "focus_mm": flatten(distance), "image_distance_mm": flatten(image_distance), "hyperfocal": hyperfocal,
-                "at_mm": _single(ctx, at, "at"), "half_depth_mm": _single(ctx, half_depth, "half_depth"),
-                "optimum": optimum}
-    with _errors(ctx):
+                "focus_mm": flatten(distance), "image_distance_mm": flatten(image_distance), "hyperfocal": hyperfocal}
+    with _errors(ctx):  # in this order: the movement and focus, each option's value, the wedge, the lens, equipment
+        plan.check_question(**question)
+        question.update(at_mm=_single(ctx, at, "at"), half_depth_mm=_single(ctx, half_depth, "half_depth"),
+                        optimum=optimum)
         plan.check_question(**question)
         data = lens_data(ctx, pupil_mag, hiatus, prescription_file)
+        apertures = f_numbers(f_number, exact_stops)
+        plan.check_lens(model=model, lens=data, focal_length_mm=flatten(focal_length), f_number=apertures,
+                        half_depth_mm=question["half_depth_mm"])
         chosen = resolve_sensor(ctx, sensor, crop, preset_files)
         cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
         answer = plan.solve_tilt(**question, focal_length_mm=flatten(focal_length),
-                                 f_number=f_numbers(f_number, exact_stops), coc_mm=cocs, wavelength_nm=wavelength,
+                                 f_number=apertures, coc_mm=cocs, wavelength_nm=wavelength,
                                  sensor_height_mm=chosen.height_mm, distance_from=distance_from, along=along,
                                  angles_from=angles_from, hinge_from=hinge_from, model=model, lens=data,
                                  lens_preset=ctx.meta.get(LENS))

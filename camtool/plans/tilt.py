@@ -33,7 +33,7 @@ from camtool.dof.tilt import TiltLens
 from camtool.exposure.calculator import SettingsError
 
 __all__ = ["HYPERFOCAL_DEFINITION", "KEYS", "MODELS", "BeyondLensRange", "SettingsError", "TiltAnswer", "TiltError",
-           "TiltRow", "check_question", "solve_tilt"]
+           "TiltRow", "check_lens", "check_question", "solve_tilt"]
 
 KEYS = ["model", "movement", "focal_length_mm", "f_number", "coc_mm", "tilt_deg", "hinge_mm", "image_distance_mm",
         "focus_mm", "near_mm", "far_mm", "focus_plane_deg", "near_plane_deg", "far_plane_deg", "wedge_deg",
@@ -196,12 +196,10 @@ def solve_tilt(*, focal_length_mm: Sequence[float] = (), f_number: Sequence[floa
     check_question(tilt_deg=tilt_deg, swing_deg=swing_deg, hinge_mm=hinge_mm, points=points, focus_mm=focus_mm,
                    image_distance_mm=image_distance_mm, hyperfocal=hyperfocal, at_mm=at_mm,
                    half_depth_mm=half_depth_mm, optimum=optimum)
+    check_lens(model=model, lens=lens, focal_length_mm=focal_length_mm, f_number=f_number, half_depth_mm=half_depth_mm)
     movement = "swing" if swing_deg else "tilt"
     lenses = _models(model, lens)
     focal = _focal_lengths(focal_length_mm, lens)
-    if not f_number and half_depth_mm is None:
-        raise SettingsError("Missing option '{f_number}' (or {half_depth_mm} with {at_mm} to get the f-number).",
-                            ["f_number", "half_depth_mm", "at_mm"])
     angles = list(swing_deg or tilt_deg)
     settings = angles or list(hinge_mm) or [math.nan]
     focuses = list(focus_mm) or list(image_distance_mm) or [math.nan]
@@ -230,6 +228,28 @@ def solve_tilt(*, focal_length_mm: Sequence[float] = (), f_number: Sequence[floa
         notes.append("raytrace: film at the real focus, plane of focus by real rays across the picture's height, "
                      + ("wedge along the axis by real rays" if along == "axis" else "wedge from thick"))
     return TiltAnswer(tuple(rows), movement, models, tuple(notes))
+
+
+def check_lens(*, model: str = "auto", lens: LensData | None = None, focal_length_mm: Sequence[float] = (),
+               f_number: Sequence[float] = (), half_depth_mm: float | None = None) -> None:
+    """Refuse a model the lens data do not allow, a focal length a prescription contradicts, no f-number.
+
+    ``raytrace`` needs a prescription (``ModelUnavailable``); with one, each
+    focal length given must be its own within 1 % (``DomainError``), without
+    one a focal length is needed; the f-number may be left out only when
+    ``half_depth_mm`` asks for it.
+
+    >>> check_lens(focal_length_mm=[90.0], half_depth_mm=1000.0)
+    >>> check_lens(focal_length_mm=[90.0])
+    Traceback (most recent call last):
+    ...
+    camtool.exposure.calculator.SettingsError: Missing option 'f_number' (or half_depth_mm with at_mm to get the f-number).
+    """
+    _models(model, lens)
+    _focal_lengths(focal_length_mm, lens)
+    if not f_number and half_depth_mm is None:
+        raise SettingsError("Missing option '{f_number}' (or {half_depth_mm} with {at_mm} to get the f-number).",
+                            ["f_number", "half_depth_mm", "at_mm"])
 
 
 def _models(model: str, lens: LensData | None) -> list[tuple[str, bool]]:
