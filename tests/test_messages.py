@@ -86,3 +86,17 @@ def test_ctrl_c_during_a_batch_is_one_line_and_exit_130(tmp_path) -> None:
     process.send_signal(signal.SIGINT)
     _, stderr = process.communicate(timeout=30)
     assert process.returncode == 130 and stderr == "camtool: interrupted\n", stderr
+
+
+def test_a_teleconverter_behind_a_prescription_lens_is_answered_by_the_rungs_that_do_not_trace_it() -> None:
+    answered = run("dof", "--lens", "dgauss100-lens", "-N", "4", "-s", "inf", "--teleconverter", "1.4",
+                   "--format", "json")
+    assert answered.exit_code == 0, answered.output
+    message = _one_line_error(run("dof", "--lens", "dgauss100-lens", "-N", "4", "-s", "3m", "--teleconverter", "1.4",
+                                  "--model", "raytrace"))
+    assert "'--teleconverter'" in message and "raytrace" in message
+
+
+def test_an_unreachable_focus_from_an_extension_names_the_extension() -> None:
+    message = _one_line_error(run("dof", "--lens", "cellphone-lens", "-N", "8", "-s", "inf", "--extension", "12"))
+    assert "'--extension'" in message

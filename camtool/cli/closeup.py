@@ -18,7 +18,7 @@ import click
 
 from camtool.cli.common import one_value
 from camtool.cli.equipment import LENS
-from camtool.cli.options import EXTENSION_MM, library_errors, param_named, stack
+from camtool.cli.options import EXTENSION_MM, _typed, library_errors, param_named, stack
 from camtool.cli.params import NumberType
 from camtool.core.errors import DomainError, require
 from camtool.plans import closeup
@@ -83,7 +83,14 @@ def _unreachable_errors(ctx: click.Context) -> Iterator[None]:
         where = f"the lens focuses no closer than {error.closest_mm:.4g} mm from the lens here" + (
             f", m ≤ {largest:.3g}" if math.isfinite(largest) else "")
         if not error.by_magnification or not ctx.params.get("magnification"):
-            raise click.UsageError(f"the focus this lens setting needs is outside the model's range: {where}", ctx) from None
+            # the typed option that drives the focus: the extension, the converter, else the distance
+            driver = next((param_named(ctx, name) for name in ("extension", "teleconverter", "distance")
+                           if ctx.params.get(name) not in (None, (), [], 1.0)), None)
+            if driver is None:
+                raise click.UsageError(f"the focus this lens setting needs is outside the model's range: {where}",
+                                       ctx) from None
+            raise click.BadParameter(f"{_typed(ctx, driver)} needs a focus outside the model's range: {where} "
+                                     "(another --model reaches further)", ctx=ctx, param=driver) from None
         shown = ", ".join(f"{m:g}" for m in error.magnifications)
         raise click.BadParameter(f"{shown} is outside the valid range: {where} (another --model reaches further)",
                                  ctx=ctx, param=param_named(ctx, "magnification")) from None

@@ -32,6 +32,7 @@ from camtool.cli.options import (
     distance_plane_option,
     focal_option,
     library_errors,
+    param_named,
     sensor_options,
 )
 from camtool.cli.rows import ZIP
@@ -110,6 +111,16 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     with library_errors(ctx):
         focal = required(ctx, focal_lengths(lens, flatten(focal_length)), "-f")
+    if teleconverter not in (None, 1.0) and lens is not None and lens.prescription is not None:
+        # a prescription is the lens alone: the converter behind it is not traced, so the rungs that trace it
+        # cannot answer, and its pupils and hiatus are not those of lens and converter together
+        if model in ("paraxial", "raytrace"):
+            raise click.BadParameter(f"{teleconverter:g} is not part of the lens prescription, which --model {model} "
+                                     "traces; use --model thin, thick or auto", ctx=ctx,
+                                     param=param_named(ctx, "teleconverter"))
+        from camtool.dof.rungs import LensData
+
+        lens = LensData(pupil_magnification=pupil_mag, hiatus_mm=hiatus) if (pupil_mag, hiatus) != (None, None) else None
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     wanted_m = flatten(magnification)
     if wanted_m and flatten(distance):
