@@ -69,7 +69,7 @@ def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator
 
 
 # No --batch: rows compare focal lengths with the first one, which a batch of unrelated scenes would not.
-@camtool_command("compose", batch=False)
+@camtool_command("compose", keys=KEYS, batch=False)
 @focal_option
 @click.option("--subject-size", type=SIZE_M, help="Subject size along --fill-axis, e.g. 1.8m (bare numbers are metres).")
 @click.option("--fill", type=NumberType(0.001, 10), help="Fraction of the frame the subject fills, e.g. 0.8.")
