@@ -100,3 +100,9 @@ def test_a_teleconverter_behind_a_prescription_lens_is_answered_by_the_rungs_tha
 def test_an_unreachable_focus_from_an_extension_names_the_extension() -> None:
     message = _one_line_error(run("dof", "--lens", "cellphone-lens", "-N", "8", "-s", "inf", "--extension", "12"))
     assert "'--extension'" in message
+
+
+def test_a_hinge_no_tilt_reaches_names_the_hinge_that_was_typed() -> None:
+    # J = f/sin θ (Merklinger): a hinge at the focal length needs θ = 90°, which no lens tilts
+    message = _one_line_error(run("tilt", "-f", "24", "-N", "8", "--hinge", "24mm", "-s", "3"))
+    assert "'--hinge'" in message and "'--tilt'" not in message

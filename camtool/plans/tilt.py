@@ -436,7 +436,11 @@ def _tilt_for_hinge(lens: TiltLens, hinge: float, hinge_from: str) -> float:
 
     e = lens.entrance_pupil_mm
     if hinge_from == "lens" or e == 0 or math.isinf(hinge):
-        return float(tilt_for_hinge_deg(lens.focal_length_mm, hinge))
+        tilt = float(tilt_for_hinge_deg(lens.focal_length_mm, hinge))
+        if not abs(tilt) < 90.0:  # J = f/sin θ: a hinge at the focal length or closer needs a tilt of 90° or more
+            raise DomainError("hinge_mm", hinge, "more than {limit} from the lens (the focal length: a tilt below 90°)",
+                              limit=lens.focal_length_mm)
+        return tilt
     f = lens.focal_length_mm
     disc = hinge * hinge + 4.0 * e * f
     sin = (-hinge + math.sqrt(disc)) / (2.0 * e) if disc >= 0 else 2.0
