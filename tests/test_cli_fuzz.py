@@ -64,7 +64,7 @@ from camtool.cli import cli
 from camtool.cli.params import FNumberType, LengthType, NumberType, TimeType
 from camtool.core import ranges
 
-QUICK_EXAMPLES = 400
+QUICK_EXAMPLES = 1000
 DEEP_EXAMPLES = 5000
 EXIF_MUTANTS = 40  # mutated copies of the exif files, quick profile
 EXIF_MUTANTS_DEEP = 400
@@ -573,8 +573,9 @@ def check(outcome: Outcome) -> str:
     if outcome.signal is not None:
         return f"crash: signal {signal.Signals(outcome.signal).name}"
     if "Traceback (most recent call last)" in stderr:
-        kind = stderr.strip().splitlines()[-1][:160]
-        return f"traceback: {kind.split(':')[0]}: {kind} at {last_frame(stderr)}"
+        tail = stderr[stderr.rindex("Traceback (most recent call last)"):].splitlines()[1:]
+        raised = [line for line in tail if line and not line[0].isspace()] or tail[-1:] or [""]
+        return f"traceback: {raised[-1][:160]} at {last_frame(stderr)}"
     if "internal error" in stderr:
         return f"internal error: {stderr.strip()[:200]}"
     if outcome.code not in (0, 1, 2):
