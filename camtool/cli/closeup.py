@@ -74,7 +74,7 @@ def plan_focus(ctx: click.Context, f: Any, n: Any, wanted: Any, by_magnification
 
 
 @contextlib.contextmanager
-def _unreachable_errors(ctx: click.Context) -> Iterator[None]:
+def unreachable_errors(ctx: click.Context) -> Iterator[None]:
     """A focus distance the user did not type (it came from -m or a focus model) is blamed on what they typed."""
     try:
         yield
@@ -102,7 +102,7 @@ def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_
     """:func:`camtool.plans.closeup.dof_rows` with the ``--lens`` preset; errors name the option typed."""
     from camtool.cli.lensdata import ladder_errors
 
-    with library_errors(ctx), ladder_errors(ctx), _unreachable_errors(ctx):
+    with library_errors(ctx), ladder_errors(ctx), unreachable_errors(ctx):
         return closeup.dof_rows(model=model, setting=setting, coc_mm=c, distance_from=distance_from, lens=lens,
                                 diffraction=diffraction, wavelength_nm=wavelength, tolerance=tolerance,
                                 pupil_magnification=pupil, direct=direct, nominal_focal_mm=nominal_focal,

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import click
 
-from camtool.cli.closeup import closeup_options, has_focus_model, plan_focus
+from camtool.cli.closeup import FOCUS_COLUMN, branch_note, closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from
-from camtool.cli.equipment import resolve_coc, resolve_sensor
+from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import WavelengthType, lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
     DISTANCE_M,
@@ -21,8 +21,7 @@ from camtool.cli.options import (
 )
 from camtool.cli.params import NumberType, flatten
 from camtool.core import ranges
-from camtool.dof.inverse import focus_for_limits, focus_for_limits_at
-from camtool.geometry.thinlens import focus_setting
+from camtool.plans import focus as plans
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
 
 FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
@@ -131,12 +130,27 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     if depth:
         return _depth(ctx, magnification, depth, f_number, exact_stops, coc, pupil_mag, hiatus, fmt)
     if optimum and focus_spread:
-        return _spread(ctx, focus_spread, magnification, pupil_mag, hiatus, wavelength, fmt)
+        p = pupil_and_hiatus(ctx, pupil_mag, hiatus)[0]
+        count, (d, m) = combine_params(ctx, flatten(focus_spread), flatten(magnification) or [0.0])
+        with library_errors(ctx):
+            values = plans.spread_optimum(focus_spread_mm=d, magnification=m, pupil_magnification=p,
+                                          wavelength_nm=wavelength)
+        keys = list(values)
+        note = f"optimum aperture (Hansma): defocus = diffraction at {wavelength:g} nm; blur: root-sum-square"
+        return Output(rows_from(count, values), [c for c in OPTIMUM_COLUMNS if c.key in keys], keys,
+                      note if fmt == "table" else "")
     if optimum and not (near and far):
         raise click.UsageError("--optimum needs --near and --far, or --focus-spread", ctx)
     focal = required(ctx, focal_length, "-f")
     if optimum:
-        return _optimum(ctx, focal, near, far, distance_from, pupil_mag, hiatus, wavelength, fmt)
+        p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
+        count, (f, a, b) = combine_params(ctx, focal, required(ctx, near, "--near"), required(ctx, far, "--far"))
+        with library_errors(ctx):
+            values = plans.optimum(focal_length_mm=f, near_mm=a, far_mm=b, distance_from=distance_from,
+                                   pupil_magnification=p, hiatus_mm=delta, wavelength_nm=wavelength)
+        note = footer(None, None, "", f"optimum aperture (Hansma): defocus = diffraction at {wavelength:g} nm; "
+                      "blur: root-sum-square", distance_from, lens_note) if fmt == "table" else ""
+        return Output(rows_from(count, values), OPTIMUM_COLUMNS, OPTIMUM_KEYS, note)
     if near or far:
         return _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
                         preset_files, f_numbers(f_number, exact_stops))
@@ -146,123 +160,35 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     apertures = f_numbers(f_number, exact_stops)
     wanted = flatten(distance) or flatten(magnification)
     count, (f, w, *given_n) = combine_params(ctx, focal, wanted, *([apertures] if apertures else []))
-    if extension or teleconverter or has_focus_model(ctx):
-        return _planned(ctx, count, f, w, given_n, not distance, distance_from, p, delta, extension, teleconverter,
-                        lens_note, fmt)
     with library_errors(ctx):
-        setting = focus_setting(f, w if distance else None, None if distance else w, distance_from, delta,
-                                given_n[0] if given_n else None, p)
-    values = {
-        "focal_length_mm": f, "distance_mm": setting.distance_mm, "image_distance_mm": setting.image_distance_mm,
-        "extension_mm": setting.extension_mm, "magnification": setting.magnification,
-        "closest_focus_mm": setting.closest_focus_mm, "distance_from": distance_from,
-        "focal_length_at_focus_mm": f,
-    }
+        found = plans.forward(focal_length_mm=f, wanted=w, by_magnification=not distance,
+                              f_number=given_n[0] if given_n else None, distance_from=distance_from,
+                              pupil_magnification=p, hiatus_mm=delta, lens_preset=ctx.meta.get(LENS),
+                              extension_mm=extension, teleconverter=teleconverter)
+    rows = found.rows if found.rows is not None else rows_from(count, found.values or {})
     keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
-    if given_n:
-        values.update({"f_number": given_n[0], "working_f_number": setting.working_f_number})
-    else:
-        keys = [k for k in keys if k not in ("f_number", "working_f_number")]
-        columns = [c for c in columns if c.key != "working_f_number"]
-    rows = rows_from(count, values)
-    for row in rows:  # the other magnification at the same distance from the sensor (m and 1/m, without hiatus)
-        m = row["magnification"]
-        row["other_magnification"] = (1.0 / m if distance and distance_from == "sensor" and 0.0 < m < 1.0 and not delta
-                                      else None)
-    note = footer("thick" if lens_note else "thin", None, "", "unit focusing, m = v/u", distance_from,
-                  lens_note) if fmt == "table" else ""
-    if fmt == "table":
-        from camtool.cli.closeup import branch_note
-
-        note = " · ".join(part for part in (note, branch_note(rows)) if part)
-    return Output(rows, columns, keys, note)
-
-
-def _planned(ctx, count, f, w, given_n, by_m, distance_from, p, delta, extension, teleconverter, lens_note,
-             fmt) -> Output:
-    """Focusing through the close-up planner: a preset's internal focus, extension, teleconverter."""
-    from camtool.cli.closeup import FOCUS_COLUMN, branch_note, focus_models
-
-    n = given_n[0] if given_n else 1.0
-    with library_errors(ctx):
-        setting = plan_focus(ctx, f, n, w, by_m, distance_from, delta, extension, teleconverter)
-    k = teleconverter or 1.0
-    models = focus_models(ctx)
-    focal = [float(v) for v in (f if hasattr(f, "__len__") else [f])]
-    rows = []
-    for i in range(count):
-        fe, m = setting.focal_length_mm[i], setting.magnification[i]
-        model = models(focal[i])
-        closest = model.min_focus_mm if model is not None else 4.0 * fe + delta
-        if distance_from == "lens":
-            closest = closest - delta - fe * (1.0 + (model.max_magnification if model is not None else 1.0))
-        row = {
-            "focal_length_mm": k * focal[i], "focal_length_at_focus_mm": fe,
-            "distance_mm": setting.sensor_distance_mm[i] if distance_from == "sensor" else setting.lens_distance_mm[i],
-            "image_distance_mm": fe * (1.0 + m), "extension_mm": fe * m, "magnification": m,
-            "closest_focus_mm": closest, "distance_from": distance_from,
-            "other_magnification": None if setting.other_magnification[i] != setting.other_magnification[i]
-            else setting.other_magnification[i],
-        }
-        if given_n:
-            row.update({"f_number": setting.f_number[i], "working_f_number": setting.f_number[i] * (1.0 + m / p)})
-        rows.append(row)
-    keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
-    if any(abs(r["focal_length_at_focus_mm"] - r["focal_length_mm"]) > 1e-9 * r["focal_length_mm"] for r in rows):
+    if found.focus_column:
         columns.insert(1, FOCUS_COLUMN)
     if not given_n:
         keys = [k for k in keys if k not in ("f_number", "working_f_number")]
         columns = [c for c in columns if c.key != "working_f_number"]
-    note = ""
-    if fmt == "table":
-        parts = ["internal focus (docs/closeup.md)" if models(focal[0]) is not None else "unit focusing",
-                 f"extension {extension:g} mm" if extension else "",
-                 f"teleconverter ×{teleconverter:g}" if teleconverter else "",
-                 "-s is the lens's own focus setting; focus is where the subject then is"
-                 if (extension or teleconverter) and not by_m else "", branch_note(rows)]
-        note = footer("thick" if lens_note else "thin", None, "", " · ".join(x for x in parts if x), distance_from,
-                      lens_note)
-    return Output(rows, columns, keys, note)
-
-
-def _optimum(ctx, focal, near, far, distance_from, pupil_mag, hiatus, wavelength, fmt) -> Output:
-    from camtool.dof.closeup import optimum_for_limits
-
-    p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
-    count, (f, a, b) = combine_params(ctx, focal, required(ctx, near, "--near"), required(ctx, far, "--far"))
-    with library_errors(ctx):
-        r = optimum_for_limits(f, a, b, distance_from, delta, p, wavelength)
-    rows = rows_from(count, {
-        "focal_length_mm": f, "near_mm": a, "far_mm": b, "distance_mm": r.distance_mm, "magnification": r.magnification,
-        "focus_spread_mm": r.focus_spread_mm, "f_number": r.optimum.f_number,
-        "working_f_number": r.optimum.working_f_number, "blur_mm": r.optimum.blur_mm,
-        "blur_sum_mm": r.optimum.blur_sum_mm, "distance_from": distance_from,
-    })
-    note = footer(None, None, "", f"optimum aperture (Hansma): defocus = diffraction at {wavelength:g} nm; "
-                  "blur: root-sum-square", distance_from, lens_note) if fmt == "table" else ""
-    return Output(rows, OPTIMUM_COLUMNS, OPTIMUM_KEYS, note)
-
-
-def _spread(ctx, focus_spread, magnification, pupil_mag, hiatus, wavelength, fmt) -> Output:
-    from camtool.dof.closeup import optimum_aperture
-
-    p = pupil_and_hiatus(ctx, pupil_mag, hiatus)[0]
-    count, (d, m) = combine_params(ctx, flatten(focus_spread), flatten(magnification) or [0.0])
-    with library_errors(ctx):
-        r = optimum_aperture(d, m, p, wavelength)
-    keys = ["focus_spread_mm", "magnification", "f_number", "working_f_number", "blur_mm", "blur_sum_mm"]
-    rows = rows_from(count, {"focus_spread_mm": d, "magnification": m, "f_number": r.f_number,
-                             "working_f_number": r.working_f_number, "blur_mm": r.blur_mm,
-                             "blur_sum_mm": r.blur_sum_mm})
-    columns = [c for c in OPTIMUM_COLUMNS if c.key in keys]
-    note = (f"optimum aperture (Hansma): defocus = diffraction at {wavelength:g} nm; blur: root-sum-square"
-            if fmt == "table" else "")
+    if fmt != "table":
+        return Output(rows, columns, keys, "")
+    if not found.planned:
+        how = "unit focusing, m = v/u"
+    else:
+        how = " · ".join(x for x in (
+            "internal focus (docs/closeup.md)" if found.internal_focus else "unit focusing",
+            f"extension {extension:g} mm" if extension else "", f"teleconverter ×{teleconverter:g}" if teleconverter else "",
+            "-s is the lens's own focus setting; focus is where the subject then is" if found.lens_focus_setting else "",
+            branch_note(rows)) if x)
+    note = footer("thick" if lens_note else "thin", None, "", how, distance_from, lens_note)
+    if not found.planned:
+        note = " · ".join(part for part in (note, branch_note(rows)) if part)
     return Output(rows, columns, keys, note)
 
 
 def _depth(ctx, magnification, depth, f_number, exact_stops, coc, pupil_mag, hiatus, fmt) -> Output:
-    from camtool.dof.closeup import coc_for_depth, f_number_for_depth
-
     wanted_m = required(ctx, magnification, "-m")
     apertures, cocs = f_numbers(f_number, exact_stops), flatten(coc)
     if bool(apertures) == bool(cocs):
@@ -270,14 +196,10 @@ def _depth(ctx, magnification, depth, f_number, exact_stops, coc, pupil_mag, hia
     p = pupil_and_hiatus(ctx, pupil_mag, hiatus)[0]
     count, (m, d, given) = combine_params(ctx, wanted_m, flatten(depth), apertures or cocs)
     with library_errors(ctx):
-        if apertures:
-            n, c = given, coc_for_depth(given, m, d, p)
-        else:
-            n, c = f_number_for_depth(given, m, d, p), given
-    rows = rows_from(count, {"magnification": m, "depth_mm": d, "f_number": n, "coc_mm": c,
-                             "working_f_number": n * (1.0 + m / p)})
+        values = plans.depth(magnification=m, depth_mm=d, pupil_magnification=p,
+                             **({"f_number": given} if apertures else {"coc_mm": given}))
     note = "depth = 2·N·c·(1 + m/P)/m² (docs/closeup.md §6)" if fmt == "table" else ""
-    return Output(rows, DEPTH_COLUMNS, DEPTH_KEYS, note)
+    return Output(rows_from(count, values), DEPTH_COLUMNS, DEPTH_KEYS, note)
 
 
 def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
@@ -286,24 +208,11 @@ def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, di
     fars = required(ctx, far, "--far")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    if apertures:  # a fixed f-number: the focus that best uses it, and the limits it gives
-        count, (f, a, b, c, n) = combine_params(ctx, focal, nears, fars, cocs, apertures)
-        with library_errors(ctx):
-            fixed = focus_for_limits_at(f, n, c, a, b, distance_from)
-        rows = rows_from(count, {
-            "focal_length_mm": f, "near_mm": fixed.near_mm, "far_mm": fixed.far_mm, "distance_mm": fixed.distance_mm,
-            "f_number": n, "coc_mm": c, "distance_from": distance_from, "wanted_near_mm": a, "wanted_far_mm": b,
-            "needed_f_number": fixed.needed_f_number,
-        })
-        note = footer("thin", cocs, coc_origin, chosen.label, distance_from,
-                      "near/far: the limits at this f-number") if fmt == "table" else ""
-        return Output(rows, INVERSE_COLUMNS, INVERSE_KEYS + FIXED_KEYS, note)
-    count, (f, a, b, c) = combine_params(ctx, focal, nears, fars, cocs)
+    count, (f, a, b, c, *n) = combine_params(ctx, focal, nears, fars, cocs, *([apertures] if apertures else []))
     with library_errors(ctx):
-        solution = focus_for_limits(f, c, a, b, distance_from)
-    rows = rows_from(count, {
-        "focal_length_mm": f, "near_mm": a, "far_mm": b, "distance_mm": solution.distance_mm,
-        "f_number": solution.f_number, "coc_mm": c, "distance_from": distance_from,
-    })
-    note = footer("thin", cocs, coc_origin, chosen.label, distance_from) if fmt == "table" else ""
-    return Output(rows, INVERSE_COLUMNS, INVERSE_KEYS, note)
+        found = plans.inverse(focal_length_mm=f, near_mm=a, far_mm=b, coc_mm=c, f_number=n[0] if n else None,
+                              distance_from=distance_from)
+    note = footer("thin", cocs, coc_origin, chosen.label, distance_from,
+                  "near/far: the limits at this f-number" if found.fixed else "") if fmt == "table" else ""
+    return Output(rows_from(count, found.values), INVERSE_COLUMNS,
+                  INVERSE_KEYS + FIXED_KEYS if found.fixed else INVERSE_KEYS, note)

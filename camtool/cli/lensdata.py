@@ -1,10 +1,9 @@
 """Lens data for the model ladder from the command line: pupil magnification, hiatus, prescription.
 
-One helper, :func:`lens_data`, turns ``--pupil-mag``, ``--hiatus``,
-``--prescription FILE`` and a lens preset (``--lens``) into a
-:class:`camtool.dof.ladder.LensData`; values given by hand win over the preset's.
-It also hosts the parameter types of the model options (``--tolerance``,
-``--wavelength``).
+The options and their parameter types (``--tolerance``, ``--wavelength``,
+``--pupil-mag``, ``--hiatus``, ``--prescription``) and the glue to
+:func:`camtool.plans.equipment.lens_data`, which decides the precedence (values
+given by hand win over the ``--lens`` preset's) and loads a prescription.
 """
 
 from __future__ import annotations
@@ -18,6 +17,7 @@ from camtool.cli.equipment import LENS
 from camtool.cli.options import param_named, stack
 from camtool.core.units import UnitError, parse_length
 from camtool.dof.ladder import LensData
+from camtool.plans import equipment
 
 
 class ToleranceType(click.ParamType):
@@ -58,70 +58,28 @@ class WavelengthType(click.ParamType):
 
 
 def load_prescription(ctx: click.Context, path: str) -> Any:
-    """Read and validate a prescription YAML file (through the guarded reader); a bad file exits 1 naming it.
+    """:func:`camtool.plans.equipment.load_prescription` (a file, or a prescription preset's name); a bad file
+    exits 1 naming it, an invalid one or an unknown name is one line on ``--prescription``."""
+    from camtool.cli.equipment import open_presets
+    from camtool.cli.options import bad_parameter, file_error
+    from camtool.core.errors import InputError
+    from camtool.core.files import FileProblem
 
-    A name that is not a file but a prescription preset's (``dgauss100``,
-    ``nikon-z50-f1.8``; ``camtool presets list --kind prescription``) gives that preset.
-    """
-    import os
-
-    from camtool.cli.options import file_error
-    from camtool.core.files import FileProblem, load_yaml, read_text
-    from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
-
-    if not os.path.exists(path) and not os.path.dirname(path) and not path.endswith((".yaml", ".yml")):
-        return _prescription_preset(ctx, path)
-    name = path.rsplit("/", 1)[-1]
     try:
-        data, _ = load_yaml(read_text(path, PRESCRIPTION_MAX_BYTES), path)
+        return equipment.load_prescription(
+            path, database=lambda: open_presets(ctx, tuple(ctx.params.get("preset_files") or ())))
     except FileProblem as problem:
         raise file_error(ctx, "prescription_file", problem) from None
-    try:
-        return prescription_from_mapping(data, source=name)
-    except PrescriptionError as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "prescription_file")) from None
-
-
-def _prescription_preset(ctx: click.Context, name: str) -> Any:
-    """The optics of the prescription preset called ``name`` (shipped or the user's); a one-line error if none."""
-    from camtool.cli.equipment import open_presets
-    from camtool.presets import PresetNotFound
-
-    db = open_presets(ctx, tuple(ctx.params.get("preset_files") or ()))
-    try:
-        return db.prescription(name).optics
-    except PresetNotFound:
-        close = db.suggestions("prescription", name)
-    hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
-    raise click.BadParameter(f"no file or prescription preset is named {name!r}{hint}", ctx=ctx,
-                             param=param_named(ctx, "prescription_file"))
-
-
-PRESCRIPTION_MAX_BYTES = 1024 * 1024
-"""Largest prescription file read (a 30-surface lens takes about 3 KB)."""
+    except InputError as error:
+        raise bad_parameter(ctx, error) from None
 
 
 def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None, prescription_file: str | None,
               preset_lens: Any = None) -> LensData | None:
-    """The lens data for the ladder, or None when nothing is known beyond the focal length.
-
-    ``preset_lens`` is a lens preset (``pupil_magnification``, ``hiatus_mm``
-    and ``prescription``: a validated optics prescription, or None); by default the one ``--lens``
-    left in ``ctx.meta``. Values on the command line win over the preset's.
-    """
-    if preset_lens is None:
-        preset_lens = ctx.meta.get(LENS)
-    p = pupil_mag if pupil_mag is not None else getattr(preset_lens, "pupil_magnification", None)
-    delta = hiatus if hiatus is not None else getattr(preset_lens, "hiatus_mm", None)
-    prescription = None
-    if prescription_file is not None:
-        prescription = load_prescription(ctx, prescription_file)
-    else:
-        # validated once, when the preset was built: camtool.optics.prescription.Prescription
-        prescription = getattr(preset_lens, "prescription", None)
-    if p is None and delta is None and prescription is None:
-        return None
-    return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)
+    """:func:`camtool.plans.equipment.lens_data` with ``preset_lens``, by default the ``--lens`` in ``ctx.meta``."""
+    prescription = load_prescription(ctx, prescription_file) if prescription_file is not None else None
+    return equipment.lens_data(pupil_magnification=pupil_mag, hiatus_mm=hiatus, prescription=prescription,
+                               lens_preset=ctx.meta.get(LENS) if preset_lens is None else preset_lens)
 
 
 class SignedLengthType(click.ParamType):
@@ -233,10 +191,13 @@ _LENS_PARAMS = frozenset({"pupil_magnification", "hiatus_mm", "wavelength_nm"})
 
 def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,
                      hiatus: float | None = None) -> tuple[float, float, str]:
-    """(P, δ, footer note) for focusing and angle of view: from the options, else ``--lens``, else 1 and 0."""
-    data = lens_data(ctx, pupil_mag, hiatus, None)
-    known = data.thick_parameters() if data is not None else None
-    if known is None:
-        return 1.0, 0.0, ""
-    p, delta = (float(v) for v in known)
-    return p, delta, f"P = {p:.3g}, hiatus {delta:+.3g} mm"
+    """(P, δ, footer note) for focusing and angle of view (:func:`camtool.plans.closeup.pupil_and_hiatus`)."""
+    from camtool.plans.closeup import pupil_and_hiatus as known
+
+    found = known(lens_data(ctx, pupil_mag, hiatus, None))
+    return found.pupil_magnification, found.hiatus_mm, lens_note(found)
+
+
+def lens_note(found: Any) -> str:
+    """The footer's words for the pupil magnification and hiatus in use (none when they are 1 and 0 by default)."""
+    return f"P = {found.pupil_magnification:.3g}, hiatus {found.hiatus_mm:+.3g} mm" if found.known else ""

@@ -43,6 +43,7 @@ PARAM_FOR = {
     "magnification": "magnification",
     "sensor_mm": "sensor",
     "nd_factor": "nd",
+    "prescription": "prescription_file",
 }
 SHOWN_IN_METRES = {"distance", "near", "far"}
 

@@ -26,6 +26,7 @@ __all__ = [
     "focus_models",
     "has_focus_model",
     "plan_focus",
+    "pupil_and_hiatus",
 ]
 
 CLOSE_UP = 0.1
@@ -67,6 +68,27 @@ class Setting(NamedTuple):
     by_magnification: bool
     extension_mm: float
     teleconverter: float
+
+
+class PupilHiatus(NamedTuple):
+    """The pupil magnification and hiatus for focusing; ``known``: from the lens data, not the defaults 1 and 0."""
+
+    pupil_magnification: float
+    hiatus_mm: float
+    known: bool
+
+
+def pupil_and_hiatus(lens: Any) -> PupilHiatus:
+    """P and δ of lens data (:func:`camtool.plans.equipment.lens_data`): its own, else 1 and 0 (a thin lens).
+
+    >>> pupil_and_hiatus(None)
+    PupilHiatus(pupil_magnification=1.0, hiatus_mm=0.0, known=False)
+    """
+    known = lens.thick_parameters() if lens is not None else None
+    if known is None:
+        return PupilHiatus(1.0, 0.0, False)
+    p, delta = (float(v) for v in known)
+    return PupilHiatus(p, delta, True)
 
 
 def has_focus_model(lens: Any) -> bool:

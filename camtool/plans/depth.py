@@ -189,3 +189,4 @@ def _scaled(value: Any, k: float) -> Any:
     if isinstance(value, list):
         return [k * v for v in value]
     return k * value if k != 1.0 else value
+

@@ -342,3 +342,77 @@ def check_hiatus(hiatus_mm: float | None, *, focal_lengths: Sequence[float], pup
             raise InputError("hiatus", f"{hiatus_mm:g} mm is outside the valid range: more than {low:.4g} mm (the "
                                        f"entrance pupil in front of the sensor) and at most {high:.4g} mm "
                                        f"({HIATUS_FOCAL_LENGTHS:g} × focal length) for f = {f:g} mm")
+
+
+PRESCRIPTION_MAX_BYTES = 1024 * 1024
+"""Largest prescription file read (a 30-surface lens takes about 3 KB)."""
+
+
+def lens_data(*, pupil_magnification: float | None = None, hiatus_mm: float | None = None,
+              prescription: Any = None, lens_preset: Any = None, database: Database | None = None) -> Any:
+    """The lens data for the model ladder (:class:`camtool.dof.ladder.LensData`), or None when nothing is known.
+
+    Decides the precedence: a pupil magnification or hiatus given wins over
+    the lens preset's; a prescription given (a validated optics prescription,
+    a YAML file's path or a prescription preset's name, see
+    :func:`load_prescription`) wins over the preset's own. None when neither
+    the inputs nor the preset know anything beyond the focal length.
+
+    >>> lens_data() is None
+    True
+    >>> lens_data(pupil_magnification=0.5).thick_parameters()
+    (0.5, 0.0)
+    """
+    from camtool.dof.ladder import LensData
+
+    p = pupil_magnification if pupil_magnification is not None else getattr(lens_preset, "pupil_magnification", None)
+    delta = hiatus_mm if hiatus_mm is not None else getattr(lens_preset, "hiatus_mm", None)
+    if isinstance(prescription, str):
+        prescription = load_prescription(prescription, database=database)
+    elif prescription is None:
+        # validated once, when the preset was built: camtool.optics.prescription.Prescription
+        prescription = getattr(lens_preset, "prescription", None)
+    if p is None and delta is None and prescription is None:
+        return None
+    return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)
+
+
+def load_prescription(source: str, *, database: Database | None = None) -> Any:
+    """The optics prescription in the YAML file ``source``, or that of the prescription preset named ``source``.
+
+    A ``source`` that is no existing path, has no directory and does not end
+    in ``.yaml``/``.yml`` is a preset name (``dgauss100``, ``nikon-z50-f1.8``),
+    looked up in ``database()``. The file is read through the guarded reader.
+
+    Raises
+    ------
+    camtool.core.files.FileProblem
+        The file cannot be read or is not YAML.
+    InputError
+        On ``prescription``: the file is no valid prescription, or no preset has that name.
+    """
+    import os
+
+    if not os.path.exists(source) and not os.path.dirname(source) and not source.endswith((".yaml", ".yml")):
+        return _prescription_preset(source, database)
+    from camtool.core.files import load_yaml, read_text
+    from camtool.optics.prescription import PrescriptionError, prescription_from_mapping
+
+    data, _ = load_yaml(read_text(source, PRESCRIPTION_MAX_BYTES), source)
+    try:
+        return prescription_from_mapping(data, source=source.rsplit("/", 1)[-1])
+    except PrescriptionError as error:
+        raise InputError("prescription", _braced(str(error))) from None
+
+
+def _prescription_preset(name: str, database: Database | None) -> Any:
+    """The optics of the prescription preset called ``name``; an :class:`InputError` naming close names if none."""
+    from camtool.presets import PresetNotFound, load_db
+
+    db = (database or load_db)()
+    try:
+        return db.prescription(name).optics
+    except PresetNotFound:
+        close = db.suggestions("prescription", name)
+    hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
+    raise InputError("prescription", _braced(f"no file or prescription preset is named {name!r}{hint}"))

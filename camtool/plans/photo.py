@@ -272,16 +272,10 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
 
 
 def _lens_data(p: float | None, delta: float | None, prescription: Any, preset: Any) -> LensData | None:
-    """The lens data: the values given over the lens preset's; None when nothing is known beyond f."""
-    from camtool.dof.ladder import LensData
+    """The lens data: the values given over the lens preset's (:func:`camtool.plans.equipment.lens_data`)."""
+    from camtool.plans.equipment import lens_data
 
-    p = p if p is not None else getattr(preset, "pupil_magnification", None)
-    delta = delta if delta is not None else getattr(preset, "hiatus_mm", None)
-    if prescription is None:
-        prescription = getattr(preset, "prescription", None)
-    if p is None and delta is None and prescription is None:
-        return None
-    return LensData(pupil_magnification=p, hiatus_mm=delta, prescription=prescription)
+    return lens_data(pupil_magnification=p, hiatus_mm=delta, prescription=prescription, lens_preset=preset)
 
 
 def _sensor(reading: Reading, f: float | None, given: tuple[float, float] | None, given_source: str,
