@@ -74,6 +74,7 @@ TIMEOUT_S = float(os.environ.get("CAMTOOL_FUZZ_TIMEOUT", "20"))
 MEMORY_HEADROOM = 3 * 2**30  # address space a child may add to what the test process already maps
 OUTPUT_CAP = 4 * 2**20  # bytes of each stream read back
 REPO = Path(__file__).resolve().parent.parent
+WORKDIR = Path(tempfile.mkdtemp(prefix="fuzz-cwd-", dir=os.environ.get("XDG_CACHE_HOME")))  # conftest's temporary tree
 EXIF_DATA = REPO / "tests" / "data" / "exif"
 EXIF_SAMPLES = REPO.parent / "shared" / "reference" / "exif-samples"
 
@@ -166,6 +167,7 @@ def _fork_chunk(chunk: list[Run]) -> list[Outcome]:
                 resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
                 signal.signal(signal.SIGALRM, signal.SIG_DFL)  # the time limit ends the child whatever it does
                 signal.signal(signal.SIGPIPE, signal.SIG_DFL)
+                os.chdir(WORKDIR)  # what a command writes by default (a chart) lands in the session's directory
                 for (argv, env, _), (out, err, inp) in zip(chunk, files):
                     code = _run_one(argv, env, out.fileno(), err.fileno(), inp.fileno())
                     os.write(results.fileno(), f"{code}\n".encode())
@@ -486,16 +488,26 @@ def values_for(param: click.Parameter, inputs: Inputs) -> st.SearchStrategy[str]
     return st.one_of(number(), length(), st.sampled_from(NAMES))
 
 
-BASE = {  # a mostly valid core, so that the other options are exercised past the first error
-    "dof": ["-f", "50", "-N", "8", "-s", "3"],
-    "hyperfocal": ["-f", "24", "-N", "8"],
-    "fov": ["-f", "50"],
-    "focus": ["-f", "100", "-s", "0.5m"],
-    "compose": ["--subject-size", "1.8m", "--fill", "0.8"],
-    "exposure": ["-N", "16", "-t", "1/125"],
-    "stack": ["-f", "100", "-N", "8"],
-    "stars": ["-f", "24", "-N", "2.8"],
-    "tilt": ["-f", "90", "-N", "8"],
+BASE = {  # mostly valid cores, so that the other options are exercised past the first error
+    "dof": [["-f", "50", "-N", "8", "-s", "3"], ["--lens", "nikon-z-24mm-f1.8-s", "-N", "11", "-s", "inf"],
+            ["--camera", "sony-a7-iv", "--lens", "sony-fe-24-70mm-f2.8-gm-ii", "-f", "24", "-N", "8", "-s", "inf"],
+            ["-f", "200", "-N", "4", "-s", "inf", "--teleconverter", "1.4"], ["-f", "100", "-N", "8", "-m", "1"]],
+    "hyperfocal": [["-f", "24", "-N", "8"]],
+    "fov": [["-f", "50"]],
+    "focus": [["-f", "100", "-s", "0.5m"]],
+    "compose": [["--subject-size", "1.8m", "--fill", "0.8"]],
+    "exposure": [["-N", "16", "-t", "1/125"]],
+    "stars": [["-f", "24", "-N", "2.8"]],
+    "flash": [["--gn", "20", "-s", "5", "--iso", "100"]],
+    "equiv": [["-f", "25", "-N", "1.4", "--iso", "200", "--sensor", "m43"]],
+    "tilt": [["-f", "90", "-N", "11", "-s", "2m", "--tilt", "3"]],
+    "stack": [["-m", "1", "-N", "8", "--depth", "10mm"], ["-f", "24", "-N", "11", "--near", "0.5", "--far", "inf"],
+              ["-f", "100", "-N", "8", "--near", "1m", "--far", "3m"]],
+    "chart dof": [["-f", "35", "-N", "8"]],
+    "chart blur": [["--subject-size", "1.8m", "--fill", "0.8", "-f", "35,85", "-N", "2.8"]],
+    "chart aperture": [["-f", "24", "--near", "2m", "--far", "inf"]],
+    "chart trade": [["-N", "8", "-s", "3m", "--lens", "dgauss100-lens"]],
+    "chart card": [["-f", "35"]],
 }
 
 
@@ -512,8 +524,9 @@ def with_format(argv: list[str], command: click.Command, fmt: str, field: str) -
 def command_line(draw: Any, inputs: Inputs) -> tuple[list[str], dict[str, str | None]]:
     prefix, command = draw(st.sampled_from(COMMANDS))
     argv = list(prefix)
-    if draw(st.booleans()) or draw(st.booleans()):
-        argv += BASE.get(prefix[0], [])
+    cores = BASE.get(" ".join(prefix), [])
+    if cores and (draw(st.booleans()) or draw(st.booleans())):
+        argv += draw(st.sampled_from(cores))
     options = [p for p in command.params if isinstance(p, click.Option) and p.name != "help"]
     chosen = draw(st.lists(st.sampled_from(options), max_size=5)) if options else []
     for param in chosen:
