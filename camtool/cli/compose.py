@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
-from collections.abc import Iterator
 from typing import Any
 
 import click
@@ -19,15 +17,13 @@ from camtool.cli.options import (
     distance_plane_option,
     focal_option,
     library_errors,
-    param_named,
     sensor_options,
-    show_length,
 )
 from camtool.cli.params import LengthType, NumberType, flatten
-from camtool.core.errors import DomainError
+from camtool.plans import compose as plans
+from camtool.plans.compose import lenses
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, Column
 
-DEFAULT_FOCAL_LENGTHS_MM = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]
 SIZE_M = LengthType("m")
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "magnification", "horizontal_deg", "vertical_deg",
@@ -53,19 +49,6 @@ def _plane_columns(name: str, short: str) -> list[Column]:
         Column(f"{name}_blur_mm", f"{short} blur", SMALL),
         Column(f"{name}_blur_pct", f"{short} blur %", NUMBER),
     ]
-
-
-@contextlib.contextmanager
-def _plane_errors(ctx: click.Context, name: str, distance_mm: float) -> Iterator[None]:
-    """A foreground too close to the camera as a usage error on its own option."""
-    try:
-        yield
-    except DomainError as error:
-        if error.param != "offset_mm":
-            raise
-        raise click.BadParameter(f"{show_length(distance_mm, True)} is outside the valid range: "
-                                 "less than the distance from the subject to the lens's front focal point",
-                                 ctx=ctx, param=param_named(ctx, name)) from None
 
 
 # No --batch: rows compare focal lengths with the first one, which a batch of unrelated scenes would not.
@@ -104,12 +87,8 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
       camtool compose --subject-size 1.8m --fill 0.8
       camtool compose --subject-size 1.8m --fill 0.8 -N 2.8 --background 20m -f 35,85,200
     """
-    from camtool.dof.ladder import depth_of_field
-    from camtool.geometry.compose import composition, magnification_for_fill, plane_view
-
-    k = teleconverter or 1.0  # the lens taken as k·f at k·N (docs/closeup.md §7)
-    focal = [k * v for v in flatten(focal_length)] or DEFAULT_FOCAL_LENGTHS_MM
-    apertures = [k * v for v in f_numbers(f_number, exact_stops)]
+    focal, apertures = lenses(focal_lengths_mm=flatten(focal_length), f_numbers=f_numbers(f_number, exact_stops),
+                              teleconverter=teleconverter)
     size, share = single(ctx, subject_size, "--subject-size"), single(ctx, fill, "--fill")
     given_ms = flatten(magnification)
     given_m = given_ms[0] if given_ms else None
@@ -120,36 +99,16 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
         raise click.UsageError("--background and --foreground need -N for the blur disc.", ctx)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch) if apertures else (None, "")
-    frame = chosen.height_mm if fill_axis == "height" else chosen.width_mm
     optical: list[Any] = [apertures, cocs] if apertures else []
     count, columns = combine_params(ctx, focal, given_ms or [0.0], *optical)
-    f, m_row, n, c = ((*columns, None, None))[:4]
-    values: dict[str, Any] = {"f_number": n, "coc_mm": c, "distance_from": distance_from,
-                              "background_mm": behind, "foreground_mm": before}
+    f, m, n, c = ((*columns, None, None))[:4]
     with library_errors(ctx):
-        m = m_row if given_m is not None else magnification_for_fill(size, share, frame)
-        shot = composition(f, m, chosen.width_mm, chosen.height_mm)
-        distance = shot.distance_mm if distance_from == "sensor" else shot.lens_distance_mm
-        values.update({key: getattr(shot, key) for key in ("focal_length_mm", "magnification", "horizontal_deg",
-                                                            "vertical_deg", "field_width_mm", "field_height_mm")})
-        values["distance_mm"] = distance
-        import numpy as np
-
-        if apertures and float(np.max(m)) <= 1.0:
-            limits = depth_of_field("auto", f, n, c, distance, distance_from).limits
-            values.update({"near_mm": limits.near_mm, "far_mm": limits.far_mm})
-        elif apertures:
-            # above 1:1 from the lens plane, where every magnification has its one distance (from the sensor
-            # a distance belongs to m ≤ 1 first), then moved to the sensor plane by v = f(1 + m)
-            limits = depth_of_field("auto", f, n, c, shot.lens_distance_mm, "lens").limits
-            shift = 0.0 if distance_from == "lens" else distance - shot.lens_distance_mm
-            values.update({"near_mm": limits.near_mm + shift, "far_mm": limits.far_mm + shift})
-        for name, offset in (("background", behind), ("foreground", None if before is None else -before)):
-            if offset is not None:
-                with _plane_errors(ctx, name, behind if name == "background" else before):
-                    view = plane_view(f, n, m, chosen.width_mm, offset, reference_focal_length_mm=focal[0])
-                values.update({f"{name}_scale": view.scale, f"{name}_width_mm": view.visible_width_mm,
-                               f"{name}_blur_mm": view.blur_mm, f"{name}_blur_pct": view.blur_pct})
+        values = plans.compose(focal_length_mm=f, sensor_width_mm=chosen.width_mm, sensor_height_mm=chosen.height_mm,
+                               reference_focal_length_mm=focal[0], magnification=m if given_m is not None else None,
+                               subject_size_mm=size, fill=share,
+                               frame_mm=chosen.height_mm if fill_axis == "height" else chosen.width_mm,
+                               f_number=n, coc_mm=c, distance_from=distance_from, background_mm=behind,
+                               foreground_mm=before)
     rows = rows_from(count, values)
     shown = list(COLUMNS) + (APERTURE_COLUMNS if apertures else [])
     shown += _plane_columns("background", "bg") if behind is not None else []

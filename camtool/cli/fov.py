@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import click
 
-from camtool.cli.closeup import closeup_options, has_focus_model, magnification_option
+from camtool.cli.closeup import closeup_options, magnification_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import footer, required, rows_from
-from camtool.cli.equipment import resolve_sensor
+from camtool.cli.equipment import LENS, resolve_sensor
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
     DISTANCE_M,
@@ -17,7 +17,7 @@ from camtool.cli.options import (
     sensor_options,
 )
 from camtool.cli.params import flatten
-from camtool.geometry.fov import view
+from camtool.plans.fov import field_of_view
 from camtool.render.columns import ANGLE, NUMBER, SMALL, Column
 
 KEYS = ["focal_length_mm", "horizontal_deg", "vertical_deg", "diagonal_deg", "equivalent_focal_length_mm",
@@ -74,61 +74,20 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
     wanted_m = flatten(magnification)
     if wanted_m and flatten(distance):
         raise click.UsageError("give either -s/--distance or -m/--magnification, not both", ctx)
-    distances = flatten(distance)
-    if wanted_m or extension or teleconverter or (distances and has_focus_model(ctx)):
-        return _planned(ctx, focal, wanted_m or distances or [float("inf")], bool(wanted_m), extension, teleconverter,
-                        sensor, crop, distance_from, pupil_mag, hiatus, preset_files, fmt)
+    wanted = wanted_m or flatten(distance)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
-    count, (f, s) = combine_params(ctx, focal, distances or [float("inf")])
+    count, (f, s) = combine_params(ctx, focal, wanted or [float("inf")])
     with library_errors(ctx):
-        seen = view(chosen.width_mm, chosen.height_mm, f, s if distances else None, distance_from, p, delta,
-                    chosen.crop_factor)
-    angles = seen.angles
-    values = {
-        "focal_length_mm": f, "horizontal_deg": angles.horizontal_deg, "vertical_deg": angles.vertical_deg,
-        "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": seen.equivalent_focal_length_mm,
-        "crop_factor": chosen.crop_factor, "sensor_width_mm": chosen.width_mm, "sensor_height_mm": chosen.height_mm,
-    }
+        seen = field_of_view(focal_length_mm=f, sensor_width_mm=chosen.width_mm, sensor_height_mm=chosen.height_mm,
+                             crop_factor=chosen.crop_factor, wanted=s if wanted else None,
+                             by_magnification=bool(wanted_m), distance_from=distance_from, pupil_magnification=p,
+                             hiatus_mm=delta, lens_preset=ctx.meta.get(LENS), extension_mm=extension,
+                             teleconverter=teleconverter)
     keys, columns = list(KEYS), list(COLUMNS)
-    if distances:
-        values.update({"distance_mm": s, "magnification": seen.magnification, "field_width_mm": seen.field_width_mm,
-                       "field_height_mm": seen.field_height_mm, "distance_from": distance_from})
+    if seen.at_distance:
         keys += DISTANCE_KEYS
         columns += DISTANCE_COLUMNS
-    rows = rows_from(count, values)
     note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})",
-                  distance_from if distances else None, lens_note) if fmt == "table" else ""
-    return Output(rows, columns, keys, note)
-
-
-def _planned(ctx, focal, wanted, by_m, extension, teleconverter, sensor, crop, distance_from, pupil_mag, hiatus,
-             preset_files, fmt) -> Output:
-    """``fov -m`` (and a focus model, extension, teleconverter): the view at the lens-plane distance u = f(1 + 1/m)."""
-    import numpy as np
-
-    from camtool.cli.closeup import plan_focus
-
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
-    count, (f, w) = combine_params(ctx, focal, wanted)
-    with library_errors(ctx):
-        # a lens preset with a published closest focus focuses internally: its focal length at m (docs/closeup.md §2)
-        ones = 1.0 if count == 1 else np.ones(count)  # no f-number here: one placeholder per row
-        setting = plan_focus(ctx, f, ones, w, by_m, distance_from, delta, extension, teleconverter)
-        pick = (lambda values: values[0]) if count == 1 else np.asarray
-        fe, m, u = pick(setting.focal_length_mm), pick(setting.magnification), pick(setting.lens_distance_mm)
-        seen = view(chosen.width_mm, chosen.height_mm, fe, u, "lens", p, delta, chosen.crop_factor)
-    angles = seen.angles
-    rows = rows_from(count, {
-        "focal_length_mm": f * (teleconverter or 1.0), "horizontal_deg": angles.horizontal_deg,
-        "vertical_deg": angles.vertical_deg,
-        "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": seen.equivalent_focal_length_mm,
-        "crop_factor": chosen.crop_factor, "sensor_width_mm": chosen.width_mm, "sensor_height_mm": chosen.height_mm,
-        "distance_mm": pick(setting.sensor_distance_mm) if distance_from == "sensor" else u, "magnification": m,
-        "field_width_mm": seen.field_width_mm, "field_height_mm": seen.field_height_mm,
-        "distance_from": distance_from,
-    })
-    note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})", distance_from,
-                  lens_note) if fmt == "table" else ""
-    return Output(rows, list(COLUMNS) + list(DISTANCE_COLUMNS), KEYS + DISTANCE_KEYS, note)
+                  distance_from if seen.at_distance else None, lens_note) if fmt == "table" else ""
+    return Output(rows_from(count, seen.values), columns, keys, note)

@@ -44,8 +44,10 @@ PARAM_FOR = {
     "sensor_mm": "sensor",
     "nd_factor": "nd",
     "prescription": "prescription_file",
+    "background_mm": "background",
+    "foreground_mm": "foreground",
 }
-SHOWN_IN_METRES = {"distance", "near", "far"}
+SHOWN_IN_METRES = {"distance", "near", "far", "background", "foreground"}
 
 
 def stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
