@@ -84,7 +84,7 @@ def _show(value: Any) -> str:
 
 def first_bad(value: Any, ok: Any) -> Any:
     """Return the first element of ``value`` where ``ok`` is false (scalar or array)."""
-    if is_scalar(value) and isinstance(ok, bool):
+    if (is_scalar(value) and isinstance(ok, bool)) or isinstance(value, str):  # a name (a film's) names itself
         return value
     import numpy as np
 
