@@ -1,10 +1,9 @@
 """Close-up on the command line: ``-m/--magnification``, ``--extension``, ``--teleconverter``, per-row diffraction.
 
-The options, the columns and the glue to :mod:`camtool.plans.closeup`, which
-makes every decision (the focus setting of each row, the ladder on it, the one
-hyperfocal distance of a lens with a focus model): :func:`plan_focus` and
-:func:`dof_rows` here pass it the ``--lens`` preset and name the option typed
-in its errors.
+The options and the columns; :mod:`camtool.plans.closeup` makes every decision
+(the focus setting of each row, the ladder on it, the one hyperfocal distance of
+a lens with a focus model). :func:`unreachable_errors` names the option typed
+when a focus derived from it is out of a model's reach.
 """
 
 from __future__ import annotations
@@ -18,12 +17,11 @@ import click
 
 from camtool.cli.common import one_value
 from camtool.cli.equipment import LENS
-from camtool.cli.options import EXTENSION_MM, _typed, library_errors, param_named, stack
+from camtool.cli.options import EXTENSION_MM, _typed, param_named, stack
 from camtool.cli.params import NumberType
-from camtool.core.errors import DomainError, require
 from camtool.plans import closeup
-from camtool.plans.closeup import CLOSE_UP, Setting
-from camtool.render.columns import FNUMBER, NUMBER, SMALL, TEXT, Column
+from camtool.plans.closeup import CLOSE_UP
+from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
 
 MAGNIFICATION = NumberType(1e-6, 1000.0)
 """Any magnification above 0, to 1000:1 (the formulas hold far past the tested 20:1)."""
@@ -64,15 +62,6 @@ def focus_models(ctx: click.Context) -> Any:
     return closeup.focus_models(ctx.meta.get(LENS))
 
 
-def plan_focus(ctx: click.Context, f: Any, n: Any, wanted: Any, by_magnification: bool, distance_from: str,
-               hiatus_mm: float, extension_mm: float | None, teleconverter: float | None) -> Setting:
-    """:func:`camtool.plans.closeup.plan_focus` with the ``--lens`` preset; errors name the option typed."""
-    with library_errors(ctx):
-        return closeup.plan_focus(lens=ctx.meta.get(LENS), focal_length_mm=f, f_number=n, wanted=wanted,
-                                  by_magnification=by_magnification, distance_from=distance_from,
-                                  hiatus_mm=hiatus_mm, extension_mm=extension_mm, teleconverter=teleconverter)
-
-
 @contextlib.contextmanager
 def unreachable_errors(ctx: click.Context) -> Iterator[None]:
     """A focus distance the user did not type (it came from -m or a focus model) is blamed on what they typed."""
@@ -96,19 +85,6 @@ def unreachable_errors(ctx: click.Context) -> Iterator[None]:
                                  ctx=ctx, param=param_named(ctx, "magnification")) from None
 
 
-def dof_rows(ctx: click.Context, model: str, setting: Setting, c: Any, distance_from: str, lens: Any,
-             diffraction: bool, wavelength: float, tolerance: float, pupil: float, delta: float,
-             direct: bool = False, nominal_focal: Any = None) -> list[dict[str, Any]]:
-    """:func:`camtool.plans.closeup.dof_rows` with the ``--lens`` preset; errors name the option typed."""
-    from camtool.cli.lensdata import ladder_errors
-
-    with library_errors(ctx), ladder_errors(ctx), unreachable_errors(ctx):
-        return closeup.dof_rows(model=model, setting=setting, coc_mm=c, distance_from=distance_from, lens=lens,
-                                diffraction=diffraction, wavelength_nm=wavelength, tolerance=tolerance,
-                                pupil_magnification=pupil, direct=direct, nominal_focal_mm=nominal_focal,
-                                lens_preset=ctx.meta.get(LENS))
-
-
 def branch_note(rows: Sequence[dict[str, Any]]) -> str:
     """Footer text naming the other magnification of a sensor-plane distance (close-up rows only)."""
     others = [(r["distance_mm"], r["other_magnification"]) for r in rows
@@ -120,28 +96,16 @@ def branch_note(rows: Sequence[dict[str, Any]]) -> str:
     return f"the same distance is also reached at m = {shown} (give -m for that branch)"
 
 
-def check_depth_inputs(ctx: click.Context, value: Any, name: str) -> None:
-    """A one-line error on ``name`` for a non-positive depth or spread."""
-    try:
-        require(name, value, value > 0, "> 0 mm")
-    except DomainError:
-        with library_errors(ctx):
-            raise
-
-
 __all__ = [
     "CLOSEUP_COLUMNS",
     "CLOSEUP_KEYS",
     "CLOSE_UP",
     "DIFFRACTION_COLUMNS",
     "DIFFRACTION_KEYS",
-    "TEXT",
-    "Setting",
     "branch_note",
     "closeup_options",
-    "dof_rows",
     "focus_models",
     "has_focus_model",
     "magnification_option",
-    "plan_focus",
+    "unreachable_errors",
 ]

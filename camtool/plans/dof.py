@@ -99,12 +99,12 @@ def dof_table(*, model: str, focal_length_mm: Any, f_number: Any, wanted: Any, c
     Examples
     --------
     50 mm f/8, c = 0.03 mm, focused at 3 m from the lens: H = f²/(N·c) + f = 10,466.67 mm and the near
-    limit H·s/(H + s − f) (Wikipedia, "Depth of field"):
+    limit s(H − f)/(H + s − 2f) (Wikipedia, "Depth of field"):
 
     >>> t = dof_table(model="thin", focal_length_mm=50.0, f_number=8.0, wanted=3000.0, coc_mm=0.03,
     ...               distance_from="lens")
     >>> h = 50.0 ** 2 / 0.24 + 50.0
-    >>> t.path, round(t.rows[0]["near_mm"], 6) == round(h * 3000.0 / (h + 3000.0 - 50.0), 6)
+    >>> t.path, round(t.rows[0]["near_mm"], 6) == round(3000.0 * (h - 50.0) / (h + 3000.0 - 100.0), 6)
     ('direct', True)
     """
     from camtool.plans.closeup import has_focus_model
