@@ -286,28 +286,13 @@ def _footer(answer: Any, step: str, film: Any, t_stop: bool) -> str:
 
 
 def _film(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
-    """The film named by --film: a shipped film, else a ``films`` preset; unknown names are refused."""
-    from camtool.core.errors import DomainError
-    from camtool.exposure.reciprocity import find_film
-
-    try:
-        return find_film(name)
-    except DomainError as error:
-        preset = _film_preset(ctx, name, preset_files)
-        if preset is not None:
-            return preset
-        text = f"{error.value} is outside the valid range: {error.valid}"
-        raise click.BadParameter(text + (f" ({error.detail})" if error.detail else ""), ctx=ctx,
-                                 param=param_named(ctx, "film")) from None
-
-
-def _film_preset(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
-    """A film from the user's preset files (kind ``films``), or None when there is none of that name."""
+    """The film named by --film (:func:`camtool.plans.presets.film`); an unknown name is one line on --film."""
     from camtool.cli.equipment import open_presets
-    from camtool.presets import PresetNotFound
+    from camtool.cli.options import bad_parameter
+    from camtool.core.errors import DomainError
+    from camtool.plans.presets import film
 
-    db = open_presets(ctx, preset_files)
     try:
-        return db.film(name).reciprocity()
-    except PresetNotFound:
-        return None
+        return film(name, database=lambda: open_presets(ctx, preset_files))
+    except DomainError as error:
+        raise bad_parameter(ctx, error) from None

@@ -2,16 +2,16 @@
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any
 
 import click
 
 from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
+from camtool.plans import presets as plan
+from camtool.plans.presets import KINDS
 from camtool.render.columns import TEXT, Column
 
-KINDS = ["sensor", "camera", "lens", "prescription", "scene", "film"]
 KIND_CHOICE = click.Choice(KINDS)
 LIST_KEYS = ["kind", "id", "name", "summary", "tier", "origin"]
 LIST_COLUMNS = [Column("kind", "kind", TEXT), Column("id", "id", TEXT), Column("summary", "summary", TEXT),
@@ -44,39 +44,6 @@ def _database(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:
     return open_presets(ctx, preset_files)
 
 
-def summary(preset: Any) -> str:
-    """One line describing a preset, e.g. '36 × 24 mm' or '24–70 mm f/4–22'."""
-    kind = type(preset).__name__.lower()
-    if kind == "sensor":
-        return f"{preset.width_mm:g} × {preset.height_mm:g} mm" + (" (approximate)" if preset.approximate else "")
-    if kind == "camera":
-        pixels = f", {preset.pixels_w} × {preset.pixels_h} px" if preset.pixels_w else ""
-        return f"{preset.sensor.id} {preset.sensor.width_mm:g} × {preset.sensor.height_mm:g} mm{pixels}"
-    if kind == "lens":
-        focal = (f"{preset.focal_min_mm:g}–{preset.focal_max_mm:g} mm" if preset.is_zoom
-                 else f"{preset.focal_min_mm:g} mm")
-        stops = f" f/{preset.f_number_min:g}" if preset.f_number_min else ""
-        return focal + stops + (" (prescription)" if preset.prescription is not None else "")
-    if kind == "prescription":
-        return f"{len(preset.surfaces)} surfaces, f = {preset.focal_length_mm or 0:g} mm"
-    if kind == "film":
-        film = preset.reciprocity() if hasattr(preset, "reciprocity") else preset
-        model = (f"p = {film.p:g} beyond {film.threshold_s:g} s" if film.p is not None
-                 else f"published table to {film.points[-1][0]:g} s")
-        return f"{film.name}, reciprocity {model}"
-    return preset.name
-
-
-def shipped_films() -> list[Any]:
-    """The films camtool ships with their makers' reciprocity data (``camtool/exposure/films.yaml``)."""
-    from camtool.exposure.reciprocity import load_films
-
-    return list(load_films().values())
-
-
-FILMS_ORIGIN = "camtool/exposure/films.yaml"
-
-
 @presets.command("list")
 @click.option("--kind", type=KIND_CHOICE, help="Only presets of this kind.")
 @click.option("--search", metavar="TEXT", help="Only presets whose id, name or aliases contain TEXT.")
@@ -96,56 +63,8 @@ def list_presets(ctx: click.Context, kind: str | None, search: str | None, fmt: 
       camtool presets list --search 50mm --format json
       camtool presets list --kind film --search ilford
     """
-    db = _database(ctx, preset_files)
-    kinds = [kind] if kind else KINDS
-    needle = (search or "").lower()
-    rows = []
-    for each in kinds:
-        listed: list[tuple[Any, str | None, str | None]] = [(p, p.tier, p.origin) for p in db.all(each)]
-        if each == "film":  # --film looks a shipped film up first, so a preset file cannot replace one
-            films = shipped_films()
-            ids = {f.id for f in films}
-            listed = [(f, "shipped", FILMS_ORIGIN) for f in films] + [x for x in listed if x[0].id not in ids]
-        for preset, tier, origin in listed:
-            text = " ".join([preset.id, preset.name, *preset.aliases]).lower()
-            if needle and needle not in text:
-                continue
-            rows.append({"kind": each, "id": preset.id, "name": preset.name, "summary": summary(preset),
-                         "tier": tier, "origin": origin})
+    rows = [row._asdict() for row in plan.list_presets(database=_database(ctx, preset_files), kind=kind, search=search)]
     emit(Output(rows, LIST_COLUMNS, LIST_KEYS, f"{len(rows)} preset{'' if len(rows) == 1 else 's'}"), fmt, "metric")
-
-
-def describe(db: Any, preset: Any) -> dict[str, Any]:
-    """Every field of a preset, its derived values and, for a prescription, its first-order data."""
-    fields: dict[str, Any] = {"kind": type(preset).__name__.lower()}
-    for item in dataclasses.fields(preset):
-        value = getattr(preset, item.name)
-        if dataclasses.is_dataclass(value):
-            value = getattr(value, "id", value)  # a referenced preset (a camera's sensor, a scene's lens)
-        elif isinstance(value, tuple):
-            value = list(value)
-        if item.name not in ("data", "prescription", "optics"):
-            fields[item.name] = value
-    for derived in ("diagonal_mm", "crop_factor", "aspect_ratio", "pixel_pitch_mm", "megapixels"):
-        if hasattr(preset, derived):
-            fields[derived] = getattr(preset, derived)
-    lens = getattr(preset, "optics", None) if fields["kind"] == "prescription" else getattr(preset, "prescription", None)
-    if lens is not None:
-        fields.update(first_order_fields(lens))
-    return fields
-
-
-def first_order_fields(lens: Any) -> dict[str, Any]:
-    """The paraxial first-order data of a prescription, as preset fields (positions from the first vertex)."""
-    from camtool.optics.paraxial import first_order
-
-    data = first_order(lens)
-    return {
-        "efl_mm": data.efl_mm, "back_focal_distance_mm": data.bfd_mm,
-        "front_principal_plane_mm": data.z_h_mm, "rear_principal_plane_mm": data.z_h_prime_mm,
-        "entrance_pupil_mm": data.z_e_mm, "exit_pupil_mm": data.z_x_mm,
-        "pupil_magnification_paraxial": data.pupil_magnification, "hiatus_paraxial_mm": data.hiatus_mm,
-    }
 
 
 @presets.command("show")
@@ -170,49 +89,18 @@ def show(ctx: click.Context, name: str, kind: str | None, fmt: str, preset_files
     """
     from camtool.presets import PresetNotFound
 
-    db = _database(ctx, preset_files)
-    film = _shipped_film(name) if kind in (None, "film") else None
     try:
-        if film is not None:
-            preset = film
-        elif kind:
-            preset = db.get(kind, name)
-        else:
-            found = db.find(name)
-            if not found:
-                close = [c for k in KINDS for c in db.suggestions(k, name)][:3]
-                hint = f"; did you mean {', '.join(close)}?" if close else ""
-                raise click.BadParameter(f"no preset is named {name!r}{hint}", ctx=ctx, param_hint="'NAME'")
-            preset = found[0]
+        shown = plan.show_preset(database=_database(ctx, preset_files), name=name, kind=kind)
     except PresetNotFound as error:
         raise click.BadParameter(str(error), ctx=ctx, param_hint="'NAME'") from None
-    if film is not None:
-        fields: dict[str, Any] = {"kind": "film", **film._asdict(), "tier": "shipped", "origin": FILMS_ORIGIN}
-        fields["points"] = [list(point) for point in film.points] or None  # (metered s, extra stops)
-        fields["aliases"] = list(film.aliases)
-        origin = FILMS_ORIGIN
-    else:
-        fields = describe(db, preset)
-        origin = preset.origin
-    if fmt == "table":
-        if fields["kind"] == "film" and fields.get("points"):
-            fields["points"] = ", ".join(f"{t:g} s +{stops:.2g} EV" for t, stops in fields["points"])
-        rows = [{"key": key, "value": _show_value(value)} for key, value in fields.items() if value is not None]
-        emit(Output(rows, SHOW_COLUMNS, ["key", "value"], f"{fields['kind']} {preset.id} from {origin}"),
-             fmt, "metric")
-    else:
+    fields = shown.fields
+    if fmt != "table":
         emit(Output([fields], SHOW_COLUMNS, list(fields)), fmt, "metric")
-
-
-def _shipped_film(name: str) -> Any:
-    """The shipped film of this name (id, name or alias, as --film reads it), or None."""
-    from camtool.core.errors import DomainError
-    from camtool.exposure.reciprocity import find_film
-
-    try:
-        return find_film(name)
-    except DomainError:
-        return None
+        return
+    if shown.kind == "film" and fields.get("points"):
+        fields["points"] = ", ".join(f"{t:g} s +{stops:.2g} EV" for t, stops in fields["points"])
+    rows = [{"key": key, "value": _show_value(value)} for key, value in fields.items() if value is not None]
+    emit(Output(rows, SHOW_COLUMNS, ["key", "value"], f"{shown.kind} {shown.id} from {shown.origin}"), fmt, "metric")
 
 
 def _show_value(value: Any) -> str:
