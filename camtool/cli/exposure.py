@@ -108,15 +108,6 @@ def single(ctx: click.Context, values: Any, default: float | None = None) -> Any
     return flat[0]
 
 
-def _settings_error(ctx: click.Context, error: Any) -> click.UsageError:
-    """A :class:`SettingsError` as a usage error, each parameter shown as the option the user types."""
-    names = {}
-    for name in error.names:
-        param = param_named(ctx, name)
-        names[name] = param.opts[0] if param is not None and param.opts else name
-    return click.UsageError(error.template.format(**names), ctx)
-
-
 # No --batch: a row of this command is a choice among light sources and solved settings, not a grid point.
 @camtool_command("exposure", keys=KEYS, batch=False)
 @click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
@@ -198,7 +189,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
       camtool exposure --illuminance 37fc -N 4 --iso 400
       camtool exposure --lens cooke-s4i-50mm-t2 --ev100 12
     """
-    from camtool.exposure.calculator import KEYS, SettingsError, work_out
+    from camtool.exposure.calculator import KEYS, work_out
     from camtool.exposure.timefmt import format_time
 
     apertures = flatten(f_number)
@@ -223,17 +214,14 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
     count, columns = combine_params(ctx, *given.values()) if given else (1, ())
     value = dict(zip(given, columns))
     with library_errors(ctx):
-        try:
-            answer = work_out(
-                **value, light=light, meter_k=meter_k[0], meter_c=meter_c[0], nd=nd,
-                magnification=magnification[0] if magnification else 0.0,
-                pupil_magnification=pupil_magnification[0], film=film_data,
-                reciprocity_p=reciprocity_p[0] if reciprocity_p else None,
-                new_iso=new_iso[0] if new_iso else None,
-                new_f_number=float(new_f_number[0]) if new_f_number else None,
-                solve=solve.replace("-", "_"), t_stop=t_stop, step=step, equivalents=equivalents, count=count)
-        except SettingsError as error:
-            raise _settings_error(ctx, error) from None
+        answer = work_out(
+            **value, light=light, meter_k=meter_k[0], meter_c=meter_c[0], nd=nd,
+            magnification=magnification[0] if magnification else 0.0,
+            pupil_magnification=pupil_magnification[0], film=film_data,
+            reciprocity_p=reciprocity_p[0] if reciprocity_p else None,
+            new_iso=new_iso[0] if new_iso else None,
+            new_f_number=float(new_f_number[0]) if new_f_number else None,
+            solve=solve.replace("-", "_"), t_stop=t_stop, step=step, equivalents=equivalents, count=count)
     rows = rows_from(answer.rows, answer.values)
     mark = "T" if t_stop else "f/"
     if answer.mode == "equivalents":

@@ -14,7 +14,7 @@ from typing import Any
 import click
 
 from camtool.cli.equipment import LENS
-from camtool.cli.options import param_named, stack
+from camtool.cli.options import library_errors, stack
 from camtool.core.units import UnitError, parse_length
 from camtool.dof.ladder import LensData
 from camtool.plans import equipment
@@ -147,46 +147,8 @@ model_options = stack(
 """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
 
 
-def ladder_errors(ctx: click.Context) -> Any:
-    """Library errors of the ladder as one-line click errors: unavailable models on ``--model``."""
-    import contextlib
-    import sys
-
-    from camtool.core.errors import DomainError
-    from camtool.dof.ladder import ModelUnavailable
-
-    @contextlib.contextmanager
-    def translate() -> Any:
-        try:
-            yield
-        except ModelUnavailable as error:
-            raise click.BadParameter(f"{error.model} is not available here: it needs {_missing(ctx, error)}",
-                                     ctx=ctx, param=param_named(ctx, "model")) from None
-        except DomainError as error:
-            if error.param not in _LENS_PARAMS:
-                raise
-            from camtool.cli.options import bad_parameter
-
-            raise bad_parameter(ctx, error) from None
-        except ValueError as error:
-            raytrace = sys.modules.get("camtool.optics.tracer")  # numpy only where a ray trace ran
-            if raytrace is not None and isinstance(error, raytrace.RayTraceError):
-                raise click.ClickException(str(error)) from None
-            raise
-
-    return translate()
-
-
-def _missing(ctx: click.Context, error: Any) -> str:
-    """What an unavailable model needs, with only the options this command has."""
-    from camtool.dof.ladder import either
-
-    options = {opt for param in ctx.command.params for opt in (*param.opts, *param.secondary_opts)}
-    sources = [text for text in error.supplied_by if any(word in options for word in text.split())]
-    return f"{error.needs} ({either(sources)})" if sources else error.missing
-
-
-_LENS_PARAMS = frozenset({"pupil_magnification", "hiatus_mm", "wavelength_nm"})
+ladder_errors = library_errors
+"""The ladder's errors (an unavailable model, a ray trace that fails) have the one translator."""
 
 
 def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,

@@ -10,6 +10,7 @@ circle of confusion (``--coc``, ``--coc-rule``).
 from __future__ import annotations
 
 import contextlib
+import sys
 from collections.abc import Callable, Iterator
 from typing import Any, TypeVar
 
@@ -46,8 +47,24 @@ PARAM_FOR = {
     "prescription": "prescription_file",
     "background_mm": "background",
     "foreground_mm": "foreground",
+    "tilt_deg": "tilt",
+    "swing_deg": "swing",
+    "hinge_mm": "hinge",
+    "focus_mm": "distance",
+    "image_distance_mm": "image_distance",
+    "film_mm": "image_distance",
+    "at_mm": "at",
+    "half_depth_mm": "half_depth",
 }
 SHOWN_IN_METRES = {"distance", "near", "far", "background", "foreground"}
+ALWAYS_IN_METRES = {"at"}
+"""Options whose out-of-range lengths are always shown in metres, with no detail."""
+ON_THE_OPTION = {"tilt"}
+"""Commands whose range errors always name the option the parameter stands for (no partner, no derived blame)."""
+UNTYPED_STANDS_FOR = {("tilt", "coc"): "f_number"}
+"""(command, option) -> the option blamed when the first was not typed (tilt: a CoC it chose from the f-number)."""
+NEEDS = {"a lens prescription": "--prescription (or a --lens with one)"}
+"""What a model needs, as options, when the library names no option that supplies it."""
 
 
 def stack(*decorators: Callable[[F], F]) -> Callable[[F], F]:
@@ -112,26 +129,74 @@ coc_options = stack(
 
 @contextlib.contextmanager
 def library_errors(ctx: click.Context) -> Iterator[None]:
-    """Turn a :class:`DomainError` from the formula core into a ``BadParameter`` on the right option."""
+    """Turn a library error on an input into one click error on the option the user typed (:func:`bad_parameter`).
+
+    Range errors, refused combinations, a model the inputs do not allow and a
+    ray trace that fails; any other error passes through.
+    """
     try:
         yield
-    except DomainError as error:
+    except ValueError as error:
+        if not isinstance(error, DomainError | InputError) and not any(
+                _is(error, module, name) for module, name in _TRANSLATED):
+            raise
         raise bad_parameter(ctx, error) from None
 
 
-def bad_parameter(ctx: click.Context, error: DomainError | InputError) -> click.ClickException:
+_TRANSLATED = (("camtool.exposure.calculator", "SettingsError"), ("camtool.plans.tilt", "TiltError"),
+               ("camtool.dof.ladder", "ModelUnavailable"), ("camtool.optics.tracer", "RayTraceError"))
+"""Library errors the translator knows besides DomainError and InputError (each module loaded only where used)."""
+
+
+def _is(error: Exception, module: str, name: str) -> bool:
+    cls = getattr(sys.modules.get(module), name, None)
+    return cls is not None and isinstance(error, cls)
+
+
+def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
     """The one translation of a library error on an input into a click error naming an option the user typed.
 
-    An :class:`InputError` has its inputs spelled as this command's options
-    (``{focal_length}`` as ``-f``); a :class:`DomainError` is placed on the
-    option its parameter stands for (or the typed one it meets, or the one
-    that drives a derived value).
+    An :class:`InputError` or a ``SettingsError`` has its inputs spelled as
+    this command's options (``{focal_length}`` as ``-f``); a
+    :class:`DomainError` is placed on the option its parameter stands for
+    (or the typed one it meets, or the one that drives a derived value); an
+    unavailable model on ``--model``; a ray trace that fails on the
+    ``--prescription`` typed (exit 2), else as a runtime failure (exit 1).
     """
+    known: Any = error
+    if _is(error, "camtool.exposure.calculator", "SettingsError"):
+        shown = {n: p.opts[0] if (p := param_named(ctx, PARAM_FOR.get(n, n))) is not None and p.opts else n
+                 for n in known.names}
+        return click.UsageError(known.template.format(**shown), ctx)
+    if _is(error, "camtool.plans.tilt", "TiltError"):
+        param = param_named(ctx, PARAM_FOR.get(known.param, known.param))
+        if _is(error, "camtool.plans.tilt", "BeyondLensRange"):
+            return click.BadParameter(f"{known.tilt_deg:.3g}° is outside the valid range of --lens {known.lens_id}: "
+                                      f"±{known.limit_deg:g}°", ctx=ctx, param=param)
+        return click.BadParameter(known.reason, ctx=ctx, param=param)
+    if _is(error, "camtool.dof.ladder", "ModelUnavailable"):
+        return click.BadParameter(f"{known.model} is not available here: it needs {_needs(ctx, known)}", ctx=ctx,
+                                  param=param_named(ctx, "model"))
+    if not isinstance(error, DomainError | InputError):  # a ray trace that failed
+        prescription = param_named(ctx, "prescription_file")
+        if prescription is not None and _typed_by_user(ctx, prescription):
+            return click.BadParameter(str(error), ctx=ctx, param=prescription)
+        return click.ClickException(str(error))
     if isinstance(error, InputError):
         text = error.render(lambda name: _spelling(ctx, PARAM_FOR.get(str(name), str(name))))
         if error.usage:
             return click.UsageError(text, ctx)
         return click.BadParameter(text, ctx=ctx, param=param_named(ctx, PARAM_FOR.get(error.param, error.param)))
+    if ctx.command.name in ON_THE_OPTION:
+        name = PARAM_FOR.get(error.param, error.param)
+        name = name if param_named(ctx, name) is not None else error.param
+        if not ctx.params.get(name):
+            name = UNTYPED_STANDS_FOR.get((ctx.command.name, name), name)
+        message = domain_message(error, name)
+        if name in ALWAYS_IN_METRES:
+            message = (f"{error.value / 1000:.4g} m is outside the valid range: "
+                       + error.valid.replace("{limit}", f"{error.limit / 1000:.4g} m"))
+        return click.BadParameter(message, ctx=ctx, param=param_named(ctx, name))
     name = PARAM_FOR.get(error.param, error.param)
     param = param_named(ctx, name) or param_named(ctx, error.param)
     if param is not None:
@@ -169,6 +234,15 @@ BLAME_ORDER = ("magnification", "fill", "subject_size", "f_number", "focal_lengt
 _DERIVED = {"distance_mm": "a distance", "near_mm": "a near limit", "far_mm": "a far limit",
             "magnification": "a magnification", "coc_mm": "a CoC", "focal_length_mm": "a focal length",
             "f_number": "an f-number"}
+
+
+def _needs(ctx: click.Context, error: Any) -> str:
+    """What an unavailable model needs, with only the options this command has."""
+    from camtool.dof.ladder import either
+
+    options = {opt for param in ctx.command.params for opt in (*param.opts, *param.secondary_opts)}
+    sources = [text for text in error.supplied_by if any(word in options for word in text.split())]
+    return f"{error.needs} ({either(sources)})" if sources else NEEDS.get(error.missing, error.missing)
 
 
 _PARTNERS = {"hiatus": ("pupil_mag", "focal_length", "distance"), "pupil_mag": ("hiatus", "focal_length")}

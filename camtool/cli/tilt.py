@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-import contextlib
 import math
-import sys
-from collections.abc import Iterator
 from typing import Any
 
 import click
@@ -20,13 +17,12 @@ from camtool.cli.options import (
     aperture_options,
     coc_options,
     distance_plane_option,
-    domain_message,
     focal_option,
+    library_errors,
     param_named,
     sensor_options,
 )
 from camtool.cli.params import flatten
-from camtool.core.errors import DomainError
 from camtool.core.units import UnitError, parse_length
 from camtool.plans.tilt import KEYS
 from camtool.render.columns import ANGLE, FNUMBER, SMALL, TEXT, Column
@@ -162,7 +158,7 @@ def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, h
 
     question = {"tilt_deg": flatten(tilt), "swing_deg": flatten(swing), "hinge_mm": flatten(hinge), "points": points,
                 "focus_mm": flatten(distance), "image_distance_mm": flatten(image_distance), "hyperfocal": hyperfocal}
-    with _errors(ctx):  # in this order: the movement and focus, each option's value, the wedge, the lens, equipment
+    with library_errors(ctx):  # in this order: the movement and focus, each option's value, the wedge, the lens, equipment
         plan.check_question(**question)
         question.update(at_mm=_single(ctx, at, "at"), half_depth_mm=_single(ctx, half_depth, "half_depth"),
                         optimum=optimum)
@@ -193,48 +189,3 @@ def _single(ctx: click.Context, values: Any, name: str) -> float | None:
     if flat and math.isinf(flat[0]):
         raise click.BadParameter("inf is outside the valid range: a finite distance", ctx=ctx, param=param_named(ctx, name))
     return flat[0] if flat else None
-
-
-# library parameter -> option, where the names differ
-_OPTION = {"tilt_deg": "tilt", "swing_deg": "swing", "hinge_mm": "hinge", "focus_mm": "distance",
-           "image_distance_mm": "image_distance", "film_mm": "image_distance", "at_mm": "at",
-           "half_depth_mm": "half_depth", "pupil_magnification": "pupil_mag", "hiatus_mm": "hiatus", "coc_mm": "coc",
-           "distance_mm": "distance", "focal_length_mm": "focal_length"}
-
-
-@contextlib.contextmanager
-def _errors(ctx: click.Context) -> Iterator[None]:
-    """The plan's errors on the options the user typed."""
-    from camtool.dof.ladder import ModelUnavailable
-    from camtool.plans.tilt import BeyondLensRange, SettingsError, TiltError
-
-    def option(name: str) -> click.Parameter | None:
-        return param_named(ctx, _OPTION.get(name, name))
-
-    try:
-        yield
-    except SettingsError as error:
-        shown = {n: next(iter(p.opts)) if (p := option(n)) is not None else n for n in error.names}
-        raise click.UsageError(error.template.format(**shown), ctx) from None
-    except BeyondLensRange as error:
-        raise click.BadParameter(f"{error.tilt_deg:.3g}° is outside the valid range of --lens {error.lens_id}: "
-                                 f"±{error.limit_deg:g}°", ctx=ctx, param=option(error.param)) from None
-    except TiltError as error:
-        raise click.BadParameter(error.reason, ctx=ctx, param=option(error.param)) from None
-    except ModelUnavailable as error:
-        raise click.BadParameter(f"{error.model} is not available here: it needs --prescription (or a --lens with "
-                                 "one)", ctx=ctx, param=param_named(ctx, "model")) from None
-    except DomainError as error:
-        name = _OPTION.get(error.param, error.param)
-        if name == "coc" and not ctx.params.get("coc"):
-            name = "f_number"  # a CoC the command chose: the f-number (the exit pupil) is what the user typed
-        message = domain_message(error, name)
-        if error.param == "at_mm":
-            message = (f"{error.value / 1000:.4g} m is outside the valid range: "
-                       + error.valid.replace("{limit}", f"{error.limit / 1000:.4g} m"))
-        raise click.BadParameter(message, ctx=ctx, param=param_named(ctx, name)) from None
-    except ValueError as error:
-        tracer = sys.modules.get("camtool.optics.tracer")  # loaded only where a ray trace ran
-        if tracer is not None and isinstance(error, tracer.RayTraceError):
-            raise click.ClickException(str(error)) from None
-        raise
