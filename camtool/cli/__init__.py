@@ -8,10 +8,8 @@ not for rich, numpy or the other commands.
 from __future__ import annotations
 
 import contextlib
-import errno
 import importlib
 import importlib.util
-import io
 import os
 import sys
 from typing import Any
@@ -20,6 +18,7 @@ import click
 
 from camtool import __version__
 from camtool.core.errors import FileError
+from camtool.render import terminal
 
 COMMANDS = {
     "fov": "camtool.cli.fov",
@@ -82,18 +81,18 @@ class CamtoolGroup(click.Group):
         """
         extra.pop("standalone_mode", None)
         if sys.stdout is None:
-            sys.stdout = _ClosedOutput()
-        _degrade_to_ascii()
+            sys.stdout = terminal.ClosedOutput()
+        terminal.degrade_to_ascii()
         try:
             code = super().main(args=args, prog_name=prog_name or "camtool", standalone_mode=False, **extra)
-            _flush_stdout()
+            sys.stdout.flush()
         except Interrupted:
-            _interrupted()
+            terminal.interrupted()
         except click.exceptions.Abort:
             click.echo("Aborted!", err=True)
             sys.exit(1)
         except click.ClickException as error:
-            _flush_stdout()
+            sys.stdout.flush()
             click.echo(f"Error: {_shown(_hinted(error, args))}", err=True)
             sys.exit(error.exit_code)
         except FileError as error:  # a file found wrong only when a preset is used
@@ -112,17 +111,6 @@ class Interrupted(BaseException):
 
 def _on_sigint(signum: int, frame: Any) -> None:
     raise Interrupted()
-
-
-def _interrupted() -> None:
-    """Ctrl-C: one line and exit 130 (128 + SIGINT), as shells expect, wherever it landed."""
-    _discard_stdout()
-    try:
-        sys.stderr.write("camtool: interrupted\n")
-        sys.stderr.flush()
-    except (OSError, ValueError):
-        pass
-    os._exit(130)
 
 
 def _shown(message: str) -> str:
@@ -172,82 +160,20 @@ def _hinted(error: click.ClickException, args: Any) -> str:
     return message
 
 
+def _output_failed(error: OSError) -> None:
+    """Exit after a write error: 0 for a reader that went away, else a one-line error and 1."""
+    code, line = terminal.write_failure(error)
+    if line is not None:
+        click.echo(line, err=True)
+    sys.exit(code)
+
+
 class _WriteFailed(Exception):
     """An OSError from a command (a closed pipe, a full disk), carried past click's own handling."""
 
     def __init__(self, error: OSError) -> None:
         super().__init__(str(error))
         self.error = error
-
-
-class _ClosedOutput(io.StringIO):
-    """Standard output when it is closed (``camtool ... >&-``): writing to it is an error, not a traceback."""
-
-    def write(self, text: str) -> int:
-        if text:
-            raise OSError(errno.EBADF, "standard output is closed")
-        return 0
-
-
-def _flush_stdout() -> None:
-    sys.stdout.flush()
-
-
-def _output_failed(error: OSError) -> None:
-    """Exit after a write error: 0 for a reader that went away, else a one-line error and 1."""
-    if isinstance(error, BrokenPipeError) or error.errno == errno.EPIPE:
-        _quiet_broken_pipe()
-        sys.exit(0)
-    _discard_stdout()
-    if error.filename is None:
-        reason = error.strerror or str(error)
-        click.echo(f"Error: cannot write the output: {reason[:1].lower() + reason[1:]}", err=True)
-    else:
-        click.echo(f"Error: {error.filename}: {error.strerror or error}", err=True)
-    sys.exit(1)
-
-
-def _quiet_broken_pipe() -> None:
-    # The reader (head -1) has gone: send the rest of our output nowhere so the
-    # interpreter's final flush does not raise again.
-    _discard_stdout()
-
-
-def _discard_stdout() -> None:
-    if isinstance(sys.stdout, _ClosedOutput):
-        return
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError, AttributeError):
-        sys.stdout = None
-
-
-# What a terminal or pipe that only takes ASCII gets instead of camtool's few non-ASCII characters.
-ASCII = {"∞": "inf", "·": "-", "━": "=", "┃": "|", "▶": ">", "─": "-", "≤": "<=", "≥": ">=", "±": "+/-",
-         "×": "x", "°": "deg", "µ": "u", "–": "-", "—": "-", "…": "...", "²": "^2", "√": "sqrt", "≈": "~",
-         "→": "->", "⁰": "^0", "¹": "^1", "³": "^3", "⁶": "^6", "⁷": "^7"}
-
-
-def _ascii_fallback(error: UnicodeError) -> tuple[str, int]:
-    assert isinstance(error, UnicodeEncodeError)
-    text = error.object[error.start:error.end]
-    return "".join(ASCII.get(char, "?") for char in text), error.end
-
-
-def _degrade_to_ascii() -> None:
-    """Give an ASCII-only stdout/stderr (``PYTHONIOENCODING=ascii``, LANG=C) ASCII stand-ins, not a traceback."""
-    for stream in (sys.stdout, sys.stderr):
-        encoding = getattr(stream, "encoding", None) or "utf-8"
-        try:
-            "∞━·".encode(encoding)
-        except (UnicodeEncodeError, LookupError):
-            import codecs
-
-            codecs.register_error("camtool-ascii", _ascii_fallback)
-            reconfigure = getattr(stream, "reconfigure", None)
-            if reconfigure is not None:
-                reconfigure(errors="camtool-ascii")
 
 
 @click.group(cls=CamtoolGroup, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
@@ -275,6 +201,6 @@ def main() -> None:
     try:
         cli.main()
     except Interrupted:
-        _interrupted()
+        terminal.interrupted()
     except OSError as error:
         _output_failed(error)
