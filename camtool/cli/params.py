@@ -164,6 +164,52 @@ class NumberType(_ListType):
         return self.low <= value <= self.high
 
 
+TILT_MAX = 89.0
+
+
+class AngleType(click.ParamType):
+    """Angles in degrees: ``3``, ``3deg``, ``3°``, ``-2.5``; comma-separated lists; |θ| < 89°."""
+
+    name = "angle"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
+        if isinstance(value, list):
+            return value
+        out = []
+        for item in str(value).split(","):
+            text = item.strip().lower().replace("°", "").replace("degrees", "").replace("deg", "").strip()
+            try:
+                number = float(text)
+            except ValueError:
+                self.fail(f"{item.strip()!r} is not an angle (examples: 3, 3deg, 3°, -2.5)", param, ctx)
+            if not (abs(number) <= TILT_MAX and math.isfinite(number)):
+                self.fail(f"{item.strip()} is outside the valid range: -{TILT_MAX:g}° to {TILT_MAX:g}°", param, ctx)
+            out.append(number)
+        return out
+
+
+class PointType(click.ParamType):
+    """A point of the scene, ``DIST@HEIGHT``: distance along the line of sight, height above the lens (metres)."""
+
+    name = "DIST@HEIGHT"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, float]:
+        if isinstance(value, tuple):
+            return value
+        text = str(value).strip()
+        if text.count("@") != 1:
+            self.fail(f"{text!r} is not a point: write DIST@HEIGHT, e.g. 3m@-1.6m (1.6 m below the lens)", param, ctx)
+        left, right = (part.strip() for part in text.split("@"))
+        try:
+            distance = parse_length(left, "m")
+            height = (-1.0 if right.startswith("-") else 1.0) * parse_length(right.lstrip("+-") or "x", "m")
+        except UnitError as error:
+            self.fail(f"{text}: {error}", param, ctx)
+        if not (distance > 0 and math.isfinite(distance) and math.isfinite(height)):
+            self.fail(f"{text} is outside the valid range: a finite distance > 0 and a finite height", param, ctx)
+        return distance, height
+
+
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
     """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]

@@ -22,8 +22,7 @@ from camtool.cli.options import (
     param_named,
     sensor_options,
 )
-from camtool.cli.params import flatten
-from camtool.core.units import UnitError, parse_length
+from camtool.cli.params import AngleType, PointType, flatten
 from camtool.plans.tilt import KEYS
 from camtool.render.columns import ANGLE, FNUMBER, SMALL, TEXT, Column
 
@@ -35,52 +34,6 @@ AT_COLUMNS = [Column("at_mm", "at"), Column("above_mm", "above"), Column("below_
 NEED_COLUMNS = [Column("half_depth_mm", "± wanted"), Column("f_number_needed", "needs", FNUMBER)]
 OPTIMUM_COLUMNS = [Column("f_number_optimum", "optimum", FNUMBER), Column("blur_optimum_mm", "blur there", SMALL)]
 MODEL_COLUMN = Column("model", "model", TEXT)
-
-TILT_MAX = 89.0
-
-
-class AngleType(click.ParamType):
-    """Angles in degrees: ``3``, ``3deg``, ``3°``, ``-2.5``; comma-separated lists; |θ| < 89°."""
-
-    name = "angle"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
-        if isinstance(value, list):
-            return value
-        out = []
-        for item in str(value).split(","):
-            text = item.strip().lower().replace("°", "").replace("degrees", "").replace("deg", "").strip()
-            try:
-                number = float(text)
-            except ValueError:
-                self.fail(f"{item.strip()!r} is not an angle (examples: 3, 3deg, 3°, -2.5)", param, ctx)
-            if not (abs(number) <= TILT_MAX and math.isfinite(number)):
-                self.fail(f"{item.strip()} is outside the valid range: -{TILT_MAX:g}° to {TILT_MAX:g}°", param, ctx)
-            out.append(number)
-        return out
-
-
-class PointType(click.ParamType):
-    """A point of the scene, ``DIST@HEIGHT``: distance along the line of sight, height above the lens (metres)."""
-
-    name = "DIST@HEIGHT"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, float]:
-        if isinstance(value, tuple):
-            return value
-        text = str(value).strip()
-        if text.count("@") != 1:
-            self.fail(f"{text!r} is not a point: write DIST@HEIGHT, e.g. 3m@-1.6m (1.6 m below the lens)", param, ctx)
-        left, right = (part.strip() for part in text.split("@"))
-        try:
-            distance = parse_length(left, "m")
-            height = (-1.0 if right.startswith("-") else 1.0) * parse_length(right.lstrip("+-") or "x", "m")
-        except UnitError as error:
-            self.fail(f"{text}: {error}", param, ctx)
-        if not (distance > 0 and math.isfinite(distance) and math.isfinite(height)):
-            self.fail(f"{text} is outside the valid range: a finite distance > 0 and a finite height", param, ctx)
-        return distance, height
-
 
 @camtool_command("tilt", keys=KEYS, batch=False)
 @focal_option
