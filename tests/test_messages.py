@@ -106,3 +106,9 @@ def test_a_hinge_no_tilt_reaches_names_the_hinge_that_was_typed() -> None:
     # J = f/sin θ (Merklinger): a hinge at the focal length needs θ = 90°, which no lens tilts
     message = _one_line_error(run("tilt", "-f", "24", "-N", "8", "--hinge", "24mm", "-s", "3"))
     assert "'--hinge'" in message and "'--tilt'" not in message
+
+
+@pytest.mark.parametrize(("args", "option"), [(["--to-crop", "0"], "'--to-crop'"), (["--to-sensor", "nosuch"], "'--to-sensor'")])
+def test_equiv_names_the_target_option_typed_not_the_source_one(args: list[str], option: str) -> None:
+    message = _one_line_error(run("equiv", "-f", "25", "-N", "1.4", "--sensor", "m43", *args))
+    assert option in message and "'--crop'" not in message and "'--sensor'" not in message

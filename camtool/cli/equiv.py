@@ -82,9 +82,18 @@ def equiv(ctx: click.Context, focal_length, f_number, iso, sensor, crop, to_sens
 
 
 def _target(ctx: click.Context, to_sensor: str | None, to_crop: float | None, files: tuple[str, ...]):
-    saved = ctx.meta.get("camtool.camera")
-    ctx.meta["camtool.camera"] = None  # the camera preset is the source format, not the target
-    try:
-        return resolve_sensor(ctx, to_sensor, to_crop, files)
-    finally:
-        ctx.meta["camtool.camera"] = saved
+    """The other format: ``--to-sensor`` or ``--to-crop``, resolved as a sensor is (a camera is the source's)."""
+    from camtool.cli.equipment import input_errors, open_presets
+    from camtool.core.errors import DomainError, InputError
+    from camtool.plans import equipment
+    from camtool.presets import PresetNotFound
+
+    renamed = {"sensor": "to_sensor", "crop": "to_crop", "lens": "to_sensor"}
+    with input_errors(ctx, files):
+        try:
+            return equipment.resolve_sensor(sensor=to_sensor, crop=to_crop, database=lambda: open_presets(ctx, files))
+        except (DomainError, InputError, PresetNotFound) as error:
+            error.param = renamed.get(error.param, error.param)
+            if isinstance(error, InputError):
+                error.template = error.template.replace("{sensor}", "{to_sensor}").replace("{crop}", "{to_crop}")
+            raise
