@@ -57,6 +57,8 @@ from camtool.exposure.stars import StarLimits
 from camtool.geometry.compose import Composition
 from camtool.geometry.fov import FieldOfView
 from camtool.geometry.thinlens import FocusGeometry
+from camtool.plans.photo import PhotoAnswer
+from camtool.plans.tilt import TiltAnswer
 
 __all__ = [
     "Composition",
@@ -70,7 +72,9 @@ __all__ = [
     "FocusPlan",
     "HyperfocalDistance",
     "LensData",
+    "PhotoAnswer",
     "StarLimits",
+    "TiltAnswer",
     "circle_of_confusion",
     "composition",
     "depth_of_field",
@@ -81,10 +85,12 @@ __all__ = [
     "focus_for_limits",
     "focus_for_magnification",
     "hyperfocal_distance",
+    "photo",
     "plan_exposure",
     "preset",
     "preset_names",
     "star_trail_limits",
+    "tilt",
 ]
 
 @dataclass(frozen=True)
@@ -116,6 +122,8 @@ class _Kind:
             text = "a string"
         elif self.what == "flag":
             text = "True or False"
+        elif self.what == "points":
+            text = "two (distance_mm, height_mm) pairs"
         else:
             text = "a camtool.optics.prescription.Prescription"
         return text + (", or None" if self.optional else "")
@@ -167,6 +175,22 @@ Diagonal = Annotated[Any, _Kind("number", bounds=(0.5, 2000.0 * math.sqrt(2.0)),
 DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
 Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
 Text = Annotated[str, _Kind("text")]
+OptionalAngle = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(-89.9, 89.9), unit="°",
+                                     zero_ok=True)]
+OptionalDistance = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=DISTANCE_MM, unit="mm")]
+OptionalDistanceOrInf = Annotated[Any, _Kind("number", scalar=True, optional=True, allow_inf=True,
+                                             bounds=DISTANCE_MM, unit="mm")]
+OptionalCoC = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=COC_MM, unit="mm")]
+OptionalRealFNumber = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=F_NUMBER)]
+RealFocalLength = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=FOCAL_LENGTH_MM, unit="mm")]
+RealCoC = Annotated[float, _Kind("number", scalar=True, bounds=COC_MM, unit="mm")]
+Points = Annotated[Any, _Kind("points", optional=True)]
+TiltModel = Annotated[str, _Kind("choice", choices=("auto", "thin", "thick", "raytrace", "all"))]
+Along = Annotated[str, _Kind("choice", choices=("sight", "axis"))]
+AnglesFrom = Annotated[str, _Kind("choice", choices=("film", "lens", "horizon"))]
+HingeFrom = Annotated[str, _Kind("choice", choices=("lens", "pupil"))]
+OptionalRule = Annotated[Any, _Kind("text", optional=True)]
+OptionalSensorSide = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=SENSOR_SIDE_MM, unit="mm")]
 OptionalText = Annotated[Any, _Kind("text", optional=True)]
 OptionalPrescription = Annotated[Any, _Kind("prescription", optional=True)]
 
@@ -289,6 +313,8 @@ def _check(name: str, value: Any, kind: _Kind) -> Any:
     elif kind.what == "text":
         if not isinstance(value, str):
             raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
+    elif kind.what == "points":
+        return _check_points(name, value)
     elif kind.what == "flag":
         numpy = sys.modules.get("numpy")
         if not (isinstance(value, bool) or (numpy is not None and isinstance(value, numpy.bool_))):
@@ -299,6 +325,19 @@ def _check(name: str, value: Any, kind: _Kind) -> Any:
         if not isinstance(value, Prescription):
             raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
     return value
+
+
+def _check_points(name: str, value: Any) -> tuple[tuple[float, float], ...]:
+    """Two (distance_mm, height_mm) pairs, each a finite number (a distance > 0), as a tuple of float pairs."""
+    valid = "two (distance_mm, height_mm) pairs of finite numbers, distances > 0"
+    try:
+        pairs = tuple((float(d), float(h)) for d, h in value)
+    except (TypeError, ValueError, OverflowError):
+        raise DomainError(name, _shown(value), valid) from None
+    if len(pairs) != 2 or any(isinstance(x, bool) for pair in value for x in pair) or not all(
+            math.isfinite(d) and math.isfinite(h) and d > 0 for d, h in pairs):
+        raise DomainError(name, _shown(value), valid)
+    return pairs
 
 
 def _shown(value: Any) -> Any:
@@ -752,3 +791,99 @@ def preset_names(kind: Annotated[str, _Kind("choice", choices=PRESET_KINDS)]) ->
     from camtool.presets import load_db
 
     return load_db().names(kind)
+
+
+@_checked
+def tilt(
+    focal_length_mm: RealFocalLength,
+    f_number: OptionalRealFNumber,
+    coc_mm: RealCoC,
+    *,
+    tilt_deg: OptionalAngle = None,
+    swing_deg: OptionalAngle = None,
+    hinge_mm: OptionalDistance = None,
+    points: Points = None,
+    focus_mm: OptionalDistanceOrInf = None,
+    image_distance_mm: OptionalDistance = None,
+    hyperfocal: Flag = False,
+    at_mm: OptionalDistance = None,
+    half_depth_mm: OptionalDistance = None,
+    optimum: Flag = False,
+    model: TiltModel = "auto",
+    along: Along = "sight",
+    angles_from: AnglesFrom = "film",
+    hinge_from: HingeFrom = "lens",
+    distance_from: DistanceFrom = "sensor",
+    sensor_height_mm: SensorSideReal = 24.0,
+    pupil_magnification: OptionalPupilMagnification = None,
+    hiatus_mm: OptionalReal = None,
+    prescription: OptionalPrescription = None,
+) -> TiltAnswer:
+    """Tilt or swing, as ``camtool tilt``: the hinge, the plane of sharp focus and the depth-of-field wedge.
+
+    One of ``tilt_deg``, ``swing_deg``, ``hinge_mm`` or two ``points`` ((distance, height) in mm) sets the
+    movement; ``focus_mm``, ``image_distance_mm``, ``hyperfocal`` or the two points set the focus; ``at_mm``
+    gives the wedge's extent there, ``half_depth_mm`` the f-number it needs (``f_number`` may then be None),
+    ``optimum`` the f-number that balances it against diffraction. The conventions (``along``,
+    ``angles_from``, ``hinge_from``, ``distance_from``) are those of the command (docs/tilt.md). Returns the
+    plan's :class:`~camtool.plans.tilt.TiltAnswer`: one ``TiltRow`` per model, and the words for the footer.
+
+    Examples
+    --------
+    >>> row = tilt(90, 11, 0.03, tilt_deg=3, focus_mm=2000).rows[0]
+    >>> round(row.hinge_mm, 1)  # Merklinger's hinge rule J = f/sin θ = 90/sin 3°
+    1719.7
+    """
+    from camtool.plans.tilt import solve_tilt
+
+    def listed(value: Any) -> list[float]:
+        return [] if value is None else [float(value)]
+
+    data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    return solve_tilt(focal_length_mm=listed(focal_length_mm), f_number=listed(f_number), coc_mm=[coc_mm],
+                      tilt_deg=listed(tilt_deg), swing_deg=listed(swing_deg), hinge_mm=listed(hinge_mm),
+                      points=points or (), focus_mm=listed(focus_mm), image_distance_mm=listed(image_distance_mm),
+                      hyperfocal=hyperfocal, at_mm=at_mm, half_depth_mm=half_depth_mm, optimum=optimum,
+                      sensor_height_mm=sensor_height_mm, distance_from=distance_from, along=along,
+                      angles_from=angles_from, hinge_from=hinge_from, model=model, lens=data)
+
+
+@_checked
+def photo(
+    path: Text,
+    *,
+    distance_mm: OptionalDistanceOrInf = None,
+    coc_mm: OptionalCoC = None,
+    coc_rule: OptionalRule = None,
+    pixel_pitch_mm: PixelPitch = None,
+    sensor_width_mm: OptionalSensorSide = None,
+    sensor_height_mm: OptionalSensorSide = None,
+    distance_from: DistanceFrom = "sensor",
+    model: Model = "auto",
+    lens: OptionalText = None,
+) -> PhotoAnswer:
+    """What a photo's metadata says and the depth of field, field of view and exposure it gives, as ``camtool exif``.
+
+    Needs the ``exif`` extra (python-exiv2). Every number read from a tag passes the range of the option it
+    stands for or is left out and named in the answer's ``unusable`` problems; a file that cannot be read
+    (not a regular file, not an image) raises :class:`~camtool.core.errors.FileError`. What is given here wins
+    over what the file says (``lens`` names a lens preset). The answer's ``values`` hold every key of
+    ``camtool exif --format json``.
+    """
+    from camtool.core.errors import FileError
+    from camtool.exif.reader import UnreadableFile, read_file
+    from camtool.plans.photo import PresetIndex, photo_answer
+    from camtool.presets import load_db
+
+    if (sensor_width_mm is None) != (sensor_height_mm is None):
+        raise DomainError("sensor_height_mm" if sensor_height_mm is None else "sensor_width_mm", None,
+                          "given with the other side of the sensor, or both left out")
+    lens_preset = preset("lens", lens) if lens is not None else None
+    try:
+        reading = read_file(path)
+    except (FileError, UnreadableFile) as error:
+        raise DomainError("path", _shown(path), "a readable image file", str(error)) from None
+    sensor = None if sensor_width_mm is None else (float(sensor_width_mm), float(sensor_height_mm))
+    return photo_answer(reading, path=path, distance_mm=distance_mm, sensor_mm=sensor, coc_mm=coc_mm,
+                        coc_rule=coc_rule, pixel_pitch_mm=pixel_pitch_mm, distance_from=distance_from, model=model,
+                        lens_preset=lens_preset, presets=PresetIndex(load_db))

@@ -24,6 +24,7 @@ import os
 import re
 from decimal import Decimal
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -78,6 +79,23 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "film": st.sampled_from(["hp5", "tri-x", "portra-400", "velvia-50", "no-such-film"]),
     "metered_s": st.floats(1e-4, 1e4),
     "kind": st.sampled_from(["sensor", "camera", "lens", "prescription", "scene", "film"]),
+    "tilt_deg": st.one_of(st.none(), st.floats(-30.0, 30.0)),
+    "swing_deg": st.one_of(st.none(), st.floats(-30.0, 30.0)),
+    "hinge_mm": st.one_of(st.none(), st.floats(100.0, 1e5)),
+    "points": st.one_of(st.none(), st.tuples(st.tuples(st.floats(500.0, 5e3), st.floats(-2e3, -100.0)),
+                                             st.tuples(st.floats(1e4, 5e4), st.floats(-2e3, -100.0)))),
+    "focus_mm": st.one_of(st.none(), st.floats(500.0, 1e5)),
+    "image_distance_mm": st.one_of(st.none(), st.floats(20.0, 500.0)),
+    "hyperfocal": st.booleans(),
+    "at_mm": st.one_of(st.none(), st.floats(500.0, 1e5)),
+    "half_depth_mm": st.one_of(st.none(), st.floats(10.0, 5e3)),
+    "optimum": st.booleans(),
+    "along": st.sampled_from(["sight", "axis"]),
+    "angles_from": st.sampled_from(["film", "lens", "horizon"]),
+    "hinge_from": st.sampled_from(["lens", "pupil"]),
+    "path": st.sampled_from([str(p) for p in sorted((Path(__file__).parent / "data" / "exif").iterdir())[:4]]
+                            + ["/nonexistent.jpg", "/dev/null", str(Path(__file__))]),
+    "coc_rule": st.sampled_from([None, "d/1500", "d/1440", "px:2", "nonsense"]),
     "lens": st.sampled_from([None, "nikon-z-24mm-f1.8-s", "sony-fe-85mm-f1.8", "nikon-z-24-70mm-f4-s", "no-such-lens"]),
     "name": st.sampled_from(["full-frame", "nikon-z-8", "nikon-z-24mm-f1.8-s", "dgauss100", "hp5", "Full Frame",
                              "no-such-preset"]),
@@ -111,7 +129,8 @@ WRONG_TEXT = [None, 1, 1.5, True, b"thin", ["thin"], "", "THIN", "d/0", "d/-5", 
 # at infinity, the front depth when the focus is at infinity; a distance at infinity for a subject there.
 INFINITE_OK = {"front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hyperfocal_mm", "lens_distance_mm",
                "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
-               "radius_mm"}  # a prescription's flat surface
+               "radius_mm",  # a prescription's flat surface
+               "focus_distance_mm", "focus_distance_max_mm", "far_max_mm", "far_min_mm"}  # a photo focused at infinity
 
 
 def hostile_arrays() -> st.SearchStrategy[Any]:
@@ -122,7 +141,8 @@ def hostile_arrays() -> st.SearchStrategy[Any]:
 
 def argument(name: str) -> st.SearchStrategy[Any]:
     valid = VALID[name]
-    if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name", "lens"):
+    if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name", "lens",
+                "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum", "points"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()
@@ -207,7 +227,7 @@ def test_every_public_function_answers_or_names_the_argument(name: str) -> None:
 def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
                 "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
-                "flash_exposure", "preset", "preset_names", "star_trail_limits"}
+                "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)
