@@ -120,11 +120,21 @@ def test_a_typed_distance_beyond_h_is_infinite_and_every_row_names_its_model() -
     assert not math.isnan(h["near_mm"])
 
 
-@pytest.mark.xfail(strict=True, reason="stack's internal_bracket_plan solves the hyperfocal magnification by "
-                   "bisection, not by camtool.plans.depth.hyperfocal_setting: its last frame lies within 1e-13 of H, "
-                   "not at the same float")
 def test_the_last_frame_of_a_bracket_to_infinity_lies_at_h() -> None:
     lens = ["--lens", "nikon-z-24mm-f1.8-s", "-N", "11"]
     (h,) = run_json("hyperfocal", *lens, "--model", "thin")
     frames = run_json("stack", *lens, "--near", "0.3", "--far", "inf", "--model", "thin")
     assert frames[-1]["distance_mm"] == h["hyperfocal_mm"]
+    assert frames[-1]["far_mm"] is None
+
+
+@pytest.mark.parametrize("plane", ["sensor", "lens"])
+@pytest.mark.parametrize("model", ["thin", "approx", "thick", "auto"])
+def test_a_plain_lens_bracketed_to_infinity_ends_at_hyperfocal_h(plane: str, model: str) -> None:
+    lens = ["-f", "50", "-N", "8", "--coc", "0.03", "--pupil-mag", "0.7", "--hiatus", "5", "--distance-from", plane]
+    (h,) = run_json("hyperfocal", *lens, "--model", model)
+    frames = run_json("stack", *lens, "--near", "1", "--far", "inf", "--model", model)
+    assert frames[-1]["distance_mm"] == h["hyperfocal_mm"] and frames[-1]["far_mm"] is None
+    assert all(f["distance_mm"] < h["hyperfocal_mm"] for f in frames[:-1])
+    if model == "thin" and plane == "lens":  # Wikipedia, "Hyperfocal distance": H = f²/(N·c) + f
+        assert h["hyperfocal_mm"] == pytest.approx(50**2 / (8 * 0.03) + 50, rel=1e-12)

@@ -39,7 +39,7 @@ import math
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
-from camtool.core.errors import require, require_positive
+from camtool.core.errors import DomainError, require, require_positive
 from camtool.geometry.closeup import InternalFocus
 
 __all__ = [
@@ -202,7 +202,8 @@ Limits = Callable[[float], tuple[float, float]]
 def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
                  overlap: float = 0.0, model: str = "thin", max_frames: int = 10_000,
                  limits: Limits | None = None, hyperfocal_mm: float | None = None,
-                 distance_from: str = "lens", hiatus_mm: float = 0.0) -> BracketPlan:
+                 distance_from: str = "lens", hiatus_mm: float = 0.0, hyperfocal_shown_mm: float | None = None,
+                 max_evaluations: int | None = None) -> BracketPlan:
     """Focus distances in mm whose depths of field chain from a near to a far limit.
 
     Frame 1 has its near limit at ``near_mm``; each next frame's near limit is
@@ -216,7 +217,11 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
     S is u + v + δ with v = f·u/(u − f) the image distance of the frame's
     focus u, so frame k's limits are its lens-plane limits plus v_k + δ, and
     the focus that puts a near limit at S is the fixed point of
-    u = u_near(S − v(u) − δ) (a contraction with factor about m²).
+    u = u_near(S − v(u) − δ) (a contraction with factor about m²). With
+    ``limits`` of another model each frame's focus is one root of
+    near(u) + v(u) + δ − S on 1/u, solved from a bracket around the thin
+    lens's answer (widened only when it does not hold the root), so a frame
+    costs a few evaluations of the model, not a fresh search of [1/H, 1/near].
 
     Parameters
     ----------
@@ -230,9 +235,14 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
     max_frames : int, more frames than this is a DomainError on ``near_mm``
     limits : optional function u -> (near, far) from the lens of another model; the focus of
         each frame is then found by bisection on 1/u
-    hyperfocal_mm : that model's hyperfocal distance from the lens (with ``limits``)
+    hyperfocal_mm : the model's hyperfocal distance from the lens (default: the closed form's)
     distance_from : ``"lens"`` or ``"sensor"``, the plane of ``near_mm``, ``far_mm`` and the results
     hiatus_mm : δ, the separation of the principal planes (sensor plane only)
+    hyperfocal_shown_mm : that hyperfocal distance in the ``distance_from`` plane, as
+        :func:`camtool.plans.depth.hyperfocal_setting` gives it: the focus of a frame at H (default:
+        H + v(H) + δ from the sensor)
+    max_evaluations : the most evaluations of ``limits`` one plan may make (None: no bound); more is a
+        DomainError on ``near_mm``
 
     References
     ----------
@@ -253,7 +263,7 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
     f = float(focal_length_mm)
     k = f * f / (f_number * coc_mm)
     hyper = k if model == "approx" else k + f
-    if limits is not None and hyperfocal_mm is not None:
+    if hyperfocal_mm is not None:
         hyper = float(hyperfocal_mm)
     sensor = distance_from == "sensor"
     closest = 4.0 * f + hiatus_mm if sensor else f
@@ -261,27 +271,37 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
         "from the lens (the focal length)"
     require("near_mm", near_mm, near_mm > closest, "more than {limit} " + where, limit=closest)
     require("far_mm", far_mm, far_mm > near_mm, "beyond --near")
-    if limits is None:
-        limits = _closed_limits(f, k, model)
-        lens_focus = _closed_inverse(f, k, model)
-        tol = 1e-13
-    else:
-        lens_focus = _numeric_inverse(limits, f, hyper)
-        tol = 1e-10
+    numeric = limits is not None
+    closed_limits = _closed_limits(f, k, "thin" if numeric else model)
+    closed_focus = _closed_inverse(f, k, "thin" if numeric else model)
+    if limits is not None:
+        limits = _counted(limits, max_evaluations, near_mm)
 
     def offset(u: float) -> float:
         return f * u / (u - f) + hiatus_mm if sensor else 0.0
 
-    def focus_for_near(wanted: float, guess: float) -> float:
+    def closed_focus_for_near(wanted: float, guess: float) -> float:
+        """The closed form's focus for a near limit ``wanted`` in the plane asked for (a fixed point from the sensor)."""
         u = guess
         for _ in range(100):
             target = wanted - offset(u)
             require("near_mm", near_mm, target > f, "more than {limit} " + where, limit=closest)
-            new = lens_focus(target)
-            if abs(new - u) <= tol * u:
+            new = closed_focus(target)
+            if abs(new - u) <= 1e-13 * u:
                 return new
             u = new
         return u
+
+    def focus_for_near(wanted: float, guess: float) -> float:
+        solved = limits
+        if solved is None:
+            return closed_focus_for_near(wanted, guess)
+        try:  # the thin lens's answer, the centre of the first bracket
+            start = closed_focus_for_near(wanted, min(guess, k))
+        except DomainError:
+            start = guess
+        closest_focus = 2.0 * f if sensor else wanted * (1.0 + 1e-12)  # its near limit lies short of ``wanted``
+        return _numeric_focus(lambda u: solved(u)[0] + offset(u) - wanted, start, 1.0 / hyper, 1.0 / closest_focus, f)
 
     # the farthest frame is focused at H: a focus the lens reaches (beyond f from the lens; at most 1:1 from
     # the sensor, as --near is). Only the approx rule's H = f²/(N·c) can fall closer (the thin lens's
@@ -291,6 +311,9 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
             "more than {limit} " + ("from the sensor (4f + hiatus, 1:1)" if sensor else "from the lens (f)"),
             detail=f"the {model} model's hyperfocal distance, where the farthest frame is focused",
             limit=nearest_focus + offset(nearest_focus) if sensor else f)
+    if limits is None:
+        limits = closed_limits
+    shown_hyper = float(hyperfocal_shown_mm) if hyperfocal_shown_mm is not None else hyper + offset(hyper)
     # the near limit when focused at H: any wanted near limit beyond it is met by focusing at H
     near_at_hyper = limits(hyper)[0] + offset(hyper)
     u = hyper
@@ -299,12 +322,12 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
         nonlocal u  # each frame's focus starts the next one's iteration
         u = hyper if wanted >= near_at_hyper * (1.0 - 1e-12) else focus_for_near(wanted, u)
         lo, hi = limits(u)
-        if u >= hyper:
-            hi = math.inf  # focused at the hyperfocal distance: sharp to infinity
         shift = offset(u)
+        if u >= hyper:  # focused at the hyperfocal distance: sharp to infinity
+            return BracketFrame(shown_hyper, lo + shift, math.inf, f / (u - f))
         return BracketFrame(u + shift, lo + shift, hi + shift, f / (u - f))
 
-    return BracketPlan(_chain(frame_for, near_mm, far_mm, overlap, max_frames), hyper + offset(hyper))
+    return BracketPlan(_chain(frame_for, near_mm, far_mm, overlap, max_frames), shown_hyper)
 
 
 def _chain(frame_for: Callable[[float], BracketFrame], near_mm: float, far_mm: float, overlap: float,
@@ -354,7 +377,8 @@ FocusLimits = Callable[[float, float], tuple[float, float]]
 
 def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
                           overlap: float = 0.0, model: str = "thin", max_frames: int = 10_000,
-                          limits: FocusLimits | None = None, distance_from: str = "sensor") -> BracketPlan:
+                          limits: FocusLimits | None = None, distance_from: str = "sensor",
+                          hyperfocal_magnification: float | None = None) -> BracketPlan:
     """Focus bracketing with an internally focusing lens: frames chained as in :func:`bracket_plan`, solved for m.
 
     A frame at magnification m has the focal length f(m) = f₀/(1 + κm), its
@@ -372,6 +396,9 @@ def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, n
     model : ``"thin"`` or ``"approx"`` in closed form (with ``limits`` None)
     limits : optional function (f, u) -> (near, far) from the lens of another rung
     distance_from : ``"sensor"`` (default) or ``"lens"`` (the lens's front principal plane at each frame's focus)
+    hyperfocal_magnification : the magnification of the lens's hyperfocal focus setting, as
+        :func:`camtool.plans.depth.hyperfocal_setting` solves it (default: found here by bisection); the
+        farthest frame is focused there, sharp to infinity
 
     Examples
     --------
@@ -412,7 +439,9 @@ def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, n
     require("near_mm", near_mm, near_mm >= closest.near_mm * (1.0 - 1e-12),
             "at least {limit} " + plane + f" ({why})", limit=closest.near_mm)
     # the hyperfocal magnification: the largest m whose far limit is infinite (bisection in log m)
-    if math.isinf(frame(m_min).far_mm):
+    if hyperfocal_magnification is not None:
+        m_hyper = min(max(float(hyperfocal_magnification), m_min), m_max)
+    elif math.isinf(frame(m_min).far_mm):
         low, high = m_min, m_max
         if math.isinf(closest.far_mm):
             low = m_max
@@ -428,6 +457,8 @@ def internal_bracket_plan(lens: InternalFocus, f_number: float, coc_mm: float, n
     else:  # an aperture so wide and a CoC so small that even m = 1e-9·m_max is closer than the hyperfocal focus
         m_hyper = m_min
     at_hyper = frame(m_hyper)
+    if hyperfocal_magnification is not None:  # sharp to infinity there by the definition of that setting
+        at_hyper = at_hyper._replace(far_mm=math.inf)
     require("far_mm", far_mm, far_mm <= at_hyper.far_mm,
             "at most {limit} " + plane + " (the far limit with the lens at its farthest focus)", limit=at_hyper.far_mm)
 
@@ -510,13 +541,56 @@ def _outer_root(g: Callable[[float], float], a: float, b: float, ga: float, gb: 
     return a
 
 
-def _numeric_inverse(limits: Limits, f: float, hyper: float) -> Callable[[float], float]:
-    """The focus u in (f, H] whose near limit is ``near``: regula falsi (Illinois) on 1/u, near rising with u."""
+def _numeric_focus(g: Callable[[float], float], start: float, x_far: float, x_near: float, f: float) -> float:
+    """The focus u whose ``g(u)`` (rising with u) is 0, solved on x = 1/u in [``x_far``, ``x_near``].
 
-    def solve(near: float) -> float:
-        a, b = 1.0 / hyper, 1.0 / (near * (1.0 + 1e-12))  # near(u = near) < near ≤ near(H)
-        x = _outer_root(lambda x: limits(1.0 / x)[0] - near, a, b, limits(1.0 / a)[0] - near,
-                        limits(1.0 / b)[0] - near, 1e-12)
-        return max(1.0 / x, f * (1.0 + 1e-12))  # the near limit at u is at least the one wanted: no gap
+    The first bracket is 1/``start`` ± 1 %, widened fourfold on a side only
+    while that side does not hold the root: a start within a few per cent of
+    the answer (the thin lens's, for another rung) costs two evaluations of g
+    for the bracket and a handful for Illinois regula falsi. Returns the
+    bracket end where g ≥ 0 (a near limit at least the one wanted: no gap).
+    """
 
-    return solve
+    def of_x(x: float) -> float:
+        return g(1.0 / x)
+
+    x0 = min(max(1.0 / start, x_far), x_near) if math.isfinite(start) and start > 0.0 else x_far
+    width = 0.01
+    a = max(x_far, x0 * (1.0 - width))
+    ga = of_x(a)
+    while ga < 0.0 and a > x_far:
+        width *= 4.0
+        a = max(x_far, x0 * (1.0 - width))
+        ga = of_x(a)
+    width = 0.01
+    b = min(x_near, x0 * (1.0 + width))
+    gb = of_x(b)
+    while gb > 0.0 and b < x_near:
+        a, ga = b, gb  # b is on the outer side: the root lies nearer still
+        width *= 4.0
+        b = min(x_near, x0 * (1.0 + width))
+        gb = of_x(b)
+    if gb >= 0.0:
+        x = b
+    elif ga <= 0.0:
+        x = a
+    else:
+        x = _outer_root(of_x, a, b, ga, gb, 1e-12)
+    return max(1.0 / x, f * (1.0 + 1e-12))
+
+
+def _counted(limits: Limits, most: int | None, near_mm: float) -> Limits:
+    """``limits``, refusing (a :class:`DomainError` on ``near_mm``) its evaluation number ``most`` + 1."""
+    if most is None:
+        return limits
+    used = 0
+
+    def counted(u: float) -> tuple[float, float]:
+        nonlocal used
+        used += 1
+        require("near_mm", near_mm, used <= most, f"far enough that the plan takes at most {most} evaluations of "
+                "the model", detail="a plan solved numerically frame by frame: a larger f-number, CoC or --near "
+                "needs fewer")
+        return limits(u)
+
+    return counted
