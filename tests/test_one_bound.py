@@ -1,0 +1,102 @@
+"""One bound per quantity: a Python API argument accepts what its command-line option accepts.
+
+(The command-line options and their ``--batch`` columns are compared in tests/test_batch_bounds.py.)
+For each numeric argument of each public function that stands for an option, the bounds its annotation
+names are the option's own, read from the option's parameter type; and a value just outside them is
+refused on both paths while the bounds themselves are accepted.
+"""
+
+from __future__ import annotations
+
+import inspect
+import math
+import typing
+
+import click
+import pytest
+
+import camtool
+from camtool import api
+from camtool.cli import cli
+from camtool.cli.params import FNumberType, LengthType, NumberType
+from camtool.core.errors import DomainError
+
+# API argument -> (command, option parameter name)
+STANDS_FOR = {
+    "focal_length_mm": ("dof", "focal_length"),
+    "f_number": ("dof", "f_number"),
+    "coc_mm": ("dof", "coc"),
+    "distance_mm": ("dof", "distance"),
+    "magnification": ("dof", "magnification"),
+    "pixel_pitch_mm": ("dof", "pixel_pitch"),
+    "crop_factor": ("stars", "crop"),
+    "declination_deg": ("stars", "declination"),
+    "rule_constant": ("stars", "rule_constant"),
+    "npf_k": ("stars", "npf_k"),
+    "iso": ("exposure", "iso"),
+}
+
+
+def _option_bounds(command: str, name: str) -> tuple[float, float] | None:
+    group = cli.get_command(click.Context(cli), command)
+    assert group is not None
+    param = next(p for p in group.params if p.name == name)
+    kind = param.type
+    if isinstance(kind, LengthType):
+        return kind.bounds  # millimetres, as the API's arguments
+    if isinstance(kind, FNumberType):
+        from camtool.core.ranges import F_NUMBER
+
+        return F_NUMBER
+    if isinstance(kind, NumberType):
+        return kind.low, kind.high
+    if isinstance(kind, click.FloatRange):
+        return kind.min, kind.max
+    return None
+
+
+def _cases() -> list[tuple[str, str, tuple[float, float]]]:
+    cases = []
+    for fname in camtool.__all__:
+        function = getattr(camtool, fname)
+        if not inspect.isfunction(function):
+            continue
+        hints = typing.get_type_hints(inspect.unwrap(function), include_extras=True)
+        for pname, hint in hints.items():
+            kinds = [m for m in getattr(hint, "__metadata__", ()) if isinstance(m, api._Kind)]
+            if pname in STANDS_FOR and kinds and kinds[0].bounds is not None:
+                cases.append((fname, pname, kinds[0].bounds))
+    return cases
+
+
+CASES = _cases()
+
+
+def test_every_argument_standing_for_an_option_is_checked() -> None:
+    assert {p for _, p, _ in CASES} >= {"focal_length_mm", "f_number", "coc_mm", "distance_mm", "magnification",
+                                         "crop_factor", "iso"}
+
+
+@pytest.mark.parametrize(("function", "param", "bounds"), CASES, ids=[f"{f}.{p}" for f, p, _ in CASES])
+def test_the_api_argument_has_the_option_s_bounds(function: str, param: str, bounds: tuple[float, float]) -> None:
+    option = _option_bounds(*STANDS_FOR[param])
+    assert option is not None
+    low, high = option
+    kind = next(m for m in typing.get_type_hints(inspect.unwrap(getattr(camtool, function)),
+                                                   include_extras=True)[param].__metadata__ if isinstance(m, api._Kind))
+    if kind.zero_ok:  # 0 also stands for "at infinity" (no magnification): the option's range above it
+        low = bounds[0]
+    assert math.isclose(bounds[0], low, rel_tol=1e-12, abs_tol=0.0) and (
+        bounds[1] == high or math.isclose(bounds[1], high, rel_tol=1e-12)), (bounds, option)
+
+
+@pytest.mark.parametrize("value", [0.999, 5000.5])
+def test_a_focal_length_outside_the_option_s_range_is_refused_on_both_paths(value: float) -> None:
+    from cli_helpers import run
+
+    assert run("dof", "-f", repr(value), "-N", "8", "-s", "3m").exit_code == 2
+    with pytest.raises(DomainError) as caught:
+        camtool.depth_of_field(value, 8, 0.03, 3000)
+    assert caught.value.param == "focal_length_mm"
+    assert run("dof", "-f", "1", "-N", "8", "-s", "3m").exit_code == 0
+    camtool.depth_of_field(1.0, 8, 0.03, 3000)
