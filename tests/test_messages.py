@@ -112,3 +112,19 @@ def test_a_hinge_no_tilt_reaches_names_the_hinge_that_was_typed() -> None:
 def test_equiv_names_the_target_option_typed_not_the_source_one(args: list[str], option: str) -> None:
     message = _one_line_error(run("equiv", "-f", "25", "-N", "1.4", "--sensor", "m43", *args))
     assert option in message and "'--crop'" not in message and "'--sensor'" not in message
+
+
+def test_a_solved_setting_out_of_range_names_what_was_typed() -> None:
+    message = _one_line_error(run("exposure", "-N", "16", "-t", "1/125", "--illuminance", "1e9"))
+    assert "'--illuminance'" in message and "'--iso'" not in message
+
+
+def test_a_scene_s_value_a_lens_refuses_names_the_scene() -> None:
+    message = _one_line_error(run("fov", "--lens", "apple-iphone-15-pro-main", "--scene", "landscape-24"))
+    assert "'--scene'" in message and "'-f'" not in message
+
+
+def test_a_batch_file_that_is_a_device_is_refused_at_once(tmp_path) -> None:
+    (tmp_path / "zero.csv").symlink_to("/dev/zero")
+    result = run("equiv", "--batch", str(tmp_path / "zero.csv"))
+    assert result.exit_code == 1 and result.stderr.count("\n") == 1 and "device" in result.stderr

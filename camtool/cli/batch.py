@@ -39,6 +39,7 @@ import io
 import json
 import math
 import os
+import stat
 import sys
 from collections.abc import Callable, Iterator, Sequence
 from typing import IO, Any
@@ -47,7 +48,7 @@ import click
 
 from camtool.cli.grid import CHUNK as GRID_CHUNK
 from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
-from camtool.cli.rows import ZIP, Output, open_writer
+from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.ranges import F_NUMBER
 from camtool.core.units import UnitError
 from camtool.render.columnar import ColumnRows, values_of
@@ -60,6 +61,9 @@ CELL_LIMIT = 128 * 1024
 """Longest cell, in characters (the csv module's limit); a longer one is a bad row."""
 LINE_LIMIT = 1024 * 1024
 """Longest line read whole; the rest of a longer one is dropped and the row is bad."""
+
+DROP_LIMIT = 64 * 1024 * 1024
+"""Longest over-long line skipped to reach the next row; a longer one ends the read (exit 1)."""
 
 PASS = ("", None)
 """What :meth:`_Columns.resolve` returns for a column passed through to the output."""
@@ -96,8 +100,14 @@ def open_source(source: str) -> tuple[IO[str], str]:
         name = "standard input"
     else:
         name = source
-        if os.path.isdir(source):
+        try:
+            mode = os.stat(source).st_mode
+        except OSError as error:
+            raise BatchFileError(f"--batch {source}: cannot read it ({error.strerror})") from None
+        if stat.S_ISDIR(mode):
             raise BatchFileError(f"--batch {source}: is a directory, not a file")
+        if not (stat.S_ISREG(mode) or stat.S_ISFIFO(mode)):  # a device (/dev/zero never ends), a socket
+            raise BatchFileError(f"--batch {source}: is a device or socket, not a file (a file, a pipe or - are read)")
         try:
             binary = open(source, "rb")  # noqa: SIM115 - closed by the caller through the text wrapper
         except OSError as error:
@@ -127,10 +137,15 @@ def _lines(source: IO[str], name: str) -> Iterator[str]:
         if not line:
             return
         if len(line) >= LINE_LIMIT and not line.endswith("\n"):
+            dropped = 0
             while True:  # drop the rest of the over-long line; what is left fails as a too-long cell
                 rest = source.readline(LINE_LIMIT)
+                dropped += len(rest)
                 if not rest or rest.endswith("\n"):
                     break
+                if dropped > DROP_LIMIT:  # a stream with no line ends at all (standard input from /dev/zero)
+                    raise BatchFileError(f"--batch {name}: a line longer than {DROP_LIMIT // 2**20} MiB; "
+                                         "is it a text file of rows?")
             line += "\n"
         yield line
 
@@ -546,10 +561,14 @@ class _Batch:
                     merged[name] = [given * len(members)]
                     break
         self.ctx.meta[ZIP] = True
+        self.ctx.meta[CELLS] = frozenset(name for name, column in values.items()
+                                         if (column[members[0]] is not None if isinstance(column, list)
+                                             else not np.isnan(column[members]).all()))
         try:
             return self.compute(self.ctx, **merged)
         finally:
             self.ctx.meta[ZIP] = False
+            self.ctx.meta[CELLS] = frozenset()
 
     # -- writing, in input order ---------------------------------------------------------------------
 

@@ -19,11 +19,12 @@ from camtool.cli.common import one_value
 from camtool.cli.equipment import LENS
 from camtool.cli.options import EXTENSION_MM, _typed, param_named, stack
 from camtool.cli.params import NumberType
+from camtool.core import ranges
 from camtool.plans import closeup
 from camtool.plans.closeup import CLOSE_UP
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
 
-MAGNIFICATION = NumberType(1e-6, 1000.0)
+MAGNIFICATION = NumberType(*ranges.MAGNIFICATION)
 """Any magnification above 0, to 1000:1 (the formulas hold far past the tested 20:1)."""
 
 magnification_option = click.option(

@@ -148,10 +148,18 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
             for name, value in brought.items():
                 if name in params:
                     _fill(ctx, params, name, value)
-            equipment.check_lens(lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params
-                                 else [], f_numbers=flatten(params.get("f_number")),
-                                 distances_mm=flatten(params.get("distance")),
-                                 distance_from=params.get("distance_from", "sensor"), camera=found.camera)
+            try:
+                equipment.check_lens(lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params
+                                     else [], f_numbers=flatten(params.get("f_number")),
+                                     distances_mm=flatten(params.get("distance")),
+                                     distance_from=params.get("distance_from", "sensor"), camera=found.camera)
+            except InputError as error:
+                if error.param not in found.filled:
+                    raise
+                from camtool.cli.options import bad_parameter
+
+                text = bad_parameter(ctx, error).message  # a value the scene gave, not one typed
+                raise click.BadParameter(f"{scene_name} gives {text}", ctx=ctx, param=param_named(ctx, "scene")) from None
         if "focal_length" in params:
             equipment.check_hiatus(params.get("hiatus"), focal_lengths=flatten(params.get("focal_length")),
                                    pupil_magnification=params.get("pupil_mag"))

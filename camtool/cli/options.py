@@ -16,7 +16,7 @@ from typing import Any, TypeVar
 
 import click
 
-from camtool.cli.params import FNumberType, LengthType
+from camtool.cli.params import FNumberType, LengthType, NumberType
 from camtool.core import ranges
 from camtool.core.errors import DomainError, InputError
 from camtool.core.planes import FOCUS_PLANES
@@ -111,10 +111,18 @@ def preset_completion(kind: str) -> Callable[[click.Context, click.Parameter, st
     return complete
 
 
+def _one_number(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
+    """The one number of a single-value option typed as a list type (one bound, written once)."""
+    from camtool.cli.common import one_value
+
+    return one_value(ctx, param, value)
+
+
 sensor_options = stack(
     click.option("--sensor", metavar="NAME|WxH", shell_complete=preset_completion("sensor"),
                  help="Sensor preset (full-frame, aps-c, m43, ...) or size in mm (36x24). Default: full frame."),
-    click.option("--crop", type=float, help="Crop factor relative to 36 x 24 mm, instead of --sensor."),
+    click.option("--crop", type=NumberType(*ranges.CROP_FACTOR), callback=_one_number,
+                 help="Crop factor relative to 36 x 24 mm, instead of --sensor."),
 )
 
 coc_options = stack(
@@ -209,9 +217,10 @@ def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
             source = "its default" if _from_default(ctx, param) else "the preset's value"
             return click.BadParameter(f"{_typed(ctx, partner)} does not go with {'/'.join(param.opts)} at {source}: "
                                       + domain_message(error, name), ctx=ctx, param=partner)
-    if param is not None:
+    if param is not None and _typed_by_user(ctx, param):
         return click.BadParameter(domain_message(error, name), ctx=ctx, param=param)
-    # A value the library derived (a hyperfocal distance, an object distance from a magnification):
+    # A value the library derived (a hyperfocal distance, an object distance from a magnification, a solved
+    # exposure setting) or one the user did not type (a default, a preset's):
     # blame the option the user typed that drives it, with the value typed.
     blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _given(ctx, p)), None)
     message = domain_message(error, name)
@@ -227,13 +236,13 @@ def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
     return click.BadParameter(message, ctx=ctx, param=blamed)
 
 
-BLAME_ORDER = ("magnification", "fill", "subject_size", "f_number", "focal_length", "coc", "coc_rule", "distance",
-               "near", "far", "distance_from", "model")
+BLAME_ORDER = ("illuminance", "luminance", "ev100", "light", "magnification", "fill", "subject_size", "f_number",
+               "focal_length", "coc", "coc_rule", "distance", "near", "far", "distance_from", "model")
 """Options blamed, in this order, for a value the library derived from several of them."""
 
 _DERIVED = {"distance_mm": "a distance", "near_mm": "a near limit", "far_mm": "a far limit",
             "magnification": "a magnification", "coc_mm": "a CoC", "focal_length_mm": "a focal length",
-            "f_number": "an f-number"}
+            "f_number": "an f-number", "iso": "an ISO", "shutter_s": "a time"}
 
 
 def _needs(ctx: click.Context, error: Any) -> str:
@@ -251,6 +260,8 @@ _PARTNERS = {"hiatus": ("pupil_mag", "focal_length", "distance"), "pupil_mag": (
 
 def _typed_by_user(ctx: click.Context, param: click.Parameter) -> bool:
     """Whether the user gave ``param`` (on the command line or in its environment variable)."""
+    if param.name in ctx.meta.get("camtool.batch_cells", ()):  # a --batch cell is typed, as an option is
+        return True
     source = ctx.get_parameter_source(param.name or "")
     return source in (click.core.ParameterSource.COMMANDLINE, click.core.ParameterSource.ENVIRONMENT)
 

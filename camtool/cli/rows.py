@@ -12,9 +12,10 @@ from camtool.render.columns import Column
 from camtool.render.output import RowWriter
 from camtool.render.serial import field_line
 
-__all__ = ["ZIP", "Output", "check_fields", "field_line", "open_writer"]
+__all__ = ["CELLS", "ZIP", "Output", "check_fields", "field_line", "open_writer"]
 
 ZIP = "camtool.zip"
+CELLS = "camtool.batch_cells"  # ctx.meta: the options a --batch row gave in cells (typed, as options are)
 """The ``ctx.meta`` key that says the list options come zipped, row by row, from a batch file."""
 
 
