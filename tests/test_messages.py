@@ -128,3 +128,17 @@ def test_a_batch_file_that_is_a_device_is_refused_at_once(tmp_path) -> None:
     (tmp_path / "zero.csv").symlink_to("/dev/zero")
     result = run("equiv", "--batch", str(tmp_path / "zero.csv"))
     assert result.exit_code == 1 and result.stderr.count("\n") == 1 and "device" in result.stderr
+
+
+def test_an_unknown_field_is_refused_before_any_work(tmp_path) -> None:
+    message = _one_line_error(run("dof", "-f", "50", "-N", "8", "-s", "3m", "--field", "nope"))
+    assert "'--field'" in message
+
+
+def test_a_fifo_nobody_writes_to_is_an_empty_batch_not_a_hang(tmp_path) -> None:
+    import os
+
+    fifo = tmp_path / "scenes.csv"
+    os.mkfifo(fifo)
+    result = run("fov", "-f", "50", "--batch", str(fifo), "--format", "json")
+    assert result.exit_code == 0 and result.stdout == "[]\n"

@@ -109,7 +109,7 @@ def open_source(source: str) -> tuple[IO[str], str]:
         if not (stat.S_ISREG(mode) or stat.S_ISFIFO(mode)):  # a device (/dev/zero never ends), a socket
             raise BatchFileError(f"--batch {source}: is a device or socket, not a file (a file, a pipe or - are read)")
         try:
-            binary = open(source, "rb")  # noqa: SIM115 - closed by the caller through the text wrapper
+            binary = _open_nonblocking(source)
         except OSError as error:
             raise BatchFileError(f"--batch {source}: cannot read it ({error.strerror})") from None
     if not hasattr(binary, "peek"):
@@ -125,6 +125,23 @@ def open_source(source: str) -> tuple[IO[str], str]:
     else:
         encoding = "utf-8"
     return io.TextIOWrapper(binary, encoding=encoding, newline=""), name
+
+
+def _open_nonblocking(source: str) -> IO[bytes]:
+    """``source`` opened for reading without waiting for a writer: a FIFO nobody writes to reads as empty.
+
+    Opened non-blocking (a FIFO with no writer would block ``open`` for ever), then set to block again, so
+    a pipe with a writer (``--batch <(make-scenes)``) is read as it comes and one without ends at once.
+    """
+    import fcntl
+
+    fd = os.open(source, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    try:
+        fcntl.fcntl(fd, fcntl.F_SETFL, fcntl.fcntl(fd, fcntl.F_GETFL) & ~os.O_NONBLOCK)
+        return os.fdopen(fd, "rb")
+    except BaseException:
+        os.close(fd)
+        raise
 
 
 def _lines(source: IO[str], name: str) -> Iterator[str]:

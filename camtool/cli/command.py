@@ -26,7 +26,7 @@ import click
 
 from camtool.cli.grid import Grid
 from camtool.cli.options import preset_completion, stack
-from camtool.cli.rows import ZIP, Output, open_writer
+from camtool.cli.rows import ZIP, Output, check_fields, open_writer
 from camtool.render.output import FORMATS
 
 MAX_TABLE_ROWS = 100_000
@@ -137,6 +137,8 @@ def camtool_command(
             on_error = params.pop("on_error", "stop")
             if fields:  # --field prints JSON keys' values: nothing drawn for a table is needed
                 params["fmt"] = "json"
+                if source is None and keys:  # a name no row of this command has: refused before any work
+                    check_fields([f for f in fields if f not in DYNAMIC_KEYS], list(keys))
             fmt, units = params["fmt"], params["units"]
             if source is not None:
                 from camtool.cli.batch import run_batch
@@ -159,6 +161,10 @@ def camtool_command(
         return command
 
     return decorate
+
+
+DYNAMIC_KEYS = ("t_stop", "f_number_from")
+"""Keys a row gains from what was typed (a T-stop), beyond those the command declares."""
 
 
 def stream_grid(ctx: click.Context, grid: Grid, first: Output, compute: Callable[[], Output], fmt: str,

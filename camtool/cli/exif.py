@@ -80,17 +80,17 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     names = [name for path in paths for name in (_stdin_names() if path == "-" else [path])]
     found = photo.photo_files(names, recursive=recursive)
     answers = [photo.unreadable_answer(path, reason) for path, reason in found.failed]
+    # the options resolved before any file is read: an error of theirs is the run's one line (exit 2)
+    settings = _settings(ctx, sensor, crop, coc, coc_rule, prescription_file, preset_files)
+    index = photo.PresetIndex(lambda: open_presets(ctx, preset_files))
     for answer in answers:
         _warn(answer)
-    settings: dict[str, Any] | None = None  # the options resolved at the first file read (their errors exit 2)
-    index = photo.PresetIndex(lambda: open_presets(ctx, preset_files))
     for path in found.files:
         try:
             reading = read_file(path)
         except UnreadableFile as error:
             answer = photo.unreadable_answer(path, str(error))
         else:
-            settings = settings or _settings(ctx, sensor, crop, coc, coc_rule, prescription_file, preset_files)
             answer = photo.photo_answer(
                 reading, path=path, distance_mm=distance, coc_mm=coc, coc_rule=coc_rule,
                 pixel_pitch_mm=pixel_pitch[0] if isinstance(pixel_pitch, list) else pixel_pitch,
@@ -120,7 +120,7 @@ SHOWN = {"sensor": "--sensor", "crop": "--crop", "distance_mm": "-s", "coc_rule"
 
 def _settings(ctx: click.Context, sensor: str | None, crop: float | None, coc: float | None, coc_rule: str | None,
               prescription_file: str | None, preset_files: tuple[str, ...]) -> dict[str, Any]:
-    """The sensor, the CoC rule and the prescription the options give, checked once, when the first file is read."""
+    """The sensor, the CoC rule and the prescription the options give, checked once, before any file is read."""
     from camtool.core.units import UnitError
     from camtool.plans.photo import check_coc_rule
 
