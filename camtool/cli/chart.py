@@ -1,10 +1,12 @@
 """``camtool chart KIND``: depth-of-field questions drawn as PNG, SVG or PDF.
 
 Each kind takes the same inputs, presets, units and models as the command
-it draws (``dof``, ``compose``, the model ladder), computes its numbers with
-the library (:mod:`camtool.render.chartdata`) and hands them to the plotting
-layer (:mod:`camtool.render.chartplot`), which needs matplotlib, an optional
-extra (``pip install 'camtool[chart]'``) imported only here.
+it draws (``dof``, ``compose``, the model ladder); its decisions (ranges,
+defaults, the format and size) are :mod:`camtool.plans.chart`, which computes
+the numbers with :mod:`camtool.render.chartdata`, and the plotting layer
+(:mod:`camtool.render.chartplot`), which needs matplotlib, an optional extra
+(``pip install 'camtool[chart]'``), is imported only here. The command parses
+options, makes one call and writes through its one writer.
 
 ``python -m camtool.cli.chart docs/charts`` regenerates the example charts
 shown in the README (an SVG and a JSON file of its data each); a test
@@ -15,12 +17,11 @@ from __future__ import annotations
 
 import functools
 import json
-import math
 import os
 import re
 import stat
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -29,13 +30,7 @@ import click
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, footer, required, single
 from camtool.cli.equipment import apply_equipment, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import (
-    WavelengthType,
-    ladder_errors,
-    lens_data,
-    model_options,
-    pupil_mag_option,
-)
+from camtool.cli.lensdata import WavelengthType, lens_data, model_options, pupil_mag_option
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
@@ -48,16 +43,22 @@ from camtool.cli.options import (
     stack,
 )
 from camtool.cli.params import LengthType, NumberType, flatten
-from camtool.dof.ladder import model_choices
+from camtool.core.errors import InputError
+from camtool.dof.ladder import focal_lengths, model_choices
+from camtool.plans.chart import (
+    IMAGE_FORMATS,
+    aperture_chart,
+    blur_chart,
+    card_chart,
+    check_pixels,
+    dof_chart,
+    figure_size,
+    image_format,
+    trade_chart,
+)
 
-IMAGE_FORMATS = ("png", "svg", "pdf")
-DEFAULT_SIZE_IN = (8.0, 5.0)
-POINTS = 161
 INSTALL_HINT = "camtool chart needs matplotlib, an optional extra: pip install 'camtool[chart]' (or pip install matplotlib)"
 PAPER_HELP = "a6 (148 × 105 mm) or letter-quarter (5.5 × 4.25 in), landscape"
-CARD_DISTANCES_M = [0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0, 7.0, 10.0, 20.0, math.inf]
-CARD_F_NUMBERS = [2.8, 4.0, 5.6, 8.0, 11.0, 16.0, 22.0]
-BLUR_FOCAL_LENGTHS_MM = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]
 SIZE_M = LengthType("m")
 MODELS = [name for name in model_choices() if name != "all"]
 
@@ -110,23 +111,6 @@ chart_output_options = stack(
 """The options every chart shares: where and how to write it."""
 
 
-def _image_format(ctx: click.Context, output: str, given: str | None) -> str:
-    """The format from --image-format or the -o file's extension; a one-line error when neither says."""
-    suffix = Path(output).suffix.lower().lstrip(".") if output != "-" else ""
-    if output == "-" and given is None:
-        raise click.UsageError("-o - writes to standard output: give --image-format png, svg or pdf.", ctx)
-    if given is not None:
-        if suffix and suffix != given:
-            raise click.BadParameter(f"{output} has the extension .{suffix} but --image-format is {given}",
-                                     ctx=ctx, param=param_named(ctx, "output"))
-        return given
-    if suffix not in IMAGE_FORMATS:
-        shown = f".{suffix}" if suffix else "no extension"
-        raise click.BadParameter(f"{output} has {shown}: use .png, .svg or .pdf, or give --image-format",
-                                 ctx=ctx, param=param_named(ctx, "output"))
-    return suffix
-
-
 def plotting(ctx: click.Context | None = None) -> Any:
     """The plotting layer, or a one-line error (exit 1) saying what to install when matplotlib is missing."""
     try:
@@ -138,8 +122,7 @@ def plotting(ctx: click.Context | None = None) -> Any:
     return chartplot
 
 
-def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[float, float]] | None = None
-                  ) -> Callable[[Callable[..., Any]], click.Command]:
+def chart_command(name: str, card: bool = False) -> Callable[[Callable[..., Any]], click.Command]:
     """Make a chart subcommand of a function that returns the chart's :class:`ChartData`."""
 
     def decorate(compute: Callable[..., Any]) -> click.Command:
@@ -147,17 +130,18 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
         def run(ctx: click.Context, /, **params: Any) -> None:
             output, given = params.pop("output"), params.pop("image_format")
             size, dpi, data_file = params.pop("size"), params.pop("dpi"), params.pop("data_file")
-            fmt = _image_format(ctx, output, given)
+            fmt = _inputs(ctx, lambda: image_format(output=output, given=given))
             resolution = float(single(ctx, dpi, "--dpi"))
             if output == "-" and data_file == "-":
                 raise click.UsageError("-o - and --data - would both write to standard output.", ctx)
             _check_targets(output, data_file)
             plot = plotting(ctx)
             params = apply_equipment(ctx, params)
-            width, height = size or (default_size(params) if default_size else DEFAULT_SIZE_IN)
+            width, height = figure_size(size_in=size, paper=params.get("paper") or "a6" if card else None)
             if fmt == "png":
-                _check_pixels(ctx, (width, height), resolution)
-            data = compute(ctx, **params)
+                _inputs(ctx, lambda: check_pixels(size_in=(width, height), dpi=resolution))
+            with library_errors(ctx):
+                data = _inputs(ctx, lambda: compute(ctx, **params))
             figure = plot.draw(data, width, height, params["units"])
             notes: list[str] = []
             image = plot.to_bytes(figure, fmt, resolution, notes)
@@ -173,20 +157,6 @@ def chart_command(name: str, default_size: Callable[[dict[str, Any]], tuple[floa
         return command
 
     return decorate
-
-
-def _check_pixels(ctx: click.Context, size: tuple[float, float], dpi: float) -> None:
-    """Refuse, before anything is computed, a PNG with more pixels than :data:`MAX_PIXELS`."""
-    from camtool.render.chartdata import MAX_PIXELS, raster_pixels
-
-    width, height = size
-    across, down = raster_pixels(width, height, dpi)
-    if across * down <= MAX_PIXELS:
-        return
-    raise click.BadParameter(
-        f"{dpi:g} with --size {width:g}x{height:g} in is {across} × {down} pixels ({across * down / 1e6:.1f} "
-        f"megapixels); a PNG chart has at most {MAX_PIXELS / 1e6:.0f} megapixels (40x40 in at 300 dpi): "
-        "give a smaller --dpi or --size", ctx=ctx, param=param_named(ctx, "dpi"))
 
 
 def _check_targets(output: str, data_file: str | None) -> None:
@@ -250,10 +220,19 @@ def _write(target: str, option: str, payload: bytes) -> None:
         os.close(fd)
 
 
-def _one_list(ctx: click.Context, focal: Sequence[float], apertures: Sequence[float]) -> None:
-    if len(focal) > 1 and len(apertures) > 1:
-        raise click.UsageError("Give several f-numbers or several focal lengths (-N or -f), not both: "
-                               "each curve is one of them.", ctx)
+SPELLING = {"output": "-o", "f_number": "-N", "focal_length": "-f", "low": "--from", "high": "--to"}
+"""How this command's messages spell an input (``--name`` otherwise)."""
+
+
+def _inputs(ctx: click.Context, decide: Callable[[], Any]) -> Any:
+    """``decide()``, its input errors spelled as this command's options."""
+    try:
+        return decide()
+    except InputError as error:
+        text = error.render(lambda name: SPELLING.get(name, "--" + name.replace("_", "-")))
+        if error.usage:
+            raise click.UsageError(text, ctx) from None
+        raise click.BadParameter(text, ctx=ctx, param=param_named(ctx, error.param)) from None
 
 
 def _coc(ctx: click.Context, coc: Any, coc_rule: Any, chosen: Any, pixel_pitch: Any) -> tuple[float, list[float], str]:
@@ -261,16 +240,6 @@ def _coc(ctx: click.Context, coc: Any, coc_rule: Any, chosen: Any, pixel_pitch: 
     if len(cocs) > 1:
         raise click.UsageError("Option '--coc' takes one value here.", ctx)
     return cocs[0], cocs, origin
-
-
-def _lens_label(focal: Sequence[float]) -> str:
-    return ", ".join(f"{f:g}" for f in focal) + " mm"
-
-
-def _range(ctx: click.Context, low: float, high: float, option: str) -> None:
-    if not low < high:
-        raise click.BadParameter(f"{high:g} is outside the valid range: more than --from ({low:g})", ctx=ctx,
-                                 param=param_named(ctx, option))
 
 
 @click.group("chart", context_settings={"help_option_names": ["-h", "--help"]})
@@ -313,34 +282,15 @@ def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high
               pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus,
               prescription_file, units, preset_files) -> Any:
     """Near and far limits against focus distance (log axes), one band per f-number or focal length, H marked."""
-    from camtool.dof.ladder import focal_lengths, hyperfocal
-    from camtool.render.chartdata import dof_data, log_space
-
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
-    with library_errors(ctx):
-        focal = required(ctx, focal_lengths(lens, flatten(focal_length)), "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
-    _one_list(ctx, focal, apertures)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    start = single(ctx, low, "--from")
-    stop = single(ctx, high, "--to")
-    if start is None:
-        start = max(300.0, 10.0 * max(focal))
-    if stop is None:
-        with library_errors(ctx):
-            longest = max(float(hyperfocal("thin", f, n, c, distance_from).hyperfocal_mm)
-                          for f in focal for n in apertures)
-        stop = max(10_000.0, 2.0 * longest)
-    if math.isinf(stop):
-        raise click.BadParameter("inf is outside the valid range: a finite distance", ctx=ctx,
-                                 param=param_named(ctx, "high"))
-    _range(ctx, start, stop, "high")
-    with library_errors(ctx), ladder_errors(ctx):
-        data = dof_data(focal, apertures, c, log_space(start, stop, POINTS), model, distance_from, lens, diffraction,
-                        wavelength, tolerance)
-    used = " / ".join(data.extra["models"])
-    data.scene = f"{_lens_label(focal)} · " + footer(used, cocs, origin, chosen.label, distance_from)
+    data = dof_chart(focal_lengths_mm=flatten(focal_length), f_numbers=apertures, coc_mm=c,
+                     from_mm=single(ctx, low, "--from"), to_mm=single(ctx, high, "--to"), model=model,
+                     distance_from=distance_from, lens=lens, diffraction=diffraction, wavelength_nm=wavelength,
+                     tolerance=tolerance)
+    data.scene += " · " + footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
     return data
 
 
@@ -363,27 +313,12 @@ def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, 
     same (camtool compose's question), or per f-number with one focal length;
     dotted lines are the blur of a background at infinity, f·m/N.
     """
-    from camtool.geometry.compose import magnification_for_fill
-    from camtool.render.chartdata import blur_data, log_space
-
-    focal = flatten(focal_length) or BLUR_FOCAL_LENGTHS_MM
-    apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
-    _one_list(ctx, focal, apertures)
-    size, share = single(ctx, subject_size, "--subject-size"), single(ctx, fill, "--fill")
-    given_m = single(ctx, magnification, "--magnification")
-    if (given_m is None) == (size is None or share is None):
-        raise click.UsageError("Give --subject-size and --fill, or --magnification.", ctx)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    frame = chosen.height_mm if fill_axis == "height" else chosen.width_mm
-    start = single(ctx, low, "--from") or 100.0
-    stop = single(ctx, high, "--to") or 100_000.0
-    _range(ctx, start, stop, "high")
-    with library_errors(ctx):
-        m = given_m if given_m is not None else magnification_for_fill(size, share, frame)
-        subject = f"m = {m:.4g}" if given_m is not None else f"subject {size / 1000:g} m fills {share:g} of the {fill_axis}"
-        scene = " · ".join([_lens_label(focal), f"f/{', '.join(f'{n:g}' for n in apertures)}", subject, chosen.label,
-                            "thin lens", "background distance from the subject"])
-        return blur_data(focal, apertures, m, chosen.width_mm, log_space(start, stop, POINTS), scene)
+    return blur_chart(f_numbers=required(ctx, f_numbers(f_number, exact_stops), "-N"), sensor_width_mm=chosen.width_mm,
+                      sensor_height_mm=chosen.height_mm, sensor_label=chosen.label, focal_lengths_mm=flatten(focal_length),
+                      subject_size_mm=single(ctx, subject_size, "--subject-size"), fill=single(ctx, fill, "--fill"),
+                      fill_axis=fill_axis, magnification=single(ctx, magnification, "--magnification"),
+                      from_mm=single(ctx, low, "--from"), to_mm=single(ctx, high, "--to"))
 
 
 @chart_command("aperture")
@@ -412,22 +347,17 @@ def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, h
     default focus; -s sets another), the f-number where the two are equal and
     their root-sum-square is smallest, the sharpest the whole scene can be.
     """
-    from camtool.render.chartdata import aperture_data, log_space
-
-    focal = required(ctx, focal_length, "-f")
-    f = single(ctx, focal, "-f")
+    f = single(ctx, required(ctx, focal_length, "-f"), "-f")
     n_low, n_high = single(ctx, low, "--from"), single(ctx, high, "--to")
-    _range(ctx, n_low, n_high, "high")
     closest, farthest = single(ctx, near, "--near"), single(ctx, far, "--far")
-    if closest is None or farthest is None:
-        raise click.UsageError("Give the scene's --near and --far.", ctx)
     focus = single(ctx, distance, "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    scene = f"{f:g} mm · " + footer("thin", cocs, origin, chosen.label, distance_from, f"λ {wavelength:g} nm")
-    with library_errors(ctx):
-        return aperture_data(f, c, closest, farthest, log_space(n_low, n_high, POINTS), focus, distance_from,
-                             pupil_mag if pupil_mag is not None else 1.0, wavelength, scene)
+    data = aperture_chart(focal_length_mm=f, coc_mm=c, near_mm=closest, far_mm=farthest, from_f_number=n_low,
+                          to_f_number=n_high, focus_mm=focus, distance_from=distance_from,
+                          pupil_magnification=pupil_mag, wavelength_nm=wavelength)
+    data.scene = f"{f:g} mm · " + footer("thin", cocs, origin, chosen.label, distance_from, f"λ {wavelength:g} nm")
+    return data
 
 
 @chart_command("trade")
@@ -447,9 +377,6 @@ def chart_trade(ctx: click.Context, focal_length, f_number, exact_stops, distanc
     --lens that has one, allows all five), timed on the spot on this machine
     (best of three runs), as camtool dof --model all measures them.
     """
-    from camtool.dof.ladder import focal_lengths
-    from camtool.render.chartdata import trade_data
-
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     with library_errors(ctx):
         focal = focal_lengths(lens, flatten(focal_length))
@@ -458,19 +385,14 @@ def chart_trade(ctx: click.Context, focal_length, f_number, exact_stops, distanc
     s = single(ctx, required(ctx, distance, "-s"), "-s")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
+    data = trade_chart(focal_length_mm=f, f_number=n, coc_mm=c, distance_mm=s, distance_from=distance_from, lens=lens,
+                       diffraction=diffraction, wavelength_nm=wavelength)
     shown = f"{s / 1000:.4g} m" if units == "metric" else f"{s / 304.8:.4g} ft"
-    scene = f"{f:.4g} mm f/{n:g} at {shown} · " + footer(None, cocs, origin, chosen.label, distance_from)
-    with library_errors(ctx), ladder_errors(ctx):
-        return trade_data(f, n, c, s, distance_from, lens, diffraction, wavelength, scene=scene)
+    data.scene = f"{f:.4g} mm f/{n:g} at {shown} · " + footer(None, cocs, origin, chosen.label, distance_from)
+    return data
 
 
-def _paper_size(params: dict[str, Any]) -> tuple[float, float]:
-    from camtool.render.chartdata import PAPERS
-
-    return PAPERS[params.get("paper") or "a6"]
-
-
-@chart_command("card", default_size=_paper_size)
+@chart_command("card", card=True)
 @focal_option
 @click.option("-N", "--f-number", "f_number", type=NumberType(0.7, 1024), multiple=True,
               help="f-numbers of the columns (default 2.8, 4, 5.6, 8, 11, 16, 22).")
@@ -493,27 +415,14 @@ def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance
     limits in the chosen units; the last row is the hyperfocal distance.
     Sized for the camera bag: A6 or a quarter of US Letter.
     """
-    from camtool.render.chartdata import card_data
-
     lens = lens_data(ctx, None, None, None)
     f = single(ctx, required(ctx, focal_length, "-f"), "-f")
-    given = flatten(f_number)
-    apertures = ([_exact(n) for n in given] if exact_stops else given) or CARD_F_NUMBERS
-    distances = flatten(distance) or (
-        [v * 304.8 for v in (2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 15.0, 25.0, 50.0)] + [math.inf] if units == "imperial"
-        else [v * 1000.0 for v in CARD_DISTANCES_M])
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    with library_errors(ctx), ladder_errors(ctx):
-        data = card_data(f, apertures, distances, c, model, distance_from, lens)
+    data = card_chart(focal_length_mm=f, coc_mm=c, f_numbers=flatten(f_number), exact_stops=exact_stops,
+                      distances_mm=flatten(distance), units=units, model=model, distance_from=distance_from, lens=lens)
     data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
     return data
-
-
-def _exact(n: float) -> float:
-    from camtool.core.units import exact_f_number
-
-    return float(exact_f_number(n))
 
 
 for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card):
