@@ -101,8 +101,9 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     --distance-from plane (the sensor stays put while the lens moves); the
     frames are solved by the --model chosen. More than 10000 frames is an
     error on --near (2000 with thick or paraxial, 25 with raytrace, which
-    solve each frame numerically, some ten evaluations of the model a frame). A rail plan streams (JSON, CSV, --field) up
-    to 10⁷ frames; a table holds at most 100000.
+    solve each frame numerically, some ten evaluations of the model a
+    frame). A rail plan streams (JSON, CSV, --field) up to 10⁷ frames; a
+    table holds at most 100000.
     """
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     n = _one(ctx, apertures, "-N", "f_number")
