@@ -248,9 +248,10 @@ def test_diffraction_answers_each_row_of_a_prescription_too() -> None:
 
 
 def test_the_other_branch_is_named_once_per_magnification() -> None:
-    result = CliRunner().invoke(cli, ["dof", "-f", "100", "-N", "8,11", "-s", "1m", "--diffraction"])
+    result = CliRunner().invoke(cli, ["dof", "-f", "100", "-N", "8,11", "-s", "1m", "--diffraction"],
+                                env={"COLUMNS": None})  # the table as wide as it needs, whatever the caller's terminal
     assert result.exit_code == 0
-    footer = result.output.strip().splitlines()[-1]
+    footer = result.stdout.strip().splitlines()[-1]
     assert footer.count("7.87") == 1
 
 

@@ -8,18 +8,9 @@ from typing import Any
 import click
 
 from camtool.cli.params import flatten
+from camtool.cli.params import one_value as one_value  # the option callback, where the commands import it
 from camtool.core.units import TStop, exact_f_number
 from camtool.render.columnar import ColumnRows
-
-
-def one_value(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
-    """Option callback: the single value of a list-typed option (``25mm``), or a usage error for a list."""
-    if value is None:
-        return None
-    values = value if isinstance(value, list) else [value]
-    if len(values) != 1:
-        raise click.BadParameter("takes one value", ctx=ctx, param=param)
-    return float(values[0])
 
 
 def single(ctx: click.Context, values: Any, option: str) -> Any:

@@ -16,7 +16,7 @@ from typing import Any, TypeVar
 
 import click
 
-from camtool.cli.params import FNumberType, LengthType, NumberType
+from camtool.cli.params import FNumberType, LengthType, NumberType, one_value
 from camtool.core import ranges
 from camtool.core.errors import DomainError, InputError
 from camtool.core.planes import FOCUS_PLANES
@@ -111,17 +111,10 @@ def preset_completion(kind: str) -> Callable[[click.Context, click.Parameter, st
     return complete
 
 
-def _one_number(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
-    """The one number of a single-value option typed as a list type (one bound, written once)."""
-    from camtool.cli.common import one_value
-
-    return one_value(ctx, param, value)
-
-
 sensor_options = stack(
     click.option("--sensor", metavar="NAME|WxH", shell_complete=preset_completion("sensor"),
                  help="Sensor preset (full-frame, aps-c, m43, ...) or size in mm (36x24). Default: full frame."),
-    click.option("--crop", type=NumberType(*ranges.CROP_FACTOR), callback=_one_number,
+    click.option("--crop", type=NumberType(*ranges.CROP_FACTOR), callback=one_value,
                  help="Crop factor relative to 36 x 24 mm, instead of --sensor."),
 )
 

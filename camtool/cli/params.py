@@ -213,3 +213,13 @@ class PointType(click.ParamType):
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
     """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]
+
+
+def one_value(ctx: click.Context, param: click.Parameter, value: Any) -> float | None:
+    """Option callback: the single value of a list-typed option (``25mm``), or a usage error for a list."""
+    if value is None:
+        return None
+    values = value if isinstance(value, list) else [value]
+    if len(values) != 1:
+        raise click.BadParameter("takes one value", ctx=ctx, param=param)
+    return float(values[0])
