@@ -147,6 +147,11 @@ class _Scene(NamedTuple):
 
 
 def _size(*values: Any) -> int:
+    """How many scenes the values broadcast to (1 for scalars: numpy is imported only when an array is given)."""
+    from camtool.core.arrays import is_scalar
+
+    if all(is_scalar(v) for v in values):
+        return 1
     import numpy as np
 
     return int(np.broadcast(*(np.asarray(v, dtype=float) for v in values)).size)
