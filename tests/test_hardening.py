@@ -8,6 +8,7 @@ presets carry, and from identities of the thin-lens limits.
 
 from __future__ import annotations
 
+import errno
 import json
 import math
 import os
@@ -127,7 +128,7 @@ def test_fixed_f_number_too_wide_names_n_and_what_it_needs() -> None:
 
 def test_missing_presets_file_is_exit_1_even_unused() -> None:
     assert error_line("dof", "-f", "50", "-N", "8", "-s", "3", "--presets", "/nonexistent.yaml", code=1) == (
-        "Error: Invalid value for '--presets': /nonexistent.yaml: cannot read the file: No such file or directory")
+        "Error: Invalid value for '--presets': /nonexistent.yaml: cannot read the file: " + os.strerror(errno.ENOENT))  # the C library's words
 
 
 def test_broken_presets_file_is_exit_1_with_line_even_unused(tmp_path: Path) -> None:
