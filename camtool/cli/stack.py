@@ -26,7 +26,7 @@ from camtool.cli.options import (
 )
 from camtool.cli.params import FNumberType, NumberType
 from camtool.core.errors import DomainError, InputError
-from camtool.dof.ladder import focal_lengths, model_choices, model_help
+from camtool.dof.ladder import model_choices, model_help
 from camtool.plans.stack import DEFAULT_OVERLAP, bracket_rows, bracket_stack, rail_rows, rail_stack, stack_mode
 from camtool.render.columns import NUMBER, TEXT, Column
 
@@ -113,10 +113,10 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     p = pupil_and_hiatus(ctx, pupil_mag, hiatus)[0]
+    focal = flatten(focal_length)
+    f = _one(ctx, focal, "-f", "focal_length") if focal else None
     if mode == "rail":
         m = _one(ctx, wanted_m, "-m", "magnification")
-        focal = flatten(focal_length)
-        f = _one(ctx, focal, "-f", "focal_length") if focal else None
         try:
             rail = _usage(ctx, lambda: rail_stack(
                 depth_mm=float(depth), f_number=n, magnification=m, coc_mm=float(cocs[0]), criterion=criterion,
@@ -127,14 +127,11 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
                    if error.param == "depth_mm" else bad_parameter(ctx, error)) from None
         return _rail(ctx, rail, fmt, coc_origin)
     with library_errors(ctx):
-        focal = required(ctx, focal_lengths(lens, flatten(focal_length)), "-f")
-    f = _one(ctx, focal, "-f", "focal_length")
-    with library_errors(ctx):
-        plan = bracket_stack(focal_length_mm=f, f_number=n, coc_mm=float(cocs[0]), near_mm=float(near),
+        plan = _usage(ctx, lambda: bracket_stack(focal_length_mm=f, f_number=n, coc_mm=float(cocs[0]), near_mm=float(near),
                              far_mm=float(far), overlap=float(overlap), criterion=criterion, model=model, lens=lens,
                              lens_preset=ctx.meta.get(LENS), pupil_magnification=p, wavelength_nm=wavelength,
                              diffraction=diffraction, tolerance=tolerance, distance_from=distance_from,
-                             lens_name=ctx.params.get("lens"))
+                             lens_name=ctx.params.get("lens")))
     note = ""
     if fmt == "table":
         what = f"{plan.criterion} depth" + (" (λ/NA², as a CoC of 2λN)" if plan.criterion == "wave" else "")
@@ -147,7 +144,7 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     return Output(bracket_rows(plan), COLUMNS, KEYS, note)
 
 
-SPELLING = {"magnification": "-m"}
+SPELLING = {"magnification": "-m", "focal_length": "-f"}
 """How this command's messages spell an input (``--name`` otherwise)."""
 
 

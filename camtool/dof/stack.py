@@ -294,7 +294,7 @@ def bracket_plan(focal_length_mm: float, f_number: float, coc_mm: float, near_mm
 
     def focus_for_near(wanted: float, guess: float) -> float:
         solved = limits
-        if solved is None:
+        if not numeric or solved is None:
             return closed_focus_for_near(wanted, guess)
         try:  # the thin lens's answer, the centre of the first bracket
             start = closed_focus_for_near(wanted, min(guess, k))

@@ -20,7 +20,7 @@ from collections.abc import Iterator
 from typing import Any, NamedTuple
 
 from camtool.core.errors import DomainError, InputError
-from camtool.dof.ladder import LensData, depth_of_field, hyperfocal_choices
+from camtool.dof.ladder import LensData, depth_of_field, focal_lengths, hyperfocal_choices
 from camtool.dof.stack import (
     MAX_RAIL_FRAMES,
     BracketFrame,
@@ -244,13 +244,14 @@ def _rung(model: str, lens: LensData | None) -> str:
     return "raytrace" if lens.prescription is not None else "thick"
 
 
-def bracket_stack(*, focal_length_mm: float, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
+def bracket_stack(*, focal_length_mm: float | None, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
                   overlap: float = DEFAULT_OVERLAP, criterion: str | None = None, model: str = "auto",
                   lens: LensData | None = None, lens_preset: Any = None, pupil_magnification: float = 1.0,
                   wavelength_nm: float = 550.0, diffraction: bool = False, tolerance: float = 0.01,
                   distance_from: str = "sensor", lens_name: str | None = None) -> BracketStack:
-    """A focus-bracketing plan: the rung, the lens's own focusing, the limits, and every frame.
+    """A focus-bracketing plan: the focal length, the rung, the lens's own focusing, the limits, and every frame.
 
+    The focal length is the one given, else the prescription's.
     ``auto`` is thin without lens data, raytrace with a prescription, else
     thick. A lens preset with a published closest focus focuses internally
     (:func:`camtool.dof.stack.internal_bracket_plan`); otherwise the frames are
@@ -272,13 +273,16 @@ def bracket_stack(*, focal_length_mm: float, f_number: float, coc_mm: float, nea
     >>> len(s.frames), s.model, s.frames[-1].distance_mm == 24.0 ** 2 / (11.0 * 0.03) + 24.0
     (2, 'thin', True)
     """
+    focal = focal_lengths(lens, [] if focal_length_mm is None else [focal_length_mm])
+    if not focal:
+        raise InputError("focal_length", "Missing option '{focal_length}'.", usage=True)
+    f, n = float(focal[0]), float(f_number)
     chosen = criterion or "classic"
     c = coc_mm
     if chosen == "wave":
         c = float(wave_coc_mm(f_number, 0.0, pupil_magnification, wavelength_nm))
     elif diffraction:
         c = _usable(f_number, c, 0.0, pupil_magnification, wavelength_nm)
-    f, n = float(focal_length_mm), float(f_number)
     rung = _rung(model, lens)
     numeric = rung not in ("thin", "approx")
     one_h = rung in hyperfocal_choices() and (lens is None or lens.prescription is None)
@@ -300,9 +304,10 @@ def bracket_stack(*, focal_length_mm: float, f_number: float, coc_mm: float, nea
         return BracketStack(plan.frames, plan.hyperfocal_mm, rung, chosen, c, (min(focal), max(focal)), distance_from)
     delta = float(lens.hiatus_mm) if lens is not None and lens.hiatus_mm is not None else 0.0
     limits = hyper = shown = None
-    if one_h:
-        hyper = hyperfocal_setting(model=rung, focal_length_mm=f, f_number=n, coc_mm=c, distance_from="lens",
-                                   lens=lens).hyperfocal_mm
+    if one_h:  # a closed form keeps its own H for the chain (the same up to the last bit), the shown one ends it
+        if numeric:
+            hyper = hyperfocal_setting(model=rung, focal_length_mm=f, f_number=n, coc_mm=c, distance_from="lens",
+                                       lens=lens).hyperfocal_mm
         shown = hyperfocal_setting(model=rung, focal_length_mm=f, f_number=n, coc_mm=c, distance_from=distance_from,
                                    lens=lens).hyperfocal_mm
     if numeric:
