@@ -36,7 +36,7 @@ from dataclasses import dataclass
 from typing import Annotated, Any, NamedTuple, TypeVar
 
 from camtool.core.domain import ISO_RANGE, SHUTTER_RANGE_S
-from camtool.core.errors import DomainError, InputError
+from camtool.core.errors import DomainError
 from camtool.core.ranges import (
     COC_MM,
     CROP_FACTOR,
@@ -706,16 +706,10 @@ def flash_exposure(*, guide_number_m: OptionalPositive = None, distance_mm: Opti
     >>> round(flash_exposure(guide_number_m=40, f_number=8, iso=400).distance_m, 6)  # 40·√4/8
     10.0
     """
-    from camtool.exposure.flash import solve_flash
+    from camtool.plans.flash import solve
 
-    given = {"guide_number_m": guide_number_m, "distance_m": None if distance_mm is None else distance_mm / 1000.0,
-             "f_number": f_number, "iso": iso}
-    if sum(value is None for value in given.values()) != 1:
-        left = ", ".join("{distance_mm}" if name == "distance_m" else "{" + name + "}"
-                         for name, value in given.items() if value is None) or "none"
-        raise InputError("guide_number_m", "give three of {guide_number_m}, {distance_mm}, {f_number} and {iso} to "
-                                           f"solve for the fourth (left out: {left})")
-    return solve_flash(**given, quoted_iso=guide_number_iso)
+    return solve(guide_number_m=guide_number_m, distance_mm=distance_mm, f_number=f_number, iso=iso,
+                 quoted_iso=guide_number_iso)
 
 
 @_checked

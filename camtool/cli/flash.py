@@ -9,7 +9,7 @@ from camtool.cli.common import rows_from
 from camtool.cli.exposure import single
 from camtool.cli.options import DISTANCE_M, library_errors, param_named
 from camtool.cli.params import FNumberType, NumberType, _ListType, flatten
-from camtool.core.units import UnitError
+from camtool.core.units import parse_guide_number
 from camtool.render.columns import TEXT, Column
 
 KEYS = ["guide_number_m", "guide_number_at_iso_m", "distance_mm", "f_number", "iso", "solved"]
@@ -31,16 +31,7 @@ class GuideNumberType(_ListType):
     valid = "> 0 (metres, or feet with ft: 40, 40m, 131ft)"
 
     def parse(self, text: str) -> float:
-        raw = str(text).strip().lower()
-        scale = 1.0
-        if raw.endswith("ft"):
-            raw, scale = raw[:-2].strip(), 0.3048
-        elif raw.endswith("m"):
-            raw = raw[:-1].strip()
-        try:
-            return float(raw) * scale
-        except ValueError:
-            raise UnitError(f"{text!r} is not a guide number (examples: 40, 40m, 131ft)") from None
+        return parse_guide_number(text)
 
 
 @camtool_command("flash", keys=KEYS)
@@ -67,20 +58,16 @@ def flash(ctx: click.Context, guide_number, gn_iso, distance, f_number, iso, fmt
       camtool flash -s 3 -N 5.6 --iso 100
     """
     from camtool.core.errors import DomainError
-    from camtool.exposure.flash import solve_flash
+    from camtool.plans import flash as plan
 
-    lists = {"guide_number_m": flatten(guide_number), "distance_m": [d / 1000.0 for d in flatten(distance)],
-             "f_number": flatten(f_number), "iso": flatten(iso)}
+    lists = dict(zip(plan.INPUTS, (flatten(guide_number), flatten(distance), flatten(f_number), flatten(iso))))
     given = {name: values for name, values in lists.items() if values}
-    if len(given) != 3:
-        names = {"guide_number_m": "--gn", "distance_m": "-s", "f_number": "-N", "iso": "--iso"}
-        missing = [names[n] for n in lists if n not in given]
-        raise click.UsageError(f"Give three of --gn, -s, -N, --iso and get the fourth (left out: {', '.join(missing)}).",
-                               ctx)
-    count, columns = combine_params(ctx, *given.values())
+    count, columns = combine_params(ctx, *given.values()) if len(given) == 3 else (0, [])
     with library_errors(ctx):
         try:
-            result = solve_flash(**dict(zip(given, columns)), quoted_iso=single(ctx, gn_iso, 100.0))
+            result = plan.solve(**{name: (column if len(given) == 3 else values[0])
+                                   for (name, values), column in zip(given.items(), columns or given.values())},
+                                quoted_iso=single(ctx, gn_iso, 100.0))
         except DomainError as error:
             raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, error.param)) from None
     rows = rows_from(count, {"guide_number_m": result.guide_number_m, "guide_number_at_iso_m":

@@ -32,6 +32,7 @@ PIXEL_PITCH_UM = LengthType("um", bounds=(ranges.PIXEL_PITCH_UM[0] / 1000, range
 
 # Library parameter name -> click parameter name, for error messages.
 PARAM_FOR = {
+    "guide_number_m": "guide_number",
     "pupil_magnification": "pupil_mag",
     "hiatus_mm": "hiatus",
     "wavelength_nm": "wavelength",
@@ -288,12 +289,11 @@ def file_error(ctx: click.Context, name: str, error: Exception) -> click.BadPara
 
 
 def _spelling(ctx: click.Context, name: str) -> str:
-    """How the user writes the input ``name`` on this command: its shortest option spelling that starts with --,
-    else its first (``--lens``, ``-f``)."""
+    """How the user writes the input ``name`` on this command: its first spelling (``--lens``, ``-f``, ``-N``)."""
     param = param_named(ctx, name)
     if param is None:
         return "--" + name.replace("_", "-")
-    return param.opts[0] if name == "focal_length" else max(param.opts, key=len)
+    return param.opts[0]
 
 
 def param_named(ctx: click.Context, name: str) -> click.Parameter | None:

@@ -244,3 +244,21 @@ def exact_f_number(nominal: float) -> float:
         if abs(nominal / exact - 1.0) <= 0.035:
             return exact
     return nominal
+
+
+def parse_guide_number(text: str | float) -> float:
+    """A flash guide number in metres: a bare number or ``40m`` is metres, ``131ft`` feet (× 0.3048).
+
+    >>> parse_guide_number("40"), parse_guide_number("40m"), round(parse_guide_number("131ft"), 4)
+    (40.0, 40.0, 39.9288)
+    """
+    raw = str(text).strip().lower()
+    scale = 1.0
+    if raw.endswith("ft"):
+        raw, scale = raw[:-2].strip(), 0.3048
+    elif raw.endswith("m"):
+        raw = raw[:-1].strip()
+    try:
+        return float(raw) * scale
+    except ValueError:
+        raise UnitError(f"{text!r} is not a guide number (examples: 40, 40m, 131ft)") from None
