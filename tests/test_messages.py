@@ -142,3 +142,9 @@ def test_a_fifo_nobody_writes_to_is_an_empty_batch_not_a_hang(tmp_path) -> None:
     os.mkfifo(fifo)
     result = run("fov", "-f", "50", "--batch", str(fifo), "--format", "json")
     assert result.exit_code == 0 and result.stdout == "[]\n"
+
+
+def test_stack_auto_is_the_ladder_s_auto() -> None:
+    # a hiatus of 0 is the thin lens's own: auto needs no thick data for it (it asked for --model thick, not typed)
+    result = run("stack", "-f", "100", "-N", "8", "--near", "1m", "--far", "3m", "--hiatus", "0")
+    assert result.exit_code == 0 and "thin model" in result.stdout, result.output

@@ -236,12 +236,24 @@ class BracketStack(NamedTuple):
     distance_from: str
 
 
-def _rung(model: str, lens: LensData | None) -> str:
+def _rung(model: str, lens: LensData | None, f: float, n: float, c: float, near_mm: float, plane: str) -> str:
+    """The rung of a bracketing plan. ``auto`` means what it means everywhere (:func:`camtool.dof.ladder.depth_of_field`):
+    the cheapest rung within the tolerance, here for the plan's most demanding scene, the nearest frame; and never
+    cheaper than :func:`camtool.dof.ladder.hyperfocal_rung`, so a bracket to infinity ends at the hyperfocal distance
+    ``camtool hyperfocal`` gives."""
     if model != "auto":
         return model
-    if lens is None:
-        return "thin"
-    return "raytrace" if lens.prescription is not None else "thick"
+    from camtool.core.errors import CamtoolError
+    from camtool.dof import rungs
+    from camtool.dof.ladder import depth_of_field, hyperfocal_rung
+
+    floor = hyperfocal_rung(lens)
+    try:
+        picked = str(depth_of_field("auto", f, n, c, near_mm, plane, lens).model).split("+")[0]
+    except CamtoolError:  # the near limit is out of this focus's reach: the plan's own checks say why
+        return floor
+    order = rungs.names()
+    return max(picked, floor, key=order.index) if picked in order else floor
 
 
 def bracket_stack(*, focal_length_mm: float | None, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
@@ -252,8 +264,9 @@ def bracket_stack(*, focal_length_mm: float | None, f_number: float, coc_mm: flo
     """A focus-bracketing plan: the focal length, the rung, the lens's own focusing, the limits, and every frame.
 
     The focal length is the one given, else the prescription's.
-    ``auto`` is thin without lens data, raytrace with a prescription, else
-    thick. A lens preset with a published closest focus focuses internally
+    ``auto`` is the cheapest rung within the tolerance for the nearest frame,
+    never cheaper than the hyperfocal distance's (see :func:`_rung`). A lens
+    preset with a published closest focus focuses internally
     (:func:`camtool.dof.stack.internal_bracket_plan`); otherwise the frames are
     :func:`camtool.dof.stack.bracket_plan`'s, refused when frame 1 would
     focus closer than the preset's closest focus. With the approx, thin and
@@ -283,7 +296,7 @@ def bracket_stack(*, focal_length_mm: float | None, f_number: float, coc_mm: flo
         c = float(wave_coc_mm(f_number, 0.0, pupil_magnification, wavelength_nm))
     elif diffraction:
         c = _usable(f_number, c, 0.0, pupil_magnification, wavelength_nm)
-    rung = _rung(model, lens)
+    rung = _rung(model, lens, f, n, c, near_mm, distance_from)
     numeric = rung not in ("thin", "approx")
     one_h = rung in hyperfocal_choices() and (lens is None or lens.prescription is None)
     focusing = focus_models(lens_preset)(f) if has_focus_model(lens_preset) else None
