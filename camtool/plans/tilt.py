@@ -260,8 +260,10 @@ def _models(model: str, lens: LensData | None) -> list[tuple[str, bool]]:
     traced = lens is not None and lens.prescription is not None
     if model == "raytrace" and not traced:
         raise ModelUnavailable("raytrace", "a lens prescription")
-    if model == "auto":
-        return [("thick", True)] if thick else [("thin", False)]
+    if model == "auto":  # the rung of the hyperfocal distance, as dof and hyperfocal have it at H and beyond
+        from camtool.dof.ladder import hyperfocal_rung
+
+        return [("thick", True)] if hyperfocal_rung(lens) == "thick" else [("thin", False)]
     if model == "all":
         return [("thin", False)] + ([("thick", True)] if thick else []) + ([("raytrace", True)] if traced else [])
     return [(model, model != "thin")]
