@@ -9,7 +9,6 @@ import click
 
 from camtool.cli.params import flatten
 from camtool.cli.params import one_value as one_value  # the option callback, where the commands import it
-from camtool.core.units import TStop, exact_f_number
 from camtool.render.columnar import ColumnRows
 
 
@@ -35,67 +34,41 @@ T_STOP_COLUMN = "camtool.t_stop_column"  # ctx.meta: a --batch -N column holds T
 
 
 def f_numbers(values: Sequence[list[float]], exact: bool) -> list[float]:
-    """f-numbers as typed (or mapped to exact stops with ``--exact-stops``); a T-stop becomes its f-number.
-
-    A T-stop (``-N T2``) gives N = T·√τ with the transmittance of the --lens
-    preset when it has both its widest f-number and T-stop, else the T-stop
-    stands in for the f-number (:func:`camtool.exposure.ev.resolve_f_number`).
-    The choices are kept in ``ctx.meta`` for the output's keys and footer.
-    """
-    flat = flatten(values)
-    if exact:
-        flat = [TStop(exact_f_number(n)) if isinstance(n, TStop) else exact_f_number(n) for n in flat]
-    ctx = click.get_current_context()
-    if not any(isinstance(n, TStop) for n in flat) and not ctx.meta.get(T_STOP_COLUMN):
-        return flat
+    """f-numbers by :func:`camtool.plans.equipment.apertures` (a T-stop with the --lens preset's transmittance);
+    the choices are kept in ``ctx.meta`` for :func:`t_stop_output`."""
     from camtool.cli.equipment import LENS
-    from camtool.exposure.ev import resolve_f_number
+    from camtool.plans.equipment import apertures
 
-    lens = ctx.meta.get(LENS)
-    transmittance = lens.transmittance if lens is not None else None
-    choices = [resolve_f_number(n, isinstance(n, TStop), transmittance) for n in flat]
-    ctx.meta[CHOICES] = (choices, lens)
-    return [c.f_number for c in choices]
+    ctx = click.get_current_context()
+    found = apertures(flatten(values), exact_stops=exact, lens=ctx.meta.get(LENS), t_stops=bool(ctx.meta.get(T_STOP_COLUMN)))
+    if found.choices is not None:
+        ctx.meta[CHOICES] = (found.choices, ctx.meta.get(LENS))
+    return found.f_numbers
 
 
 def t_stop_output(ctx: click.Context, out: Any) -> Any:
     """``out`` with the keys ``t_stop`` and ``f_number_from`` and a footer note, when a T-stop was typed."""
+    from camtool.plans.equipment import t_stop_note, t_stop_rows
+
     found = ctx.meta.pop(CHOICES, None)
     if found is None:
         return out
     choices, lens = found
-    by_n = {round(c.f_number, 9): c for c in choices}
-    shown = list(dict.fromkeys(round(float(row.get("f_number") or 0.0), 9) for row in out.rows))
-    if not set(shown) <= set(by_n) and len(shown) == len(choices):
-        by_n = dict(zip(shown, choices))  # f-numbers scaled by the command (a teleconverter's k·N), in order
-    for row in out.rows:
-        n = row.get("f_number")
-        choice = by_n.get(round(float(n), 9)) if isinstance(n, (int, float)) else None
-        if choice is None and len(by_n) == 1:
-            choice = choices[0]
+    for row, choice in zip(out.rows, t_stop_rows(choices, row_f_numbers=[row.get("f_number") for row in out.rows])):
         row["t_stop"] = choice.t_stop if choice is not None else None
         row["f_number_from"] = choice.source if choice is not None else None
     keys = [*out.keys, *(k for k in ("t_stop", "f_number_from") if k not in out.keys)]
-    return type(out)(out.rows, out.columns, keys, _t_stop_note(out.footer, choices, lens))
-
-
-def _t_stop_note(text: str, choices: Sequence[Any], lens: Any) -> str:
-    """The table footer with how the f-number was found for the T-stops typed."""
-    if not text:
-        return text
-    from camtool.exposure.ev import T_STOP_ERROR_HIGH, T_STOP_ERROR_LOW
-
-    sources = {c.source for c in choices}
-    if "transmittance" in sources:
-        tau = next(c.transmittance for c in choices if c.transmittance is not None)
-        note = (f"T-stops: f-number N = T·√τ, τ = {tau:.3g} from --lens {lens.id} (f/{lens.f_number_min:g}, "
-                f"T{lens.t_number_min:g}; taken as constant when stopped down)")
+    if not out.footer:
+        return type(out)(out.rows, out.columns, keys, out.footer)
+    note = t_stop_note(choices, lens=lens)
+    if note.transmittance is not None:
+        text = (f"T-stops: f-number N = T·√τ, τ = {note.transmittance:.3g} from --lens {note.lens_id} "
+                f"(f/{note.lens_f_number_min:g}, T{note.lens_t_number_min:g}; taken as constant when stopped down)")
     else:
-        over_low, over_high = 1 / (1 - T_STOP_ERROR_LOW) - 1, 1 / (1 - T_STOP_ERROR_HIGH) - 1
-        note = (f"T-stops stand in for the f-number (lens transmittance τ unknown): for τ 0.9–0.7 the f-number "
-                f"is {T_STOP_ERROR_LOW:.0%}–{T_STOP_ERROR_HIGH:.0%} below T, so N and the depth of field may be "
-                f"overstated by up to {over_low:.0%}–{over_high:.0%}")
-    return f"{text} · {note}"
+        text = (f"T-stops stand in for the f-number (lens transmittance τ unknown): for τ 0.9–0.7 the f-number is "
+                f"{note.below_low:.0%}–{note.below_high:.0%} below T, so N and the depth of field may be overstated "
+                f"by up to {note.overstated_low:.0%}–{note.overstated_high:.0%}")
+    return type(out)(out.rows, out.columns, keys, f"{out.footer} · {text}")
 
 
 def rows_from(count: int, columns: dict[str, Any]) -> ColumnRows:

@@ -10,9 +10,9 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
-from camtool.cli.options import library_errors, param_named
+from camtool.cli.options import library_errors
 from camtool.cli.params import FNumberType, NumberType, TimeType, _ListType, flatten
-from camtool.core.units import TStop, UnitError, exact_f_number
+from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
 from camtool.render.columns import NUMBER, TEXT, Column
 
@@ -189,24 +189,18 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
       camtool exposure --illuminance 37fc -N 4 --iso 400
       camtool exposure --lens cooke-s4i-50mm-t2 --ev100 12
     """
+    from camtool.cli.equipment import LENS
     from camtool.exposure.calculator import KEYS, work_out
     from camtool.exposure.timefmt import format_time
+    from camtool.plans.equipment import exposure_apertures
 
-    apertures = flatten(f_number)
-    lens_note = ""
-    lens = ctx.meta.get("camtool.lens")
     light_given = any((ev100, ev, light, luminance, illuminance))
-    if not apertures and lens is not None and lens.t_number_min and not equivalents and not (
-            light_given and shutter_s and iso):
-        apertures = [TStop(lens.t_number_min)]  # the lens wide open, as a cinematographer reads it
-        lens_note = f" · T{lens.t_number_min:g}: the widest T-stop of --lens {lens.id}"
-    t_stop = any(isinstance(n, TStop) for n in apertures)
-    if t_stop and not all(isinstance(n, TStop) for n in apertures):
-        raise click.BadParameter("give all f-numbers or all T-stops, not a mix", ctx=ctx,
-                                 param=param_named(ctx, "f_number"))
-    apertures = [float(n) for n in apertures]
-    if exact_stops:
-        apertures = [exact_f_number(n) for n in apertures]
+    with library_errors(ctx):
+        chosen = exposure_apertures(flatten(f_number), lens=ctx.meta.get(LENS), exact_stops=exact_stops,
+                                    solving=bool(light_given and shutter_s and iso), equivalents=equivalents)
+    apertures, t_stop = chosen.f_numbers, chosen.t_stop
+    lens_note = "" if chosen.widest_t_stop is None else \
+        f" · T{chosen.widest_t_stop:g}: the widest T-stop of --lens {ctx.meta[LENS].id}"
     film_data = _film(ctx, film, preset_files) if film else None
     lists = {"f_number": apertures, "shutter_s": flatten(shutter_s), "iso": flatten(iso), "ev100": flatten(ev100),
              "ev": flatten(ev), "luminance": flatten(luminance), "illuminance": flatten(illuminance)}

@@ -416,3 +416,140 @@ def _prescription_preset(name: str, database: Database | None) -> Any:
         close = db.suggestions("prescription", name)
     hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
     raise InputError("prescription", _braced(f"no file or prescription preset is named {name!r}{hint}"))
+
+
+class Apertures(NamedTuple):
+    """The f-numbers depth of field uses for the apertures given, and how each was found when T-stops were given."""
+
+    f_numbers: list[float]
+    choices: list[Any] | None
+    """One :class:`camtool.exposure.ev.FNumberChoice` per aperture when a T-stop was given (or ``t_stops``),
+    else None: f-numbers alone add no keys and no footer note."""
+
+
+def apertures(values: Sequence[float], *, exact_stops: bool = False, lens: Any = None,
+              t_stops: bool = False) -> Apertures:
+    """The f-number of each aperture given: an f-number as given, a T-stop (:class:`camtool.core.units.TStop`)
+    as N = T·√τ with the transmittance τ of ``lens`` when the preset has both its widest f-number and T-stop,
+    else the T-stop stands in for the f-number (:func:`camtool.exposure.ev.resolve_f_number`).
+
+    ``exact_stops`` first maps each nominal value to the exact 2^(k/6) stop it
+    labels (a T-stop stays a T-stop); ``t_stops`` keeps the choices even when
+    no value is a T-stop (a --batch column that holds some).
+
+    >>> from types import SimpleNamespace
+    >>> from camtool.core.units import TStop
+    >>> found = apertures([TStop(2 / 0.75 ** 0.5)], lens=SimpleNamespace(transmittance=0.75))
+    >>> round(found.f_numbers[0], 12), found.choices[0].source   # f/2 at 75 % is T2.3 (Wikipedia, F-number)
+    (2.0, 'transmittance')
+    >>> apertures([5.6], exact_stops=True)
+    Apertures(f_numbers=[5.656854249492381], choices=None)
+    """
+    from camtool.core.units import exact_f_number
+
+    flat = list(values)
+    if exact_stops:
+        flat = [TStop(exact_f_number(n)) if isinstance(n, TStop) else exact_f_number(n) for n in flat]
+    if not t_stops and not any(isinstance(n, TStop) for n in flat):
+        return Apertures(flat, None)
+    from camtool.exposure.ev import resolve_f_number
+
+    transmittance = getattr(lens, "transmittance", None) if lens is not None else None
+    choices = [resolve_f_number(n, isinstance(n, TStop), transmittance) for n in flat]
+    return Apertures([c.f_number for c in choices], choices)
+
+
+def t_stop_rows(choices: Sequence[Any], *, row_f_numbers: Sequence[Any]) -> list[Any]:
+    """Which choice of :func:`apertures` each output row shows (None for a row it cannot be told), from the row's
+    f-number: the same f-number, or, when a command scaled every f-number (a teleconverter's k·N), the one in the
+    same order; a single choice goes with every row.
+
+    >>> from camtool.exposure.ev import resolve_f_number
+    >>> t2, t4 = resolve_f_number(2.0, True), resolve_f_number(4.0, True)
+    >>> [c.t_stop for c in t_stop_rows([t2, t4], row_f_numbers=[2.8, 5.6, 2.8])]  # ×1.4: in order
+    [2.0, 4.0, 2.0]
+    """
+    by_n = {round(c.f_number, 9): c for c in choices}
+    shown = list(dict.fromkeys(round(float(n or 0.0), 9) for n in row_f_numbers))
+    if not set(shown) <= set(by_n) and len(shown) == len(choices):
+        by_n = dict(zip(shown, choices))
+    out = []
+    for n in row_f_numbers:
+        choice = by_n.get(round(float(n), 9)) if isinstance(n, (int, float)) else None
+        if choice is None and len(by_n) == 1:
+            choice = choices[0]
+        out.append(choice)
+    return out
+
+
+class TStopNote(NamedTuple):
+    """The facts a footer states about the T-stops given: the lens transmittance used, or the stand-in's bounds."""
+
+    transmittance: float | None
+    """τ from the lens preset (N = T·√τ, taken as constant when stopped down), or None: T stands in for N."""
+    lens_id: str | None
+    lens_f_number_min: float | None
+    lens_t_number_min: float | None
+    below_low: float
+    """How far N lies below T for τ = 0.9 (1 − √0.9) ..."""
+    below_high: float
+    """... and for τ = 0.7 (1 − √0.7)."""
+    overstated_low: float
+    """How much a stand-in T overstates N for τ = 0.9 (1/√0.9 − 1) ..."""
+    overstated_high: float
+    """... and for τ = 0.7 (1/√0.7 − 1)."""
+
+
+def t_stop_note(choices: Sequence[Any], *, lens: Any = None) -> TStopNote:
+    """What the footer says of the T-stops: the transmittance of ``lens`` when any f-number came from it, else the
+    range by which a T-stop standing in for the f-number overstates it (τ 0.9 to 0.7, typical of cine lenses).
+
+    >>> from camtool.exposure.ev import resolve_f_number
+    >>> note = t_stop_note([resolve_f_number(2.0, True)])
+    >>> note.transmittance, round(note.below_low, 4), round(note.overstated_high, 4)  # 1 − √0.9, 1/√0.7 − 1
+    (None, 0.0513, 0.1952)
+    """
+    from camtool.exposure.ev import T_STOP_ERROR_HIGH, T_STOP_ERROR_LOW
+
+    over_low, over_high = 1 / (1 - T_STOP_ERROR_LOW) - 1, 1 / (1 - T_STOP_ERROR_HIGH) - 1
+    tau = next((c.transmittance for c in choices if c.source == "transmittance" and c.transmittance is not None), None)
+    if tau is None or lens is None:
+        return TStopNote(None, None, None, None, T_STOP_ERROR_LOW, T_STOP_ERROR_HIGH, over_low, over_high)
+    return TStopNote(tau, lens.id, lens.f_number_min, lens.t_number_min, T_STOP_ERROR_LOW, T_STOP_ERROR_HIGH,
+                     over_low, over_high)
+
+
+class ExposureApertures(NamedTuple):
+    """The apertures ``camtool exposure`` uses: as given (T-stops used as they are), or a cine lens's widest T-stop."""
+
+    f_numbers: list[float]
+    t_stop: bool
+    """Whether they are T-stops (then all are)."""
+    widest_t_stop: float | None
+    """The lens's widest T-stop when it was taken because no aperture was given, else None."""
+
+
+def exposure_apertures(values: Sequence[float], *, lens: Any = None, exact_stops: bool = False,
+                       solving: bool = False, equivalents: bool = False) -> ExposureApertures:
+    """The apertures of an exposure: all f-numbers or all T-stops (a mix is refused, on ``f_number``); none given
+    with a cine ``lens`` (one with a widest T-stop) is that lens wide open, unless ``equivalents`` are listed or
+    the aperture is ``solving`` (solved from a light level, a time and an ISO). ``exact_stops`` maps each to the
+    exact 2^(k/6) stop it labels.
+
+    >>> from types import SimpleNamespace
+    >>> exposure_apertures([], lens=SimpleNamespace(t_number_min=2.0))
+    ExposureApertures(f_numbers=[2.0], t_stop=True, widest_t_stop=2.0)
+    >>> round(exposure_apertures([22.0], exact_stops=True).f_numbers[0], 4)  # 2^(9/2)
+    22.6274
+    """
+    from camtool.core.units import exact_f_number
+
+    flat, widest = list(values), None
+    if not flat and lens is not None and getattr(lens, "t_number_min", None) and not equivalents and not solving:
+        widest = lens.t_number_min
+        flat = [TStop(widest)]  # the lens wide open, as a cinematographer reads it
+    t_stop = any(isinstance(n, TStop) for n in flat)
+    if t_stop and not all(isinstance(n, TStop) for n in flat):
+        raise InputError("f_number", "give all f-numbers or all T-stops, not a mix")
+    numbers = [float(n) for n in flat]
+    return ExposureApertures([exact_f_number(n) for n in numbers] if exact_stops else numbers, t_stop, widest)
