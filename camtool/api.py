@@ -58,9 +58,11 @@ from camtool.geometry.compose import Composition
 from camtool.geometry.fov import FieldOfView
 from camtool.geometry.thinlens import FocusGeometry
 from camtool.plans.photo import PhotoAnswer
+from camtool.plans.stack import BracketStack, RailStack
 from camtool.plans.tilt import TiltAnswer
 
 __all__ = [
+    "BracketStack",
     "Composition",
     "DepthOfField",
     "DofLimits",
@@ -73,8 +75,10 @@ __all__ = [
     "HyperfocalDistance",
     "LensData",
     "PhotoAnswer",
+    "RailStack",
     "StarLimits",
     "TiltAnswer",
+    "bracket_stack",
     "circle_of_confusion",
     "composition",
     "depth_of_field",
@@ -89,6 +93,7 @@ __all__ = [
     "plan_exposure",
     "preset",
     "preset_names",
+    "rail_stack",
     "star_trail_limits",
     "tilt",
 ]
@@ -190,6 +195,14 @@ Along = Annotated[str, _Kind("choice", choices=("sight", "axis"))]
 AnglesFrom = Annotated[str, _Kind("choice", choices=("film", "lens", "horizon"))]
 HingeFrom = Annotated[str, _Kind("choice", choices=("lens", "pupil"))]
 OptionalRule = Annotated[Any, _Kind("text", optional=True)]
+Overlap = Annotated[float, _Kind("number", scalar=True, bounds=(0.0, 0.99), zero_ok=True)]
+Criterion = Annotated[Any, _Kind("choice", optional=True, choices=("classic", "defocus", "wave"))]
+RealMagnification = Annotated[float, _Kind("number", scalar=True, bounds=MAGNIFICATION)]
+RealDistance = Annotated[float, _Kind("number", scalar=True, bounds=DISTANCE_MM, unit="mm")]
+RealDistanceOrInf = Annotated[float, _Kind("number", scalar=True, allow_inf=True, bounds=DISTANCE_MM, unit="mm")]
+RealFNumber = Annotated[float, _Kind("number", scalar=True, bounds=F_NUMBER)]
+RealPupilMagnification = Annotated[float, _Kind("number", scalar=True, bounds=PUPIL_MAGNIFICATION)]
+RealWavelength = Annotated[float, _Kind("number", scalar=True, bounds=(200.0, 2000.0), unit="nm")]
 OptionalSensorSide = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=SENSOR_SIDE_MM, unit="mm")]
 OptionalText = Annotated[Any, _Kind("text", optional=True)]
 OptionalPrescription = Annotated[Any, _Kind("prescription", optional=True)]
@@ -881,3 +894,53 @@ def photo(
     return photo_answer(reading, path=path, distance_mm=distance_mm, sensor_mm=sensor, coc_mm=coc_mm,
                         coc_rule=coc_rule, pixel_pitch_mm=pixel_pitch_mm, distance_from=distance_from, model=model,
                         lens_preset=lens_preset, presets=PresetIndex(load_db))
+
+
+@_checked
+def rail_stack(depth_mm: RealDistance, f_number: RealFNumber, magnification: RealMagnification, coc_mm: RealCoC, *,
+               criterion: Criterion = None, overlap: Overlap = 0.2, pupil_magnification: RealPupilMagnification = 1.0,
+               wavelength_nm: RealWavelength = 550.0, focal_length_mm: RealFocalLength = None,
+               diffraction: Flag = False) -> RailStack:
+    """A focus stack on a macro rail, as ``camtool stack -m M --depth D``: how many frames and the rail step.
+
+    The criterion is ``wave`` (the wave-optics depth) from 1:1 up unless named; the plan's ``frames`` and
+    ``plan.step_mm`` are the answer (``camtool.plans.stack.rail_rows`` gives every frame, a chunk at a time).
+
+    Examples
+    --------
+    >>> s = rail_stack(10.0, 8.0, 1.0, 0.03, criterion="classic", overlap=0.0)
+    >>> s.frames, round(s.plan.step_mm, 4)  # the classic depth at 1:1, 2·N·c·(1 + m)/m² = 0.96 mm a frame
+    (11, 0.96)
+    """
+    from camtool.plans.stack import rail_stack as plan
+
+    return plan(depth_mm=depth_mm, f_number=f_number, magnification=magnification, coc_mm=coc_mm, criterion=criterion,
+                overlap=overlap, pupil_magnification=pupil_magnification, wavelength_nm=wavelength_nm,
+                focal_length_mm=focal_length_mm, diffraction=diffraction)
+
+
+@_checked
+def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_mm: RealCoC, near_mm: RealDistance,
+                  far_mm: RealDistanceOrInf, *, overlap: Overlap = 0.2, criterion: Criterion = None,
+                  model: Model = "auto", distance_from: DistanceFrom = "sensor",
+                  pupil_magnification: OptionalPupilMagnification = None, hiatus_mm: OptionalReal = None,
+                  prescription: OptionalPrescription = None, lens: OptionalText = None) -> BracketStack:
+    """Focus distances that cover ``near_mm`` to ``far_mm`` by the focus ring, as ``camtool stack --near --far``.
+
+    Each frame's far limit meets the next frame's near limit (less ``overlap``); a bracket to infinity ends
+    at the hyperfocal distance :func:`hyperfocal_distance` gives for the same lens, model and CoC. ``lens``
+    names a lens preset (one that focuses internally is bracketed at its own focal length per frame).
+
+    Examples
+    --------
+    >>> s = bracket_stack(24, 11, 0.03, 500, float("inf"), overlap=0.0, distance_from="lens")
+    >>> len(s.frames), s.frames[-1].distance_mm == 24 ** 2 / (11 * 0.03) + 24  # ends at H = f²/(Nc) + f
+    (2, True)
+    """
+    from camtool.plans.stack import bracket_stack as plan
+
+    preset_lens = preset("lens", lens) if lens is not None else None
+    data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
+                overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,
+                pupil_magnification=pupil_magnification or 1.0, distance_from=distance_from, lens_name=lens)

@@ -79,6 +79,9 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "film": st.sampled_from(["hp5", "tri-x", "portra-400", "velvia-50", "no-such-film"]),
     "metered_s": st.floats(1e-4, 1e4),
     "kind": st.sampled_from(["sensor", "camera", "lens", "prescription", "scene", "film"]),
+    "depth_mm": st.floats(0.1, 100.0),
+    "criterion": st.sampled_from([None, "classic", "defocus", "wave"]),
+    "overlap": st.floats(0.0, 0.9),
     "tilt_deg": st.one_of(st.none(), st.floats(-30.0, 30.0)),
     "swing_deg": st.one_of(st.none(), st.floats(-30.0, 30.0)),
     "hinge_mm": st.one_of(st.none(), st.floats(100.0, 1e5)),
@@ -130,6 +133,7 @@ WRONG_TEXT = [None, 1, 1.5, True, b"thin", ["thin"], "", "THIN", "d/0", "d/-5", 
 INFINITE_OK = {"front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hyperfocal_mm", "lens_distance_mm",
                "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
                "radius_mm",  # a prescription's flat surface
+               "step_mm", "extension_step_mm", "covered_mm",  # a rail frame sharp to infinity: one frame covers all
                "focus_distance_mm", "focus_distance_max_mm", "far_max_mm", "far_min_mm"}  # a photo focused at infinity
 
 
@@ -142,7 +146,8 @@ def hostile_arrays() -> st.SearchStrategy[Any]:
 def argument(name: str) -> st.SearchStrategy[Any]:
     valid = VALID[name]
     if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name", "lens",
-                "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum", "points"):
+                "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum", "points",
+                "criterion"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()
@@ -227,7 +232,8 @@ def test_every_public_function_answers_or_names_the_argument(name: str) -> None:
 def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
                 "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
-                "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt"}
+                "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt", "rail_stack",
+                "bracket_stack"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)
