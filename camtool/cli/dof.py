@@ -20,7 +20,7 @@ from camtool.cli.closeup import (
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, flatten, footer, required
 from camtool.cli.equipment import LENS, input_errors, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import ladder_errors, lens_data, model_options
+from camtool.cli.lensdata import lens_data, model_options
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
@@ -119,7 +119,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     _, (f, n, s, c) = combine_params(ctx, focal, apertures, distances, cocs)
-    with library_errors(ctx), ladder_errors(ctx), unreachable_errors(ctx):
+    with library_errors(ctx), unreachable_errors(ctx):
         table = dof_table(model=model, focal_length_mm=f, f_number=n, wanted=s, coc_mm=c,
                           by_magnification=bool(wanted_m), distance_from=distance_from, lens=lens,
                           pupil_magnification=pupil_mag, hiatus_mm=hiatus, lens_preset=ctx.meta.get(LENS),

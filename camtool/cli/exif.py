@@ -15,7 +15,7 @@ import click
 
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.equipment import CAMERA, LENS, open_presets, resolve_sensor
-from camtool.cli.lensdata import load_prescription, model_options
+from camtool.cli.lensdata import lens_data, model_options
 from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, param_named, sensor_options
 from camtool.core.text import printable
 from camtool.dof.ladder import model_choices
@@ -136,7 +136,7 @@ def _settings(ctx: click.Context, sensor: str | None, crop: float | None, coc: f
         except UnitError as error:
             raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "coc_rule")) from None
     if prescription_file is not None:
-        given["prescription"] = load_prescription(ctx, prescription_file)
+        given["prescription"] = getattr(lens_data(ctx, prescription_file=prescription_file), "prescription", None)
     return given
 
 

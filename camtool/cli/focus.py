@@ -8,7 +8,7 @@ from camtool.cli.closeup import FOCUS_COLUMN, branch_note, closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import WavelengthType, lens_geometry_options, pupil_and_hiatus
+from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
@@ -19,7 +19,7 @@ from camtool.cli.options import (
     library_errors,
     sensor_options,
 )
-from camtool.cli.params import NumberType, flatten
+from camtool.cli.params import NumberType, WavelengthType, flatten
 from camtool.core import ranges
 from camtool.plans import focus as plans
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column

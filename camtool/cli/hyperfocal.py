@@ -8,7 +8,7 @@ from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import ladder_errors, lens_data, lens_geometry_options
+from camtool.cli.lensdata import lens_data, lens_geometry_options
 from camtool.cli.options import (
     aperture_options,
     coc_options,
@@ -62,9 +62,9 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     count, (f, n, c) = combine_params(ctx, focal, apertures, cocs)
-    with library_errors(ctx), ladder_errors(ctx):
+    with library_errors(ctx):
         result = hyperfocal_plan(model=model, focal_length_mm=f, f_number=n, coc_mm=c, distance_from=distance_from,
-                                 lens=lens_data(ctx, pupil_mag, hiatus, None), lens_preset=ctx.meta.get(LENS),
+                                 lens=lens_data(ctx, pupil_mag, hiatus), lens_preset=ctx.meta.get(LENS),
                                  teleconverter=teleconverter)
     f, n = result.focal_length_mm, result.f_number
     rows = rows_from(count, {

@@ -1,122 +1,44 @@
 """Lens data for the model ladder from the command line: pupil magnification, hiatus, prescription.
 
-The options and their parameter types (``--tolerance``, ``--wavelength``,
-``--pupil-mag``, ``--hiatus``, ``--prescription``) and the glue to
-:func:`camtool.plans.equipment.lens_data`, which decides the precedence (values
-given by hand win over the ``--lens`` preset's) and loads a prescription.
+The options (``--tolerance``, ``--wavelength``, ``--pupil-mag``, ``--hiatus``,
+``--prescription``; their parameter types are :mod:`camtool.cli.params`) and
+the one call of :func:`camtool.plans.equipment.lens_data`, which decides the
+precedence (values given by hand win over the ``--lens`` preset's) and loads a
+prescription.
 """
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import click
 
 from camtool.cli.equipment import LENS
-from camtool.cli.options import library_errors, stack
-from camtool.core.units import UnitError, parse_length
-from camtool.dof.ladder import LensData
+from camtool.cli.options import stack
+from camtool.cli.params import PupilMagnificationType, SignedLengthType, ToleranceType
+from camtool.cli.params import WavelengthType as WavelengthType  # where the commands import it
+from camtool.dof.ladder import LensData as LensData
 from camtool.plans import equipment
 
 
-class ToleranceType(click.ParamType):
-    """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
-
-    name = "tolerance"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        text = str(value).strip()
-        try:
-            number = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
-        except ValueError:
-            self.fail(f"{value!r} is not a tolerance (examples: 1%, 0.5%, 0.01)", param, ctx)
-        if not 0.0 < number < 1.0:
-            self.fail(f"{text} is outside the valid range: above 0 and below 100 % (1 % = 0.01)", param, ctx)
-        return number
-
-
-class WavelengthType(click.ParamType):
-    """A wavelength in nm: ``550``, ``550nm`` or ``0.55um``; valid 200 to 2000 nm."""
-
-    name = "wavelength"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        text = str(value).strip().lower()
-        try:
-            nm = float(text[:-2]) if text.endswith("nm") else parse_length(text, "mm") * 1e6 \
-                if any(text.endswith(u) for u in ("um", "µm", "mm")) else float(text)
-        except (ValueError, UnitError):
-            self.fail(f"{value!r} is not a wavelength (examples: 550, 550nm, 0.55um)", param, ctx)
-        if not (200.0 <= nm <= 2000.0 and math.isfinite(nm)):
-            self.fail(f"{value} is outside the valid range: 200 to 2000 nm", param, ctx)
-        return nm
-
-
-def load_prescription(ctx: click.Context, path: str) -> Any:
-    """:func:`camtool.plans.equipment.load_prescription` (a file, or a prescription preset's name); a bad file
-    exits 1 naming it, an invalid one or an unknown name is one line on ``--prescription``."""
+def lens_data(ctx: click.Context, pupil_mag: float | None = None, hiatus: float | None = None,
+              prescription_file: str | None = None, preset_lens: Any = None) -> LensData | None:
+    """:func:`camtool.plans.equipment.lens_data` with ``preset_lens``, by default the ``--lens`` in ``ctx.meta``,
+    and the prescription file or preset named; a bad file exits 1 naming it, an invalid one or an unknown name is
+    one line on ``--prescription``."""
     from camtool.cli.equipment import open_presets
     from camtool.cli.options import bad_parameter, file_error
     from camtool.core.errors import InputError
     from camtool.core.files import FileProblem
 
     try:
-        return equipment.load_prescription(
-            path, database=lambda: open_presets(ctx, tuple(ctx.params.get("preset_files") or ())))
+        return equipment.lens_data(pupil_magnification=pupil_mag, hiatus_mm=hiatus, prescription=prescription_file,
+                                   lens_preset=ctx.meta.get(LENS) if preset_lens is None else preset_lens,
+                                   database=lambda: open_presets(ctx, tuple(ctx.params.get("preset_files") or ())))
     except FileProblem as problem:
         raise file_error(ctx, "prescription_file", problem) from None
     except InputError as error:
         raise bad_parameter(ctx, error) from None
-
-
-def lens_data(ctx: click.Context, pupil_mag: float | None, hiatus: float | None, prescription_file: str | None,
-              preset_lens: Any = None) -> LensData | None:
-    """:func:`camtool.plans.equipment.lens_data` with ``preset_lens``, by default the ``--lens`` in ``ctx.meta``."""
-    prescription = load_prescription(ctx, prescription_file) if prescription_file is not None else None
-    return equipment.lens_data(pupil_magnification=pupil_mag, hiatus_mm=hiatus, prescription=prescription,
-                               lens_preset=ctx.meta.get(LENS) if preset_lens is None else preset_lens)
-
-
-class SignedLengthType(click.ParamType):
-    """A length of either sign in mm (``-12``, ``3.5mm``, ``-1cm``), e.g. a hiatus."""
-
-    name = "length"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        text = str(value).strip()
-        sign = -1.0 if text.startswith("-") else 1.0
-        try:
-            mm = sign * parse_length(text.lstrip("+-"), "mm")
-        except UnitError as error:
-            self.fail(str(error), param, ctx)
-        if not math.isfinite(mm):
-            self.fail(f"{text} is outside the valid range: a finite length in mm, either sign", param, ctx)
-        return mm
-
-
-class PupilMagnificationType(click.ParamType):
-    """Pupil magnification P = exit/entrance pupil diameter; valid 0.05 to 20."""
-
-    name = "ratio"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        try:
-            number = float(str(value).strip())
-        except ValueError:
-            self.fail(f"{value!r} is not a number (examples: 0.6, 1, 2.5)", param, ctx)
-        if not 0.05 <= number <= 20.0:
-            self.fail(f"{value} is outside the valid range: 0.05 to 20 (exit over entrance pupil diameter)",
-                      param, ctx)
-        return number
 
 
 pupil_mag_option = click.option(
@@ -147,16 +69,12 @@ model_options = stack(
 """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
 
 
-ladder_errors = library_errors
-"""The ladder's errors (an unavailable model, a ray trace that fails) have the one translator."""
-
-
 def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,
                      hiatus: float | None = None) -> tuple[float, float, str]:
     """(P, δ, footer note) for focusing and angle of view (:func:`camtool.plans.closeup.pupil_and_hiatus`)."""
     from camtool.plans.closeup import pupil_and_hiatus as known
 
-    found = known(lens_data(ctx, pupil_mag, hiatus, None))
+    found = known(lens_data(ctx, pupil_mag, hiatus))
     return found.pupil_magnification, found.hiatus_mm, lens_note(found)
 
 

@@ -210,6 +210,80 @@ class PointType(click.ParamType):
         return distance, height
 
 
+class ToleranceType(click.ParamType):
+    """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
+
+    name = "tolerance"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip()
+        try:
+            number = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
+        except ValueError:
+            self.fail(f"{value!r} is not a tolerance (examples: 1%, 0.5%, 0.01)", param, ctx)
+        if not 0.0 < number < 1.0:
+            self.fail(f"{text} is outside the valid range: above 0 and below 100 % (1 % = 0.01)", param, ctx)
+        return number
+
+
+class WavelengthType(click.ParamType):
+    """A wavelength in nm: ``550``, ``550nm`` or ``0.55um``; valid 200 to 2000 nm."""
+
+    name = "wavelength"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip().lower()
+        try:
+            nm = float(text[:-2]) if text.endswith("nm") else parse_length(text, "mm") * 1e6 \
+                if any(text.endswith(u) for u in ("um", "µm", "mm")) else float(text)
+        except (ValueError, UnitError):
+            self.fail(f"{value!r} is not a wavelength (examples: 550, 550nm, 0.55um)", param, ctx)
+        if not (200.0 <= nm <= 2000.0 and math.isfinite(nm)):
+            self.fail(f"{value} is outside the valid range: 200 to 2000 nm", param, ctx)
+        return nm
+
+
+class SignedLengthType(click.ParamType):
+    """A length of either sign in mm (``-12``, ``3.5mm``, ``-1cm``), e.g. a hiatus."""
+
+    name = "length"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip()
+        sign = -1.0 if text.startswith("-") else 1.0
+        try:
+            mm = sign * parse_length(text.lstrip("+-"), "mm")
+        except UnitError as error:
+            self.fail(str(error), param, ctx)
+        if not math.isfinite(mm):
+            self.fail(f"{text} is outside the valid range: a finite length in mm, either sign", param, ctx)
+        return mm
+
+
+class PupilMagnificationType(click.ParamType):
+    """Pupil magnification P = exit/entrance pupil diameter; valid 0.05 to 20."""
+
+    name = "ratio"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        try:
+            number = float(str(value).strip())
+        except ValueError:
+            self.fail(f"{value!r} is not a number (examples: 0.6, 1, 2.5)", param, ctx)
+        if not 0.05 <= number <= 20.0:
+            self.fail(f"{value} is outside the valid range: 0.05 to 20 (exit over entrance pupil diameter)",
+                      param, ctx)
+        return number
+
+
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
     """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]

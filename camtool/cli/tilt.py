@@ -10,7 +10,7 @@ import click
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.common import f_numbers, footer
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import WavelengthType, hiatus_option, lens_data, pupil_mag_option
+from camtool.cli.lensdata import hiatus_option, lens_data, pupil_mag_option
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
@@ -22,7 +22,7 @@ from camtool.cli.options import (
     param_named,
     sensor_options,
 )
-from camtool.cli.params import AngleType, PointType, flatten
+from camtool.cli.params import AngleType, PointType, WavelengthType, flatten
 from camtool.plans.tilt import KEYS
 from camtool.render.columns import ANGLE, FNUMBER, SMALL, TEXT, Column
 
