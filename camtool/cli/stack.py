@@ -108,7 +108,8 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
     n = _one(ctx, apertures, "-N", "f_number")
     wanted_m = flatten(magnification)
-    mode = _usage(ctx, lambda: stack_mode(magnification=wanted_m, depth_mm=depth, near_mm=near, far_mm=far))
+    with library_errors(ctx):
+        mode = stack_mode(magnification=wanted_m, depth_mm=depth, near_mm=near, far_mm=far)
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, coc_origin = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
@@ -118,20 +119,21 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     if mode == "rail":
         m = _one(ctx, wanted_m, "-m", "magnification")
         try:
-            rail = _usage(ctx, lambda: rail_stack(
+            rail = rail_stack(
                 depth_mm=float(depth), f_number=n, magnification=m, coc_mm=float(cocs[0]), criterion=criterion,
                 overlap=float(overlap), pupil_magnification=p, wavelength_nm=wavelength, focal_length_mm=f,
-                diffraction=diffraction, model=model, lens_preset=ctx.meta.get(LENS)))
-        except DomainError as error:  # the plan's depth_mm is --depth, shown as a length
+                diffraction=diffraction, model=model, lens_preset=ctx.meta.get(LENS))
+        except (DomainError, InputError) as error:  # the plan's depth_mm is --depth, shown as a length
             raise (click.BadParameter(domain_message(error, "depth"), ctx=ctx, param=param_named(ctx, "depth"))
-                   if error.param == "depth_mm" else bad_parameter(ctx, error)) from None
+                   if isinstance(error, DomainError) and error.param == "depth_mm" else bad_parameter(ctx, error)) \
+                from None
         return _rail(ctx, rail, fmt, coc_origin)
     with library_errors(ctx):
-        plan = _usage(ctx, lambda: bracket_stack(focal_length_mm=f, f_number=n, coc_mm=float(cocs[0]), near_mm=float(near),
+        plan = bracket_stack(focal_length_mm=f, f_number=n, coc_mm=float(cocs[0]), near_mm=float(near),
                              far_mm=float(far), overlap=float(overlap), criterion=criterion, model=model, lens=lens,
                              lens_preset=ctx.meta.get(LENS), pupil_magnification=p, wavelength_nm=wavelength,
                              diffraction=diffraction, tolerance=tolerance, distance_from=distance_from,
-                             lens_name=ctx.params.get("lens")))
+                             lens_name=ctx.params.get("lens"))
     note = ""
     if fmt == "table":
         what = f"{plan.criterion} depth" + (" (λ/NA², as a CoC of 2λN)" if plan.criterion == "wave" else "")
@@ -142,21 +144,6 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
                 f"{overlap:g} · " + footer(None, cocs if plan.criterion == "classic" else None, coc_origin,
                                            chosen.label, distance_from))
     return Output(bracket_rows(plan), COLUMNS, KEYS, note)
-
-
-SPELLING = {"magnification": "-m", "focal_length": "-f"}
-"""How this command's messages spell an input (``--name`` otherwise)."""
-
-
-def _usage(ctx: click.Context, decide: Any) -> Any:
-    """``decide()``, its input errors spelled as this command's options (-m, --depth, --near, --far)."""
-    try:
-        return decide()
-    except InputError as error:
-        text = error.render(lambda name: SPELLING.get(name, "--" + name))
-        if error.usage:
-            raise click.UsageError(text, ctx) from None
-        raise click.BadParameter(text, ctx=ctx, param=param_named(ctx, error.param)) from None
 
 
 def _rail(ctx: click.Context, rail: Any, fmt: str, coc_origin: str) -> Output:
