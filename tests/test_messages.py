@@ -148,3 +148,8 @@ def test_stack_auto_is_the_ladder_s_auto() -> None:
     # a hiatus of 0 is the thin lens's own: auto needs no thick data for it (it asked for --model thick, not typed)
     result = run("stack", "-f", "100", "-N", "8", "--near", "1m", "--far", "3m", "--hiatus", "0")
     assert result.exit_code == 0 and "thin model" in result.stdout, result.output
+
+
+def test_a_list_where_one_value_applies_to_every_row_names_the_option() -> None:
+    message = _one_line_error(run("flash", "--gn", "20", "-s", "5", "--iso", "100", "--gn-iso", "100,200"))
+    assert "'--gn-iso'" in message

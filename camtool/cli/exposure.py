@@ -103,8 +103,11 @@ def single(ctx: click.Context, values: Any, default: float | None = None) -> Any
     if not flat:
         return default
     if any(v != flat[0] for v in flat[1:]):
-        raise click.UsageError(f"Give one value, not {', '.join(f'{v:g}' for v in flat)}, for a setting that applies "
-                               "to every row.", ctx)
+        message = f"Give one value, not {', '.join(f'{v:g}' for v in flat)}, for a setting that applies to every row."
+        param = next((p for p in ctx.command.params if p.name and ctx.params.get(p.name) is values), None)
+        if param is not None:  # the option typed, by name
+            raise click.BadParameter(message[0].lower() + message[1:], ctx=ctx, param=param)
+        raise click.UsageError(message, ctx)
     return flat[0]
 
 
