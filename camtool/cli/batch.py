@@ -312,6 +312,7 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
     defaults = {name: _single(params.get(name), name) for name, param in columns.params.items() if _vector(param)}
     writer = open_writer(params["fmt"], params["units"], fields)
     batch = _Batch(ctx, compute, params, defaults, columns, writer, on_error)
+    batch.fields = fields
     stream, name = open_source(source)
     try:
         with stream:
@@ -352,6 +353,7 @@ class _Batch:
                  defaults: dict[str, Any], columns: _Columns, writer: RowWriter, on_error: str) -> None:
         self.ctx, self.compute, self.params, self.defaults = ctx, compute, params, defaults
         self.columns, self.writer, self.on_error = columns, writer, on_error
+        self.fields: tuple[str, ...] = ()
         self.skipped = self.total = 0
         self.shape: tuple[list[Column], list[str]] | None = None
         self.fallback: list[str] = []
@@ -500,6 +502,14 @@ class _Batch:
 
         errors = list(errors)
         values, passed = self._parse(header, numbers, records, errors)
+        if self.fields and not self.total:  # a --field no row can have: refused before any row's message
+            from camtool.cli.command import DYNAMIC_KEYS
+            from camtool.cli.rows import check_fields
+
+            declared = list(getattr(self.ctx.command, "output_key_list", []))
+            if declared:
+                check_fields([f for f in self.fields if f not in DYNAMIC_KEYS and f not in self.columns.passed],
+                             declared)
         for name, column in values.items():
             param = self.columns.params[name]
             if _vector(param) and self.defaults[name] is None and not isinstance(column, list):
@@ -670,6 +680,8 @@ class _Batch:
         """
         if failed and self.writer.keys is None:
             return
+        if failed:  # the run's one line is its error: no note on columns left out of the partial table
+            self.writer.errors = None
         self.writer.close(self.fallback, [Column(k, k, TEXT) for k in self.fallback])
 
 
