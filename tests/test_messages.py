@@ -153,3 +153,9 @@ def test_stack_auto_is_the_ladder_s_auto() -> None:
 def test_a_list_where_one_value_applies_to_every_row_names_the_option() -> None:
     message = _one_line_error(run("flash", "--gn", "20", "-s", "5", "--iso", "100", "--gn-iso", "100,200"))
     assert "'--gn-iso'" in message
+
+
+def test_a_prescription_is_the_lens_beside_a_camera_with_a_lens_of_its_own() -> None:
+    result = run("dof", "--prescription", "nikon-z50-f1.8", "--camera", "apple-iphone-15-pro", "-N", "4", "-s", "3m",
+                 "--format", "json")
+    assert result.exit_code == 0, result.output

@@ -134,6 +134,7 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
             scene=scene_name, camera=camera_name, lens=lens_name,
             empty=[name for name in equipment.SCENE_FIELDS.values() if name in params and _empty(params[name])],
             sensor_given="sensor" not in params or not _empty(params.get("sensor")),
+            prescription_given=params.get("prescription_file") is not None,
             database=lambda: open_presets(ctx, files))
         for name, value in found.filled.items():
             _fill(ctx, params, name, value)

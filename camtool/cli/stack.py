@@ -102,7 +102,7 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     frames are solved by the --model chosen. More than 10000 frames is an
     error on --near (2000 with thick or paraxial, 25 with raytrace, which
     solve each frame numerically, some ten evaluations of the model a
-    frame). A rail plan streams (JSON, CSV, --field) up to 10⁷ frames; a
+    frame). A rail plan streams (JSON, CSV, --field) up to 10⁶ frames; a
     table holds at most 100000.
     """
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")

@@ -59,8 +59,8 @@ CRITERIA = ("classic", "wave")
 """``classic``: the circle-of-confusion depth; ``wave``: the quarter-wave depth λ/NA²."""
 
 _MM_PER_NM = 1e-6
-MAX_RAIL_FRAMES = 10_000_000
-"""The most frames of a rail plan: 10⁷, some 116 days of shooting at one frame a second."""
+MAX_RAIL_FRAMES = 1_000_000
+"""The most frames of a rail plan: 10⁶, some 12 days of shooting at one frame a second (written in a few seconds)."""
 
 
 def wave_coc_mm(f_number: Any, magnification: Any = 0.0, pupil_magnification: Any = 1.0,

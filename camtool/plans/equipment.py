@@ -223,12 +223,15 @@ class Equipment(NamedTuple):
 
 
 def resolve_equipment(*, scene: str | None = None, camera: str | None = None, lens: str | None = None,
-                      empty: Sequence[str] = (), sensor_given: bool = True, database: Database) -> Equipment:
+                      empty: Sequence[str] = (), sensor_given: bool = True, prescription_given: bool = False,
+                      database: Database) -> Equipment:
     """The scene, camera and lens presets named, and what the scene fills.
 
     ``empty`` are the inputs left empty that this command has (a scene
     fills only those); ``sensor_given`` is whether a sensor was given (a
-    scene's camera is then not used, nor its sensor). A camera with a lens
+    scene's camera is then not used, nor its sensor); a camera's own lens is
+    in use when no lens is named and no prescription given (a prescription
+    is the lens then). A camera with a lens
     of its own (a compact's, a phone's main module) brings that lens when no
     lens is named; a lens named, or a scene's, wins.
     """
@@ -249,7 +252,7 @@ def resolve_equipment(*, scene: str | None = None, camera: str | None = None, le
     body = find(database, "camera", camera, "camera") if camera else None
     if lens:
         glass = find(database, "lens", lens, "lens")
-    elif body is not None and getattr(body, "lens_id", None) is not None:
+    elif body is not None and getattr(body, "lens_id", None) is not None and not prescription_given:
         glass = find(database, "lens", body.lens_id, "camera")
     else:
         glass = None
