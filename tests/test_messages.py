@@ -159,3 +159,18 @@ def test_a_prescription_is_the_lens_beside_a_camera_with_a_lens_of_its_own() -> 
     result = run("dof", "--prescription", "nikon-z50-f1.8", "--camera", "apple-iphone-15-pro", "-N", "4", "-s", "3m",
                  "--format", "json")
     assert result.exit_code == 0, result.output
+
+
+def test_a_scene_s_value_a_prescription_refuses_names_the_scene() -> None:
+    message = _one_line_error(run("dof", "--scene", "landscape-24", "--prescription", "dgauss100", "--format", "json"))
+    assert "'--scene'" in message and "'--model'" not in message
+
+
+def test_a_flash_answer_beyond_the_largest_float_is_one_line() -> None:
+    message = _one_line_error(run("flash", "--gn", "20", "--iso", "100", "-s", "10ft,1e-320m"))
+    assert "'-s'" in message
+
+
+def test_a_scene_with_a_camera_beside_a_typed_camera_does_not_look_its_sensor_up() -> None:
+    result = run("dof", "--camera", "nikon-z-8", "--scene", "macro-1to1", "--format", "json")
+    assert result.exit_code in (0, 2) and "unknown sensor" not in result.stderr, result.output

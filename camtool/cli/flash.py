@@ -7,7 +7,7 @@ import click
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
 from camtool.cli.exposure import single
-from camtool.cli.options import DISTANCE_M, library_errors, param_named
+from camtool.cli.options import DISTANCE_M, library_errors
 from camtool.cli.params import FNumberType, NumberType, _ListType, flatten
 from camtool.core.units import parse_guide_number
 from camtool.render.columns import TEXT, Column
@@ -57,19 +57,15 @@ def flash(ctx: click.Context, guide_number, gn_iso, distance, f_number, iso, fmt
       camtool flash --gn 40 -N 8 --iso 400
       camtool flash -s 3 -N 5.6 --iso 100
     """
-    from camtool.core.errors import DomainError
     from camtool.plans import flash as plan
 
     lists = dict(zip(plan.INPUTS, (flatten(guide_number), flatten(distance), flatten(f_number), flatten(iso))))
     given = {name: values for name, values in lists.items() if values}
     count, columns = combine_params(ctx, *given.values()) if len(given) == 3 else (0, [])
     with library_errors(ctx):
-        try:
-            result = plan.solve(**{name: (column if len(given) == 3 else values[0])
-                                   for (name, values), column in zip(given.items(), columns or given.values())},
-                                quoted_iso=single(ctx, gn_iso, 100.0))
-        except DomainError as error:
-            raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, error.param)) from None
+        result = plan.solve(**{name: (column if len(given) == 3 else values[0])
+                               for (name, values), column in zip(given.items(), columns or given.values())},
+                            quoted_iso=single(ctx, gn_iso, 100.0))
     rows = rows_from(count, {"guide_number_m": result.guide_number_m, "guide_number_at_iso_m":
                              result.guide_number_at_iso_m, "distance_mm": result.distance_m * 1000.0,
                              "f_number": result.f_number, "iso": result.iso, "solved": result.solved})

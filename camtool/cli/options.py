@@ -216,7 +216,8 @@ def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
     # A value the library derived (a hyperfocal distance, an object distance from a magnification, a solved
     # exposure setting) or one the user did not type (a default, a preset's):
     # blame the option the user typed that drives it, with the value typed.
-    blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _given(ctx, p)), None)
+    blamed = next((p for p in (param_named(ctx, n) for n in BLAME_ORDER) if p is not None and _typed_by_user(ctx, p)),
+                  None)
     message = domain_message(error, name)
     listed = error.value.split(",") if isinstance(error.value, str) else []
     named = [p for p in (param_named(ctx, PARAM_FOR.get(n.strip(), n.strip())) for n in listed)
@@ -231,7 +232,8 @@ def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
 
 
 BLAME_ORDER = ("illuminance", "luminance", "ev100", "light", "magnification", "fill", "subject_size", "f_number",
-               "focal_length", "coc", "coc_rule", "distance", "near", "far", "distance_from", "model")
+               "focal_length", "coc", "coc_rule", "distance", "near", "far", "distance_from", "model", "scene",
+               "camera", "lens", "prescription_file")
 """Options blamed, in this order, for a value the library derived from several of them."""
 
 _DERIVED = {"distance_mm": "a distance", "near_mm": "a near limit", "far_mm": "a far limit",

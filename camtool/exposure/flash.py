@@ -10,9 +10,10 @@ number, distance, f-number and ISO follows from the other three.
 
 from __future__ import annotations
 
+import math
 from typing import Any, NamedTuple
 
-from camtool.core.arrays import ops
+from camtool.core.arrays import is_scalar, ops
 from camtool.core.errors import DomainError, require
 
 
@@ -83,13 +84,29 @@ def solve_flash(guide_number_m: Any = None, distance_m: Any = None, f_number: An
         if value is not None:
             require(name, value, value > 0, "> 0")
     xp = ops(*(v for v in given if v is not None))
-    if guide_number_m is None:
-        guide_number_m = f_number * distance_m * xp.sqrt(quoted_iso / iso)
-    elif iso is None:
-        iso = quoted_iso * (f_number * distance_m / guide_number_m) ** 2
-    at_iso = guide_number_at_iso(guide_number_m, iso, quoted_iso)
-    if f_number is None:
-        f_number = at_iso / distance_m
-    elif distance_m is None:
-        distance_m = at_iso / f_number
+    # a quotient past the largest float is infinite, refused below on the quantity it stands for
+    values = _solved(xp, guide_number_m, distance_m, f_number, iso, quoted_iso)
+    guide_number_m, distance_m, f_number, iso, at_iso = values
+    for name, value in zip(names, (guide_number_m, distance_m, f_number, iso)):
+        if given[names.index(name)] is None:
+            require(name, value, (value > 0) & (value < math.inf) if not is_scalar(value) else 0 < value < math.inf,
+                    "a finite answer (the others are too far apart)")
     return Flash(guide_number_m * xp.sqrt(100.0 / quoted_iso), at_iso, distance_m, f_number, iso, missing[0])
+
+
+def _solved(xp: Any, guide_number_m: Any, distance_m: Any, f_number: Any, iso: Any, quoted_iso: Any) -> tuple[Any, ...]:
+    """The four quantities and the guide number at the ISO, the missing one solved (overflow gives infinity)."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        if guide_number_m is None:
+            guide_number_m = f_number * distance_m * xp.sqrt(quoted_iso / iso)
+        elif iso is None:
+            iso = quoted_iso * (f_number * distance_m / guide_number_m) ** 2
+        at_iso = guide_number_at_iso(guide_number_m, iso, quoted_iso)
+        if f_number is None:
+            f_number = at_iso / distance_m
+        elif distance_m is None:
+            distance_m = at_iso / f_number
+    return guide_number_m, distance_m, f_number, iso, at_iso

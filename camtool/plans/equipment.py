@@ -243,8 +243,9 @@ def resolve_equipment(*, scene: str | None = None, camera: str | None = None, le
             value = getattr(preset, field, None)
             if value is not None and name in empty:
                 filled[name] = value
-        if preset.camera is not None and camera is None and not sensor_given:
-            camera = preset.camera.id
+        if preset.camera is not None:  # the scene's sensor is its camera's: a camera or sensor given wins over both
+            if camera is None and not sensor_given:
+                camera = preset.camera.id
         elif preset.sensor is not None and not sensor_given:
             sensor_name = preset.sensor.id
         if preset.lens is not None and lens is None:
