@@ -32,24 +32,19 @@ output, is reported on standard error in row order, and the run exits 1.
 
 from __future__ import annotations
 
-import codecs
-import csv
 import difflib
-import io
-import json
 import math
-import os
-import stat
-import sys
-from collections.abc import Callable, Iterator, Sequence
-from typing import IO, Any
+from collections.abc import Callable, Sequence
+from typing import Any
 
 import click
 
 from camtool.cli.grid import CHUNK as GRID_CHUNK
 from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
+from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
+from camtool.core.records import open_source, records
 from camtool.core.units import UnitError
 from camtool.render.columnar import ColumnRows, values_of
 from camtool.render.columns import TEXT, Column
@@ -57,14 +52,6 @@ from camtool.render.output import RowWriter
 
 CHUNK = GRID_CHUNK  # one chunk size for batch files and option grids
 CONTROL = {"fmt", "units", "preset_files", "fields", "batch", "on_error"}
-CELL_LIMIT = 128 * 1024
-"""Longest cell, in characters (the csv module's limit); a longer one is a bad row."""
-LINE_LIMIT = 1024 * 1024
-"""Longest line read whole; the rest of a longer one is dropped and the row is bad."""
-
-DROP_LIMIT = 64 * 1024 * 1024
-"""Longest over-long line skipped to reach the next row; a longer one ends the read (exit 1)."""
-
 PASS = ("", None)
 """What :meth:`_Columns.resolve` returns for a column passed through to the output."""
 
@@ -87,157 +74,6 @@ def _normalise(name: str) -> str:
 
 def _loose(name: str) -> str:
     return _normalise(name).replace("_", "")
-
-
-def open_source(source: str) -> tuple[IO[str], str]:
-    """The batch text stream (``-`` is standard input) and the name errors call it.
-
-    UTF-8 with or without a byte-order mark, or UTF-16 with one; a FIFO
-    reads like a pipe; a directory or unreadable file is a :class:`BatchFileError`.
-    """
-    if source == "-":
-        binary: Any = sys.stdin.buffer
-        name = "standard input"
-    else:
-        name = source
-        try:
-            mode = os.stat(source).st_mode
-        except OSError as error:
-            raise BatchFileError(f"--batch {source}: cannot read it ({error.strerror})") from None
-        if stat.S_ISDIR(mode):
-            raise BatchFileError(f"--batch {source}: is a directory, not a file")
-        if not (stat.S_ISREG(mode) or stat.S_ISFIFO(mode)):  # a device (/dev/zero never ends), a socket
-            raise BatchFileError(f"--batch {source}: is a device or socket, not a file (a file, a pipe or - are read)")
-        try:
-            binary = _open_nonblocking(source)
-        except OSError as error:
-            raise BatchFileError(f"--batch {source}: cannot read it ({error.strerror})") from None
-    if not hasattr(binary, "peek"):
-        binary = io.BufferedReader(binary)
-    try:
-        head = binary.peek(4)[:4]
-    except OSError as error:
-        raise BatchFileError(f"--batch {name}: cannot read it ({error.strerror})") from None
-    if head.startswith(codecs.BOM_UTF8):
-        encoding = "utf-8-sig"
-    elif head.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
-        encoding = "utf-16"
-    else:
-        encoding = "utf-8"
-    return io.TextIOWrapper(binary, encoding=encoding, newline=""), name
-
-
-def _open_nonblocking(source: str) -> IO[bytes]:
-    """``source`` opened for reading without waiting for a writer: a FIFO nobody writes to reads as empty.
-
-    Opened non-blocking (a FIFO with no writer would block ``open`` for ever), then set to block again, so
-    a pipe with a writer (``--batch <(make-scenes)``) is read as it comes and one without ends at once.
-    """
-    import fcntl
-
-    fd = os.open(source, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
-    try:
-        fcntl.fcntl(fd, fcntl.F_SETFL, fcntl.fcntl(fd, fcntl.F_GETFL) & ~os.O_NONBLOCK)
-        return os.fdopen(fd, "rb")
-    except BaseException:
-        os.close(fd)
-        raise
-
-
-def _lines(source: IO[str], name: str) -> Iterator[str]:
-    """The lines of ``source``, none longer than :data:`LINE_LIMIT` (memory stays bounded)."""
-    while True:
-        try:
-            line = source.readline(LINE_LIMIT)
-        except OSError as error:  # e.g. standard input redirected from a directory
-            raise BatchFileError(f"--batch {name}: cannot read it ({error.strerror or error})") from None
-        if not line:
-            return
-        if len(line) >= LINE_LIMIT and not line.endswith("\n"):
-            dropped = 0
-            while True:  # drop the rest of the over-long line; what is left fails as a too-long cell
-                rest = source.readline(LINE_LIMIT)
-                dropped += len(rest)
-                if not rest or rest.endswith("\n"):
-                    break
-                if dropped > DROP_LIMIT:  # a stream with no line ends at all (standard input from /dev/zero)
-                    raise BatchFileError(f"--batch {name}: a line longer than {DROP_LIMIT // 2**20} MiB; "
-                                         "is it a text file of rows?")
-            line += "\n"
-        yield line
-
-
-Record = tuple[int, Any, "str | None"]
-
-
-def _records(source: IO[str], name: str) -> Iterator[Record]:
-    """(row number, cells, None) per input row, or (row number, None, error) for a bad one.
-
-    CSV rows are lists of cells, after the header as row 0; JSON lines are dicts.
-    """
-    lines = _lines(source, name)
-    first = ""
-    for line in lines:
-        if line.strip():
-            first = line
-            break
-    if not first:
-        return
-    if "\x00" in first:
-        raise BatchFileError(f"--batch {name}: looks like UTF-16 text without a byte-order mark; "
-                             "save it as UTF-8 (in Excel: CSV UTF-8)")
-    if first.lstrip().startswith("{"):
-        number = 0
-        for line in _chain(first, lines):
-            if not line.strip():
-                continue
-            number += 1
-            try:
-                record = json.loads(line)
-            except json.JSONDecodeError as error:
-                yield number, None, f"--batch row {number}: not valid JSON ({error.msg})"
-                continue
-            if not isinstance(record, dict):
-                yield number, None, f"--batch row {number}: expected a JSON object"
-                continue
-            yield number, record, None
-    else:
-        reader = csv.reader(_chain(first, lines))
-        try:
-            header = next(reader)
-        except csv.Error as error:
-            raise BatchFileError(f"--batch {name}: the header row is {_csv_message(error)}") from None
-        yield 0, header, None
-        number = 0
-        while True:
-            try:
-                cells = next(reader)
-            except StopIteration:
-                return
-            except csv.Error as error:
-                number += 1
-                yield number, None, f"--batch row {number}: {_csv_message(error)}"
-                continue
-            if not cells:
-                continue
-            number += 1
-            if len(cells) > len(header):
-                yield number, None, (f"--batch row {number}: {len(cells)} cells, more than the "
-                                     f"{len(header)} header columns")
-                continue
-            yield number, cells, None
-
-
-def _csv_message(error: csv.Error) -> str:
-    text = str(error)
-    if "field limit" in text:
-        return f"a cell longer than {CELL_LIMIT // 1024} KiB"
-    return f"not valid CSV ({text})"
-
-
-def _chain(first: str, rest: Iterator[str]) -> Iterator[str]:
-    yield first
-    yield from rest
 
 
 class _Columns:
@@ -313,30 +149,32 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
     writer = open_writer(params["fmt"], params["units"], fields)
     batch = _Batch(ctx, compute, params, defaults, columns, writer, on_error)
     batch.fields = fields
-    stream, name = open_source(source)
+    try:
+        stream, name = open_source(source)
+    except FileProblem as unreadable:
+        raise BatchFileError(f"--batch {unreadable}") from None
     try:
         with stream:
             header: list[str] | None = None
             numbers: list[int] = []
-            records: list[Any] = []
+            rows: list[Any] = []
             errors: list[str | None] = []
-            for number, record, error in _records(stream, name):
+            for number, record, problem in records(stream, name):
                 if number == 0:
                     header = record
                     continue
                 numbers.append(number)
-                records.append(record)
-                errors.append(error)
-                if error is not None and on_error == "stop":
+                rows.append(record)
+                errors.append(None if problem is None else f"--batch row {number}: {problem}")
+                if problem is not None and on_error == "stop":
                     break
                 if len(numbers) >= CHUNK:
-                    batch.run(header, numbers, records, errors)
-                    numbers, records, errors = [], [], []
-            batch.run(header, numbers, records, errors)
-    except UnicodeDecodeError as error:
+                    batch.run(header, numbers, rows, errors)
+                    numbers, rows, errors = [], [], []
+            batch.run(header, numbers, rows, errors)
+    except FileProblem as unreadable:
         batch.end(failed=True)
-        raise BatchFileError(f"--batch {name}: not UTF-8 text ({error.reason}, byte 0x{error.object[error.start]:02x}); "
-                             "save it as UTF-8 (in Excel: CSV UTF-8)") from None
+        raise BatchFileError(f"--batch {unreadable}") from None
     except click.ClickException:
         batch.end(failed=True)
         raise

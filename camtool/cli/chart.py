@@ -17,9 +17,7 @@ from __future__ import annotations
 
 import functools
 import json
-import os
 import re
-import stat
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -44,6 +42,7 @@ from camtool.cli.options import (
 )
 from camtool.cli.params import LengthType, NumberType, flatten
 from camtool.core.errors import InputError
+from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
 from camtool.dof.ladder import focal_lengths, model_choices
 from camtool.plans.chart import (
     IMAGE_FORMATS,
@@ -159,65 +158,27 @@ def chart_command(name: str, card: bool = False) -> Callable[[Callable[..., Any]
     return decorate
 
 
+TARGETS = ("-o/--output", "--data")
+"""The options that name the files a chart writes, in the order given to :func:`check_writable`."""
+
+
 def _check_targets(output: str, data_file: str | None) -> None:
-    """Refuse at once an output that cannot be written: no such directory, or not a regular file."""
-    for target, option in ((output, "-o/--output"), (data_file, "--data")):
-        if target is None or target == "-":
-            continue
-        try:
-            info = os.stat(target)
-        except FileNotFoundError:
-            if not Path(target).resolve().parent.is_dir():
-                raise click.ClickException(f"{option} {target}: cannot write there: no such directory") from None
-            continue
-        except OSError as error:
-            raise click.ClickException(f"{option} {target}: cannot write there: {error.strerror or error}") from None
-        if not stat.S_ISREG(info.st_mode):
-            raise click.ClickException(f"{option} {target}: cannot write there: {_not_regular(info.st_mode)}")
-    if output != "-" and data_file not in (None, "-") and os.path.realpath(output) == os.path.realpath(data_file):
-        raise click.ClickException(f"--data {data_file}: the same file as -o/--output; give another name")
-
-
-def _not_regular(mode: int) -> str:
-    kind = ("a directory" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
-            else "a socket" if stat.S_ISSOCK(mode) else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
-            else "not a regular file")
-    return f"it is {kind}, not a regular file" if kind != "not a regular file" else "it is not a regular file"
+    """Refuse at once an output that cannot be written: no such directory, not a regular file, both the same."""
+    try:
+        check_writable([output, data_file])
+    except SameTarget as problem:
+        raise click.ClickException(f"{TARGETS[problem.index or 0]} {problem.path}: the same file as "
+                                   f"{TARGETS[problem.other]}; give another name") from None
+    except WriteProblem as problem:
+        raise click.ClickException(f"{TARGETS[problem.index or 0]} {problem}") from None
 
 
 def _write(target: str, option: str, payload: bytes) -> None:
-    """Write ``payload`` to standard output (``-``) or to the regular file ``target``, created if missing.
-
-    The file is opened without blocking and checked again once open, so a FIFO
-    or device put in its place after the first check is refused, not waited on.
-    """
-    if target == "-":
-        stream = getattr(sys.stdout, "buffer", None)
-        if stream is None:  # standard output closed (camtool chart ... -o - >&-)
-            raise click.ClickException("cannot write to standard output: it is closed")
-        try:
-            stream.write(payload)
-            stream.flush()
-        except ValueError:  # the stream was closed under us
-            raise click.ClickException("cannot write to standard output: it is closed") from None
-        return
-    flags = os.O_WRONLY | os.O_CREAT | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+    """Write ``payload`` to standard output (``-``) or to the file ``target`` (:func:`write_bytes`)."""
     try:
-        fd = os.open(target, flags, 0o666)
-    except OSError as error:
-        raise click.ClickException(f"{option} {target}: cannot write there: {error.strerror or error}") from None
-    try:
-        info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode):
-            raise click.ClickException(f"{option} {target}: cannot write there: {_not_regular(info.st_mode)}")
-        os.ftruncate(fd, 0)
-        view = memoryview(payload)
-        while view:
-            view = view[os.write(fd, view):]
-    except OSError as error:
-        raise click.ClickException(f"{option} {target}: cannot write there: {error.strerror or error}") from None
-    finally:
-        os.close(fd)
+        write_bytes(target, payload)
+    except WriteProblem as problem:
+        raise click.ClickException(str(problem) if problem.path == "-" else f"{option} {problem}") from None
 
 
 SPELLING = {"output": "-o", "f_number": "-N", "focal_length": "-f", "low": "--from", "high": "--to"}

@@ -32,6 +32,7 @@ import errno
 import os
 import re
 import stat
+from pathlib import Path
 from typing import Any
 
 from camtool.core.errors import FileError
@@ -110,6 +111,104 @@ def read_bytes(path: str | os.PathLike[str], max_bytes: int = MAX_BYTES) -> byte
         return b"".join(chunks)
     except OSError as error:
         raise FileProblem(name, f"cannot read the file: {error.strerror or error}") from None
+    finally:
+        os.close(fd)
+
+
+class WriteProblem(FileProblem):
+    """A file that cannot be written: ``path`` (``-`` is standard output), ``problem``, and ``index``.
+
+    ``index`` is the place of ``path`` among the targets given to :func:`check_writable` (None from
+    :func:`write_bytes`), so a caller that writes several files can name the one refused.
+    """
+
+    def __init__(self, path: str, problem: str, index: int | None = None) -> None:
+        super().__init__(path, problem)
+        self.index = index
+
+    def __str__(self) -> str:
+        return f"cannot write to standard output: {self.problem}" if self.path == "-" else super().__str__()
+
+
+class SameTarget(WriteProblem):
+    """Two targets of one :func:`check_writable` call are the same file: ``index`` and the earlier ``other``."""
+
+    def __init__(self, path: str, index: int, other: int) -> None:
+        super().__init__(path, "the same file as another target", index)
+        self.other = other
+
+
+def _not_regular(mode: int) -> str:
+    kind = _kind(mode)
+    return "it is not a regular file" if kind == "not a regular file" else f"it is {kind}, not a regular file"
+
+
+def check_writable(targets: list[str | None]) -> None:
+    """Refuse at once a target that cannot be written: no such directory, not a regular file, two the same.
+
+    ``None`` and ``-`` (standard output) are passed over. A missing file in an
+    existing directory is fine (it will be created); a FIFO, device, socket or
+    directory is refused, as is a file named twice (by any path). Raises
+    :class:`WriteProblem` (:class:`SameTarget` for the last) carrying the
+    target's place in ``targets``.
+    """
+    files = [(index, target) for index, target in enumerate(targets) if target is not None and target != "-"]
+    for index, target in files:
+        try:
+            info = os.stat(target)
+        except FileNotFoundError:
+            if not Path(target).resolve().parent.is_dir():
+                raise WriteProblem(target, "cannot write there: no such directory", index) from None
+            continue
+        except OSError as error:
+            raise WriteProblem(target, f"cannot write there: {error.strerror or error}", index) from None
+        if not stat.S_ISREG(info.st_mode):
+            raise WriteProblem(target, f"cannot write there: {_not_regular(info.st_mode)}", index)
+    seen: dict[str, int] = {}
+    for index, target in files:
+        real = os.path.realpath(target)
+        if real in seen:
+            raise SameTarget(target, index, seen[real])
+        seen[real] = index
+
+
+def write_bytes(path: str | os.PathLike[str], payload: bytes) -> None:
+    """Write ``payload`` to standard output (``-``) or to the regular file ``path``, created if missing.
+
+    The counterpart of :func:`read_bytes`: the file is opened without
+    blocking and checked again once open, so a FIFO or device put in its
+    place after :func:`check_writable` is refused, not waited on; an
+    existing file is replaced whole. A closed standard output, a file that
+    is not regular, or a failed write is a :class:`WriteProblem`.
+    """
+    import sys
+
+    target = os.fspath(path)
+    if target == "-":
+        stream = getattr(sys.stdout, "buffer", None)
+        if stream is None:  # standard output closed (camtool chart ... -o - >&-)
+            raise WriteProblem("-", "it is closed")
+        try:
+            stream.write(payload)
+            stream.flush()
+        except ValueError:  # the stream was closed under us
+            raise WriteProblem("-", "it is closed") from None
+        return
+    flags = os.O_WRONLY | os.O_CREAT | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+    try:
+        fd = os.open(target, flags, 0o666)
+    except OSError as error:
+        raise WriteProblem(target, f"cannot write there: {error.strerror or error}") from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise WriteProblem(target, f"cannot write there: {_not_regular(info.st_mode)}")
+        os.ftruncate(fd, 0)
+        view = memoryview(payload)
+        while view:
+            view = view[os.write(fd, view):]
+    except OSError as error:
+        raise WriteProblem(target, f"cannot write there: {error.strerror or error}") from None
     finally:
         os.close(fd)
 

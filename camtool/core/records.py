@@ -1,0 +1,217 @@
+"""Rows of a text file of records: CSV with a header row, or JSON lines, read in bounded memory.
+
+The file layer of ``--batch``, beside the guarded reader of whole files
+(:mod:`camtool.core.files`). :func:`open_source` opens standard input
+(``-``), a file or a FIFO (opened without waiting for a writer; a device or
+a directory is refused) and tells the encoding from the first bytes: UTF-8
+with or without a byte-order mark, or UTF-16 with one. :func:`records`
+reads it a line at a time, no line longer than :data:`LINE_LIMIT`, and
+yields one record per row: a list of cells (CSV, the header first) or a
+dict (JSON lines, told by a first non-blank ``{``).
+
+A file that cannot be read is a :class:`~camtool.core.files.FileProblem`
+naming it; a bad row is not an error here but a problem in words, yielded
+in the row's place, so the caller decides whether it stops the run.
+
+>>> import io
+>>> for row in records(io.StringIO("f,N\\n50,8\\n50,8,3\\n"), "scenes.csv"):
+...     print(row)
+(0, ['f', 'N'], None)
+(1, ['50', '8'], None)
+(2, None, '3 cells, more than the 2 header columns')
+"""
+
+from __future__ import annotations
+
+import codecs
+import csv
+import io
+import json
+import os
+import stat
+import sys
+from collections.abc import Iterator
+from typing import IO, Any
+
+from camtool.core.files import FileProblem
+
+CELL_LIMIT = 128 * 1024
+"""Longest cell, in characters (the csv module's limit); a longer one is a bad row."""
+
+LINE_LIMIT = 1024 * 1024
+"""Longest line read whole; the rest of a longer one is dropped and the row is bad."""
+
+DROP_LIMIT = 64 * 1024 * 1024
+"""Longest over-long line skipped to reach the next row; a longer one ends the read (a :class:`FileProblem`)."""
+
+STDIN = "standard input"
+"""The name problems give standard input (``-``)."""
+
+Record = tuple[int, Any, "str | None"]
+"""(row number, cells, None) for a row, or (row number, None, problem) for a bad one; row 0 is a CSV header."""
+
+
+def open_source(source: str) -> tuple[IO[str], str]:
+    """The text stream of ``source`` (``-`` is standard input) and the name its problems give it.
+
+    UTF-8 with or without a byte-order mark, or UTF-16 with one; a FIFO
+    reads like a pipe; a directory, a device, a socket or an unreadable file
+    is a :class:`FileProblem`.
+    """
+    if source == "-":
+        binary: Any = sys.stdin.buffer
+        name = STDIN
+    else:
+        name = source
+        try:
+            mode = os.stat(source).st_mode
+        except OSError as error:
+            raise FileProblem(source, f"cannot read it ({error.strerror})") from None
+        if stat.S_ISDIR(mode):
+            raise FileProblem(source, "is a directory, not a file")
+        if not (stat.S_ISREG(mode) or stat.S_ISFIFO(mode)):  # a device (/dev/zero never ends), a socket
+            raise FileProblem(source, "is a device or socket, not a file (a file, a pipe or - are read)")
+        try:
+            binary = _open_nonblocking(source)
+        except OSError as error:
+            raise FileProblem(source, f"cannot read it ({error.strerror})") from None
+    if not hasattr(binary, "peek"):
+        binary = io.BufferedReader(binary)
+    try:
+        head = binary.peek(4)[:4]
+    except OSError as error:
+        raise FileProblem(name, f"cannot read it ({error.strerror})") from None
+    if head.startswith(codecs.BOM_UTF8):
+        encoding = "utf-8-sig"
+    elif head.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        encoding = "utf-16"
+    else:
+        encoding = "utf-8"
+    return io.TextIOWrapper(binary, encoding=encoding, newline=""), name
+
+
+def _open_nonblocking(source: str) -> IO[bytes]:
+    """``source`` opened for reading without waiting for a writer: a FIFO nobody writes to reads as empty.
+
+    Opened non-blocking (a FIFO with no writer would block ``open`` for ever), then set to block again, so
+    a pipe with a writer (``--batch <(make-scenes)``) is read as it comes and one without ends at once.
+    """
+    import fcntl
+
+    fd = os.open(source, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    try:
+        fcntl.fcntl(fd, fcntl.F_SETFL, fcntl.fcntl(fd, fcntl.F_GETFL) & ~os.O_NONBLOCK)
+        return os.fdopen(fd, "rb")
+    except BaseException:
+        os.close(fd)
+        raise
+
+
+def lines(source: IO[str], name: str) -> Iterator[str]:
+    """The lines of ``source``, none longer than :data:`LINE_LIMIT` (memory stays bounded).
+
+    An over-long line is cut, its rest dropped, and ends in a newline; text
+    that is not in the stream's encoding, a read error, or a "line" longer
+    than :data:`DROP_LIMIT` is a :class:`FileProblem` naming ``name``.
+    """
+    while True:
+        try:
+            line = source.readline(LINE_LIMIT)
+        except UnicodeDecodeError as error:
+            raise _not_utf8(name, error) from None
+        except OSError as error:  # e.g. standard input redirected from a directory
+            raise FileProblem(name, f"cannot read it ({error.strerror or error})") from None
+        if not line:
+            return
+        if len(line) >= LINE_LIMIT and not line.endswith("\n"):
+            dropped = 0
+            while True:  # drop the rest of the over-long line; what is left fails as a too-long cell
+                try:
+                    rest = source.readline(LINE_LIMIT)
+                except UnicodeDecodeError as error:
+                    raise _not_utf8(name, error) from None
+                dropped += len(rest)
+                if not rest or rest.endswith("\n"):
+                    break
+                if dropped > DROP_LIMIT:  # a stream with no line ends at all (standard input from /dev/zero)
+                    raise FileProblem(name, f"a line longer than {DROP_LIMIT // 2**20} MiB; is it a text file of rows?")
+            line += "\n"
+        yield line
+
+
+def _not_utf8(name: str, error: UnicodeDecodeError) -> FileProblem:
+    return FileProblem(name, f"not UTF-8 text ({error.reason}, byte 0x{error.object[error.start]:02x}); "
+                             "save it as UTF-8 (in Excel: CSV UTF-8)")
+
+
+def records(source: IO[str], name: str) -> Iterator[Record]:
+    """One :data:`Record` per row of ``source``: CSV rows are lists of cells, after the header as row 0; JSON lines are dicts.
+
+    Blank lines are passed over. A row that is not valid CSV or JSON, holds
+    more cells than the header, or a JSON value that is not an object is
+    yielded as its problem in words; a file that is unreadable, UTF-16
+    without a byte-order mark, or has a bad header row is a
+    :class:`FileProblem`.
+    """
+    rows = lines(source, name)
+    first = ""
+    for line in rows:
+        if line.strip():
+            first = line
+            break
+    if not first:
+        return
+    if "\x00" in first:
+        raise FileProblem(name, "looks like UTF-16 text without a byte-order mark; save it as UTF-8 (in Excel: CSV UTF-8)")
+    if first.lstrip().startswith("{"):
+        number = 0
+        for line in _chain(first, rows):
+            if not line.strip():
+                continue
+            number += 1
+            try:
+                record = json.loads(line)
+            except json.JSONDecodeError as error:
+                yield number, None, f"not valid JSON ({error.msg})"
+                continue
+            if not isinstance(record, dict):
+                yield number, None, "expected a JSON object"
+                continue
+            yield number, record, None
+    else:
+        reader = csv.reader(_chain(first, rows))
+        try:
+            header = next(reader)
+        except csv.Error as error:
+            raise FileProblem(name, f"the header row is {csv_message(error)}") from None
+        yield 0, header, None
+        number = 0
+        while True:
+            try:
+                cells = next(reader)
+            except StopIteration:
+                return
+            except csv.Error as error:
+                number += 1
+                yield number, None, csv_message(error)
+                continue
+            if not cells:
+                continue
+            number += 1
+            if len(cells) > len(header):
+                yield number, None, f"{len(cells)} cells, more than the {len(header)} header columns"
+                continue
+            yield number, cells, None
+
+
+def csv_message(error: csv.Error) -> str:
+    """The problem of a row the csv module refused, in words (a too-long cell names the limit)."""
+    text = str(error)
+    if "field limit" in text:
+        return f"a cell longer than {CELL_LIMIT // 1024} KiB"
+    return f"not valid CSV ({text})"
+
+
+def _chain(first: str, rest: Iterator[str]) -> Iterator[str]:
+    yield first
+    yield from rest
