@@ -341,8 +341,7 @@ class _Batch:
         errors = list(errors)
         values, passed = self._parse(header, numbers, records, errors)
         if self.fields and not self.total:  # a --field no row can have: refused before any row's message
-            from camtool.cli.command import DYNAMIC_KEYS
-            from camtool.cli.rows import check_fields
+            from camtool.cli.rows import DYNAMIC_KEYS, check_fields
 
             declared = list(getattr(self.ctx.command, "output_key_list", []))
             if declared:

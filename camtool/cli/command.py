@@ -26,7 +26,7 @@ import click
 
 from camtool.cli.grid import Grid
 from camtool.cli.options import preset_completion, stack
-from camtool.cli.rows import ZIP, Output, check_fields, open_writer
+from camtool.cli.rows import DYNAMIC_KEYS, ZIP, Output, check_fields, open_writer
 from camtool.render.output import FORMATS
 
 MAX_TABLE_ROWS = 100_000
@@ -161,10 +161,6 @@ def camtool_command(
         return command
 
     return decorate
-
-
-DYNAMIC_KEYS = ("t_stop", "f_number_from")
-"""Keys a row gains from what was typed (a T-stop), beyond those the command declares."""
 
 
 def stream_grid(ctx: click.Context, grid: Grid, first: Output, compute: Callable[[], Output], fmt: str,

@@ -12,7 +12,7 @@ from camtool.render.columns import Column
 from camtool.render.output import RowWriter
 from camtool.render.serial import field_line
 
-__all__ = ["CELLS", "ZIP", "Output", "check_fields", "field_line", "open_writer"]
+__all__ = ["CELLS", "DYNAMIC_KEYS", "ZIP", "Output", "check_fields", "field_line", "open_writer"]
 
 ZIP = "camtool.zip"
 CELLS = "camtool.batch_cells"  # ctx.meta: the options a --batch row gave in cells (typed, as options are)
@@ -26,6 +26,10 @@ class Output(NamedTuple):
     columns: Sequence[Column]
     keys: Sequence[str]
     footer: str = ""
+
+
+DYNAMIC_KEYS = ("t_stop", "f_number_from")
+"""Keys a row gains from what was typed (a T-stop), beyond those the command declares."""
 
 
 def check_fields(fields: Sequence[str], keys: Sequence[str]) -> None:
