@@ -66,7 +66,8 @@ class FileProblem(FileError):
         return f"{where}: {self.problem}"
 
 
-def _kind(mode: int) -> str:
+def file_kind(mode: int) -> str:
+    """What a file of ``mode`` is, in words, when it is not a regular file (for one-line refusals)."""
     if stat.S_ISDIR(mode):
         return "a directory"
     if stat.S_ISFIFO(mode):
@@ -96,7 +97,7 @@ def read_bytes(path: str | os.PathLike[str], max_bytes: int = MAX_BYTES) -> byte
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
-            raise FileProblem(name, f"cannot read the file: it is {_kind(info.st_mode)}, not a regular file")
+            raise FileProblem(name, f"cannot read the file: it is {file_kind(info.st_mode)}, not a regular file")
         if info.st_size > max_bytes:
             raise FileProblem(name, f"the file is larger than {_size(max_bytes)}")
         chunks, total = [], 0
@@ -139,7 +140,7 @@ class SameTarget(WriteProblem):
 
 
 def _not_regular(mode: int) -> str:
-    kind = _kind(mode)
+    kind = file_kind(mode)
     return "it is not a regular file" if kind == "not a regular file" else f"it is {kind}, not a regular file"
 
 

@@ -37,6 +37,7 @@ from typing import Any, NamedTuple
 
 from camtool.core import domain, ranges
 from camtool.core.errors import CamtoolError, DomainError
+from camtool.core.files import file_kind
 from camtool.core.text import printable
 from camtool.exif import makernotes
 
@@ -180,18 +181,6 @@ def require_exiv2() -> None:
     _exiv2()
 
 
-def _kind(mode: int) -> str:
-    if stat.S_ISDIR(mode):
-        return "a directory"
-    if stat.S_ISFIFO(mode):
-        return "a FIFO (named pipe)"
-    if stat.S_ISSOCK(mode):
-        return "a socket"
-    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        return "a device"
-    return "not a regular file"
-
-
 def check_regular(path: str) -> None:
     """Raise :class:`UnreadableFile` unless ``path`` (symbolic links followed) is a regular file.
 
@@ -207,7 +196,7 @@ def check_regular(path: str) -> None:
             raise UnreadableFile("cannot be opened: a loop of symbolic links") from None
         raise UnreadableFile(f"cannot be opened: {error.strerror or error}") from None
     if not stat.S_ISREG(info.st_mode):
-        raise UnreadableFile(f"is {_kind(info.st_mode)}, not a regular file")
+        raise UnreadableFile(f"is {file_kind(info.st_mode)}, not a regular file")
 
 
 def _open(exiv2: Any, path: str) -> tuple[Any, bytes | None]:
