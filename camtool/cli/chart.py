@@ -32,11 +32,11 @@ from camtool.cli.lensdata import WavelengthType, lens_data, model_options, pupil
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
+    bad_parameter,
     coc_options,
     distance_plane_option,
     focal_option,
     library_errors,
-    param_named,
     sensor_options,
     stack,
 )
@@ -181,19 +181,12 @@ def _write(target: str, option: str, payload: bytes) -> None:
         raise click.ClickException(str(problem) if problem.path == "-" else f"{option} {problem}") from None
 
 
-SPELLING = {"output": "-o", "f_number": "-N", "focal_length": "-f", "low": "--from", "high": "--to"}
-"""How this command's messages spell an input (``--name`` otherwise)."""
-
-
 def _inputs(ctx: click.Context, decide: Callable[[], Any]) -> Any:
-    """``decide()``, its input errors spelled as this command's options."""
+    """``decide()``, its input errors spelled as this command's options (the one translator)."""
     try:
         return decide()
     except InputError as error:
-        text = error.render(lambda name: SPELLING.get(name, "--" + name.replace("_", "-")))
-        if error.usage:
-            raise click.UsageError(text, ctx) from None
-        raise click.BadParameter(text, ctx=ctx, param=param_named(ctx, error.param)) from None
+        raise bad_parameter(ctx, error) from None
 
 
 def _coc(ctx: click.Context, coc: Any, coc_rule: Any, chosen: Any, pixel_pitch: Any) -> tuple[float, list[float], str]:
