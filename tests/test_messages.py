@@ -174,3 +174,13 @@ def test_a_flash_answer_beyond_the_largest_float_is_one_line() -> None:
 def test_a_scene_with_a_camera_beside_a_typed_camera_does_not_look_its_sensor_up() -> None:
     result = run("dof", "--camera", "nikon-z-8", "--scene", "macro-1to1", "--format", "json")
     assert result.exit_code in (0, 2) and "unknown sensor" not in result.stderr, result.output
+
+
+def test_a_crop_that_gives_too_small_a_coc_names_the_crop() -> None:
+    message = _one_line_error(run("dof", "-f", "24", "-N", "8", "-s", "3m", "--crop", "100"))
+    assert "'--crop'" in message and "'--sensor'" not in message
+
+
+def test_a_very_long_list_item_is_a_range_error_not_a_decimal_comma_crash() -> None:
+    message = _one_line_error(run("dof", "-f", "35", "-s", "3m", "-N", "5" * 400 + ",5"))
+    assert "'-N'" in message

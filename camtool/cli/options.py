@@ -188,7 +188,11 @@ def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
         text = error.render(lambda name: _spelling(ctx, PARAM_FOR.get(str(name), str(name))))
         if error.usage:
             return click.UsageError(text, ctx)
-        return click.BadParameter(text, ctx=ctx, param=param_named(ctx, PARAM_FOR.get(error.param, error.param)))
+        target = param_named(ctx, PARAM_FOR.get(error.param, error.param))
+        if target is not None and not _typed_by_user(ctx, target):  # what stood in for it: a crop for a sensor
+            target = next((p for p in (param_named(ctx, n) for n in _STANDS_IN.get(target.name or "", ()))
+                           if p is not None and _typed_by_user(ctx, p)), target)
+        return click.BadParameter(text, ctx=ctx, param=target)
     if ctx.command.name in ON_THE_OPTION:
         name = PARAM_FOR.get(error.param, error.param)
         name = name if param_named(ctx, name) is not None else error.param
@@ -249,6 +253,9 @@ def _needs(ctx: click.Context, error: Any) -> str:
     sources = [text for text in error.supplied_by if any(word in options for word in text.split())]
     return f"{error.needs} ({either(sources)})" if sources else NEEDS.get(error.missing, error.missing)
 
+
+_STANDS_IN = {"sensor": ("crop", "camera", "lens", "scene")}
+"""Options that give a value in another's place (a crop factor gives the sensor), blamed when that one was not typed."""
 
 _PARTNERS = {"hiatus": ("pupil_mag", "focal_length", "distance"), "pupil_mag": ("hiatus", "focal_length")}
 """Options whose values meet in one check: when the one the library names was not typed, these are blamed."""

@@ -124,8 +124,8 @@ class FNumberType(_ListType):
 
         ``8,11`` and ``4,8`` (no third stop) stay lists of two f-numbers.
         """
-        if not (_DIGITS.match(first) and _DIGITS.match(second)):
-            return None
+        if not (_DIGITS.match(first) and _DIGITS.match(second)) or len(first) + len(second) > 4:
+            return None  # a third-stop f-number is at most two digits either side of the comma
         from camtool.exposure.stops import THIRD_STOP_F_NUMBERS
 
         decimal = float(f"{first}.{second}")
