@@ -126,21 +126,7 @@ def _key(create: bool) -> bytes | None:
     path = os.path.join(directory, KEY_NAME)
     key = _read_key(path)
     if key is None and create and not os.path.lexists(path):
-        temporary = None
-        try:
-            os.makedirs(directory, mode=0o700, exist_ok=True)
-            temporary = os.path.join(directory, f".{KEY_NAME}.{os.getpid()}.{os.urandom(4).hex()}.tmp")
-            fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0), 0o600)
-            try:
-                os.write(fd, os.urandom(_KEY_BYTES))
-            finally:
-                os.close(fd)
-            os.link(temporary, path)  # never replaces a key another process made first
-        except OSError:
-            pass
-        finally:
-            if temporary is not None:
-                _remove(temporary)
+        _publish(path, os.urandom(_KEY_BYTES), replace=False)  # never replaces a key another process made first
         key = _read_key(path)
     return key
 
@@ -196,6 +182,16 @@ def write(path: str, kind: str, source: str, payload: bytes) -> bool:
     header = json.dumps({"format": FORMAT, "kind": kind, "version": _version(), "source": source,
                          "length": len(payload), "mac": _mac(key, kind, source, payload)},
                         separators=(",", ":"), sort_keys=True).encode("utf-8")
+    return _publish(path, header + b"\n" + payload, replace=True)
+
+
+def _publish(path: str, data: bytes, *, replace: bool) -> bool:
+    """Write ``data`` to a private temporary file beside ``path``, then put it there; False when it cannot be.
+
+    ``replace``: over whatever is there (:func:`os.replace`); otherwise by a
+    hard link, which fails rather than replace a file another process made
+    first. The temporary file is removed on every path, an interrupt too.
+    """
     directory = os.path.dirname(path)
     temporary = None
     try:
@@ -203,11 +199,14 @@ def write(path: str, kind: str, source: str, payload: bytes) -> bool:
         temporary = os.path.join(directory, f".{os.path.basename(path)}.{os.getpid()}.{os.urandom(4).hex()}.tmp")
         fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0), 0o600)
         try:
-            _write_all(fd, header + b"\n" + payload)
+            _write_all(fd, data)
         finally:
             os.close(fd)
-        os.replace(temporary, path)
-        temporary = None
+        if replace:
+            os.replace(temporary, path)
+            temporary = None
+        else:
+            os.link(temporary, path)
         return True
     except OSError:
         return False
