@@ -518,38 +518,42 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     fields = [np.empty(count) for _ in DofLimits._fields]
     names = np.empty(count, dtype=object)
     estimate = np.empty(count)
+
+    def run_rows(name: str, add: bool, rows: Any) -> DofLimits:
+        """The rung ``name`` over the scenes ``rows``, in one vectorised call."""
+        f, n, c, s, usable, *uv = (v[rows] for v in flat)
+        part_focus = None if focus is None else rungs.Focus(
+            FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
+        return _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
+
+    def estimate_rows(name: str, add: bool, rows: Any) -> Any:
+        """The estimated error of the rung ``name`` over the scenes ``rows``."""
+        part = Effects(*(v[rows] for v in each))
+        return left_out(part, name, True) + (0.0 if add or not diffraction else part.diffraction)
+
     for index, name in enumerate(models):
         for add in (False, True):
             rows = np.nonzero((chosen == index) & (applied == add))[0]
             if rows.size == 0:
                 continue
-            f, n, c, s, usable, *uv = (v[rows] for v in flat)
-            part_focus = None if focus is None else rungs.Focus(
-                FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
-            limits = _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
-            for out, value in zip(fields, limits):
+            for out, value in zip(fields, run_rows(name, add, rows)):
                 out[rows] = value
             names[rows] = _label(name, add)
-            part = Effects(*(v[rows] for v in each))
-            estimate[rows] = left_out(part, name, True) + (0.0 if add or not diffraction else part.diffraction)
+            estimate[rows] = estimate_rows(name, add, rows)
     rung_h = _hyperfocal_rung_of(lens)
     cheaper = chosen < models.index(rung_h) if rung_h in models else np.full(count, False)
     for add in (False, True):
         rows = np.nonzero(cheaper & (applied == add))[0]
         if rows.size == 0:
             continue
-        f, n, c, s, usable, *uv = (v[rows] for v in flat)
-        part_focus = None if focus is None else rungs.Focus(
-            FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
-        at_h = _run(rung_h, add, f, n, c, s, plane, lens, usable, part_focus)
+        at_h = run_rows(rung_h, add, rows)
         beyond = np.isinf(fields[1][rows]) | np.isinf(np.broadcast_to(at_h.far_mm, rows.shape))
         hyper_index = DofLimits._fields.index("hyperfocal_mm")
         for k, (out, value) in enumerate(zip(fields, at_h)):
             value = np.broadcast_to(np.asarray(value, dtype=float), rows.shape)
             out[rows] = np.where(beyond | (k == hyper_index), value, out[rows])
         names[rows[beyond]] = _label(rung_h, add)
-        part = Effects(*(v[rows[beyond]] for v in each))
-        estimate[rows[beyond]] = left_out(part, rung_h, True) + (0.0 if add or not diffraction else part.diffraction)
+        estimate[rows[beyond]] = estimate_rows(rung_h, add, rows[beyond])
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 
