@@ -29,17 +29,22 @@ def run_json(*args: str) -> list[dict[str, Any]]:
     return rows
 
 
-@pytest.fixture(autouse=True)
-def time_bound() -> Iterator[None]:
-    """Every test here ends within 60 s: a hang fails instead of stalling the run."""
+def time_limit(seconds: int) -> Iterator[None]:
+    """A fixture body: the test ends within ``seconds``, a hang fails instead of stalling the run."""
 
     def expire(signum: int, frame: object) -> None:
-        raise TimeoutError("test took longer than 60 s")
+        raise TimeoutError(f"test took longer than {seconds} s")
 
     previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(60)
+    signal.alarm(seconds)
     try:
         yield
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, previous)
+
+
+@pytest.fixture(autouse=True)
+def time_bound() -> Iterator[None]:
+    """Every test here ends within 60 s: a hang fails instead of stalling the run."""
+    yield from time_limit(60)

@@ -32,7 +32,7 @@ from click.testing import CliRunner, Result
 
 from camtool.cli import cli
 from camtool.core import domain, ranges
-from tests.cli_helpers import run
+from tests.cli_helpers import run, time_limit
 
 exiv2 = pytest.importorskip("exiv2")
 
@@ -82,17 +82,7 @@ def signed(num: int, den: int = 1) -> Any:
 @pytest.fixture(autouse=True)
 def time_bound() -> Iterator[None]:
     """Every test ends within 120 s: a hang fails instead of stalling the run."""
-
-    def expire(signum: int, frame: object) -> None:
-        raise TimeoutError("the test took longer than 120 s (a hang)")
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(120)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
+    yield from time_limit(120)
 
 
 def exif(*args: str, stdin: bytes | None = None) -> Result:
