@@ -67,6 +67,15 @@ class InputError(CamtoolError, ValueError):
         return self.template.format_map(Spelled())
 
 
+def braced(text: str) -> str:
+    """``text`` safe inside an :class:`InputError` template (or any ``str.format`` template): braces doubled.
+
+    >>> braced("rule {x}")
+    'rule {{x}}'
+    """
+    return text.replace("{", "{{").replace("}", "}}")
+
+
 class FileError(CamtoolError):
     """A file camtool was asked to read cannot be read or is invalid: exit status 1, one line naming the file.
 

@@ -18,7 +18,7 @@ import math
 from collections.abc import Sequence
 from pathlib import Path
 
-from camtool.core.errors import DomainError, InputError
+from camtool.core.errors import DomainError, InputError, braced
 from camtool.dof.ladder import LensData, focal_lengths, hyperfocal
 from camtool.render.chartdata import (
     MAX_PIXELS,
@@ -61,10 +61,6 @@ CARD_F_NUMBERS = [2.8, 4.0, 5.6, 8.0, 11.0, 16.0, 22.0]
 BLUR_FOCAL_LENGTHS_MM = [24.0, 35.0, 50.0, 85.0, 135.0, 200.0]
 
 
-def _braced(text: str) -> str:
-    return text.replace("{", "{{").replace("}", "}}")
-
-
 def image_format(*, output: str, given: str | None) -> str:
     """The image format: ``given``, else the extension of ``output`` (``-`` is standard output and needs ``given``).
 
@@ -77,11 +73,11 @@ def image_format(*, output: str, given: str | None) -> str:
                          usage=True)
     if given is not None:
         if suffix and suffix != given:
-            raise InputError("output", f"{_braced(output)} has the extension .{suffix} but {{image_format}} is {given}")
+            raise InputError("output", f"{braced(output)} has the extension .{suffix} but {{image_format}} is {given}")
         return given
     if suffix not in IMAGE_FORMATS:
         shown = f".{suffix}" if suffix else "no extension"
-        raise InputError("output", f"{_braced(output)} has {shown}: use .png, .svg or .pdf, or give {{image_format}}")
+        raise InputError("output", f"{braced(output)} has {shown}: use .png, .svg or .pdf, or give {{image_format}}")
     return suffix
 
 

@@ -29,7 +29,7 @@ import re
 from collections.abc import Callable, Sequence
 from typing import Any, NamedTuple
 
-from camtool.core.errors import DomainError, InputError
+from camtool.core.errors import DomainError, InputError, braced
 from camtool.core.units import TStop, UnitError
 from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
 
@@ -162,15 +162,10 @@ def _side(sensor: str, number: str, unit: str) -> float:
     try:
         mm = parse_length(number + (unit or ""), "mm")
     except UnitError as error:
-        raise InputError("sensor", _braced(str(error))) from None
+        raise InputError("sensor", braced(str(error))) from None
     if not SENSOR_SIDE_MM[0] <= mm <= SENSOR_SIDE_MM[1]:
         raise DomainError("sensor", sensor, f"each side {describe(SENSOR_SIDE_MM, 'mm')}")
     return mm
-
-
-def _braced(text: str) -> str:
-    """``text`` safe as a template: literal braces doubled."""
-    return text.replace("{", "{{").replace("}", "}}")
 
 
 def resolve_coc(*, coc: Sequence[float] = (), coc_rule: str | None = None, sensor: SensorChoice,
@@ -194,13 +189,13 @@ def resolve_coc(*, coc: Sequence[float] = (), coc_rule: str | None = None, senso
         if pitch is None and camera is not None:  # the lens's own sensor is not the camera's
             text = text.replace("give --camera or --pixel-pitch",
                                 "--camera's is its main sensor's, not this lens's; give --pixel-pitch")
-        raise InputError("coc_rule", _braced(text)) from None
+        raise InputError("coc_rule", braced(text)) from None
     from camtool.core.ranges import COC_MM, describe
 
     if not COC_MM[0] <= choice.coc_mm <= COC_MM[1]:
         shown = coc_rule or DEFAULT_RULE
         param = "coc_rule" if coc_rule is not None else ("pixel_pitch" if pixel_pitch_mm else "sensor")
-        raise InputError(param, _braced(f"{shown} gives a CoC of {choice.coc_mm:.4g} mm, outside the valid range: "
+        raise InputError(param, braced(f"{shown} gives a CoC of {choice.coc_mm:.4g} mm, outside the valid range: "
                                         f"{describe(COC_MM, 'mm')}"))
     return CocChoice([choice.coc_mm], choice.origin)
 
@@ -406,7 +401,7 @@ def load_prescription(source: str, *, database: Database | None = None) -> Any:
     try:
         return prescription_from_mapping(data, source=source.rsplit("/", 1)[-1])
     except PrescriptionError as error:
-        raise InputError("prescription", _braced(str(error))) from None
+        raise InputError("prescription", braced(str(error))) from None
 
 
 def _prescription_preset(name: str, database: Database | None) -> Any:
@@ -419,7 +414,7 @@ def _prescription_preset(name: str, database: Database | None) -> Any:
     except PresetNotFound:
         close = db.suggestions("prescription", name)
     hint = f"; did you mean {', '.join(close)}?" if close else " (camtool presets list --kind prescription)"
-    raise InputError("prescription", _braced(f"no file or prescription preset is named {name!r}{hint}"))
+    raise InputError("prescription", braced(f"no file or prescription preset is named {name!r}{hint}"))
 
 
 class Apertures(NamedTuple):

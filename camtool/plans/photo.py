@@ -26,6 +26,7 @@ import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, NamedTuple
 
+from camtool.core.errors import braced
 from camtool.core.text import printable
 
 if TYPE_CHECKING:
@@ -337,7 +338,7 @@ def _coc(row: dict[str, Any], coc_mm: float | None, coc_source: str, rule: str |
     try:
         choice = coc_from_rule(rule, size.width_mm, size.height_mm, pitch)
     except UnitError:
-        shown = rule.replace("{", "{{").replace("}", "}}")
+        shown = braced(rule)
         missing.append(Problem(f"no pixel pitch for {{coc_rule}} {shown} (the image size gives none in range): "
                                "give {pixel_pitch_mm}", ("coc_rule", "pixel_pitch_mm")))
         return None
