@@ -126,6 +126,11 @@ def test_the_last_frame_of_a_bracket_to_infinity_lies_at_h() -> None:
     frames = run_json("stack", *lens, "--near", "0.3", "--far", "inf", "--model", "thin")
     assert frames[-1]["distance_mm"] == h["hyperfocal_mm"]
     assert frames[-1]["far_mm"] is None
+    import camtool  # the Python API asks the same plan: the same last frame
+
+    plan = camtool.bracket_stack(h["focal_length_mm"], 11, h["coc_mm"], 300, float("inf"), model="thin",
+                                 lens="nikon-z-24mm-f1.8-s")
+    assert [f.distance_mm for f in plan.frames] == [f["distance_mm"] for f in frames]
 
 
 @pytest.mark.parametrize("plane", ["sensor", "lens"])
@@ -135,6 +140,13 @@ def test_a_plain_lens_bracketed_to_infinity_ends_at_hyperfocal_h(plane: str, mod
     (h,) = run_json("hyperfocal", *lens, "--model", model)
     frames = run_json("stack", *lens, "--near", "1", "--far", "inf", "--model", model)
     assert frames[-1]["distance_mm"] == h["hyperfocal_mm"] and frames[-1]["far_mm"] is None
+    import camtool  # the Python API: the same frames, the same H
+
+    plan = camtool.bracket_stack(50, 8, 0.03, 1000, float("inf"), model=model, distance_from=plane,
+                                 pupil_magnification=0.7, hiatus_mm=5)
+    assert [f.distance_mm for f in plan.frames] == [f["distance_mm"] for f in frames]
+    assert camtool.hyperfocal_distance(50, 8, 0.03, model=model, distance_from=plane, pupil_magnification=0.7,
+                                       hiatus_mm=5).hyperfocal_mm == h["hyperfocal_mm"]
     assert all(f["distance_mm"] < h["hyperfocal_mm"] for f in frames[:-1])
     if model == "thin" and plane == "lens":  # Wikipedia, "Hyperfocal distance": H = f²/(N·c) + f
         assert h["hyperfocal_mm"] == pytest.approx(50**2 / (8 * 0.03) + 50, rel=1e-12)
