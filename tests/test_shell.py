@@ -227,10 +227,10 @@ def test_a_fifo_is_read_like_a_pipe_and_a_directory_is_an_error(tmp_path) -> Non
 
 def test_a_narrow_terminal_names_the_columns_left_out() -> None:
     drawn = _in_terminal(["dof", "-f", "50", "-N", "2.8,4,8", "-s", "3"], {"COLUMNS": "60"})
-    assert "left out to fit 60 columns: rear, H (" in drawn
+    assert "left out to fit 60 columns: front, rear (" in drawn
     table = drawn.split("thin model")[0]
     assert max(len(re.sub(r"\x1b\[[0-9;]*m", "", line)) for line in table.splitlines()) <= 60
-    assert "622.6" in drawn  # the front depth at f/8, whole
+    assert "4.078" in drawn  # the far limit at f/8, whole
 
 
 def test_a_grid_of_a_million_rows_streams_in_bounded_memory_and_time() -> None:

@@ -29,6 +29,7 @@ from camtool.core.errors import DomainError, InputError
 from camtool.dof.ladder import model_choices, model_help
 from camtool.plans.stack import DEFAULT_OVERLAP, bracket_rows, bracket_stack, rail_rows, rail_stack, stack_mode
 from camtool.render.columns import NUMBER, TEXT, Column
+from camtool.render.numfmt import length
 
 KEYS = ["frame", "distance_mm", "near_mm", "far_mm", "magnification", "step_mm", "extension_step_mm",
         "criterion", "mode", "distance_from"]
@@ -137,12 +138,12 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     note = ""
     if fmt == "table":
         what = f"{plan.criterion} depth" + (" (λ/NA², as a CoC of 2λN)" if plan.criterion == "wave" else "")
-        end = "∞" if math.isinf(far) else f"{far / 1000:.4g} m"
+        units = ctx.params.get("units", "metric")
         if plan.focal_range_mm is not None:
             what += f" · the lens focuses internally: f {plan.focal_range_mm[0]:.4g} to {plan.focal_range_mm[1]:.4g} mm"
-        note = (f"{len(plan.frames)} frames · {near / 1000:.4g} m to {end} · {what} · {plan.model} model · overlap "
-                f"{overlap:g} · " + footer(None, cocs if plan.criterion == "classic" else None, coc_origin,
-                                           chosen.label, distance_from))
+        note = (f"{len(plan.frames)} frames · {length(near, units)} to {length(far, units)} · {what} · "
+                f"{plan.model} model · overlap {overlap:g} · "
+                + footer(None, cocs if plan.criterion == "classic" else None, coc_origin, chosen.label, distance_from))
     return Output(bracket_rows(plan), COLUMNS, KEYS, note)
 
 
@@ -164,15 +165,18 @@ def _rail(ctx: click.Context, rail: Any, fmt: str, coc_origin: str) -> Output:
     rows = rail_rows(rail, start=start, stop=stop)
     note = ""
     if fmt == "table":
+        units = ctx.params.get("units", "metric")
         frame_depth = plan.front_mm + plan.rear_mm
         what = (f"{rail.criterion} depth " + ("λ/NA²" if rail.criterion == "wave"
                                                  else f"(CoC {rail.coc_mm:.3g} mm, {coc_origin})"))
         if math.isinf(plan.rear_mm):
-            note = (f"1 frame · sharp from {plan.front_mm:.4g} mm in front of its focus to infinity behind it "
-                    f"(the subject at {rail.magnification:g}× is at or beyond the hyperfocal distance): it covers any "
-                    f"depth · total depth {depth:.4g} mm · {what} · positions along the subject from its nearest point")
+            note = (f"1 frame · sharp from {length(plan.front_mm, units, False)} in front of its focus to infinity "
+                    f"behind it (the subject at {rail.magnification:g}× is at or beyond the hyperfocal distance): it "
+                    f"covers any depth · total depth {length(depth, units, False)} · {what} · positions along the "
+                    "subject from its nearest point")
         else:
-            note = (f"{plan.frames} frames · step {plan.step_mm:.4g} mm at the subject ({plan.extension_step_mm:.4g} "
-                    f"mm of lens extension) · total depth {depth:.4g} mm · {what} · frame depth {frame_depth:.4g} mm, "
+            note = (f"{plan.frames} frames · step {length(plan.step_mm, units, False)} at the subject "
+                    f"({length(plan.extension_step_mm, units, False)} of lens extension) · total depth "
+                    f"{length(depth, units, False)} · {what} · frame depth {length(frame_depth, units, False)}, "
                     f"overlap {rail.overlap:g} · positions along the subject from its nearest point")
     return Output(rows, COLUMNS, KEYS, note)

@@ -23,3 +23,17 @@ class Column(NamedTuple):
     header: str
     kind: str = DISTANCE
     legend: str = ""
+
+
+IDENTIFYING = frozenset({
+    "file", "frame", "model", "focal_length_mm", "f_number", "aperture", "id", "key", "kind", "given",
+    "distance_mm", "distance", "tier",
+})
+"""Output keys that say which row is which: kept in a table at any width (with :data:`ANSWERS`)."""
+
+ANSWERS = frozenset({
+    "near_mm", "far_mm", "hyperfocal_mm", "corrected", "time", "iso_text", "step_mm", "at_mm", "value", "summary",
+    "horizontal_deg", "vertical_deg", "diagonal_deg", "tilt_deg", "f_number_needed", "f_number_optimum",
+    "rule500", "npf", "equivalent_focal_length_mm", "equivalent_iso", "gn", "field_width_mm", "extension_mm",
+})
+"""Output keys that hold a row's answer: kept in a table at any width, and emphasised."""

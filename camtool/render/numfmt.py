@@ -87,3 +87,18 @@ def feet_inches(value_mm: float | None) -> str:
     if feet == 0:
         return significant(value_mm / 25.4) + '"'
     return f"{int(feet)}' {inches:.{decimals}f}\""
+
+
+def length(value_mm: float, units: str = "metric", metres: bool = True) -> str:
+    """One length for a footer or a message, in the table's units: 0.6096 m, 0.4506 mm, 2' 0.0", 0.01774", ∞.
+
+    ``metres``: a distance, in metres; else a small length (a step, a depth at the subject), in millimetres.
+
+    >>> print(length(609.6), length(0.4506, metres=False), length(609.6, "imperial"), length(float("inf")))
+    0.6096 m 0.4506 mm 2' 0.0" ∞
+    """
+    if math.isinf(value_mm):
+        return INFINITY
+    if units == "imperial":
+        return feet_inches(value_mm)
+    return f"{value_mm / 1000:.4g} m" if metres else f"{value_mm:.4g} mm"

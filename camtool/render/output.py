@@ -130,19 +130,12 @@ class RowWriter:
             self.table_rows.extend(rows)
 
     def _withheld(self, rows: Sequence[dict[str, Any]]) -> Sequence[dict[str, Any]]:
-        """The rows with every NaN withheld (see :func:`withheld`); a table names the rows in its footer."""
+        """The rows with every NaN withheld (see :func:`withheld`)."""
         keys = list(self.fields) or self.keys or []
         if not any(unanswered(row, keys) for row in rows):
             return rows
-        fixed: list[dict[str, Any]] = []
-        for row in rows:
-            row = withheld(row, keys)
-            if ERROR in row and self.fmt == "table" and not self.fields:
-                note = f"row {len(self.table_rows) + len(fixed) + 1}: {row[ERROR]}"
-                if note not in self.footers:
-                    self.footers.append(note)
-            fixed.append(row)
-        return fixed
+        # a table names these rows in its footer (render.table: a row with an error has no answer)
+        return [withheld(row, keys) for row in rows]
 
     def _emit_columns(self, rows: ColumnRows, keys: list[str]) -> None:
         """Write rows held as columns: each column turned to text at once, then joined line by line."""
