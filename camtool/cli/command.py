@@ -25,7 +25,7 @@ from typing import Any
 import click
 
 from camtool.cli.grid import Grid
-from camtool.cli.options import preset_completion, stack
+from camtool.cli.options import file_completion, preset_completion, stack
 from camtool.cli.rows import DYNAMIC_KEYS, ZIP, Output, check_fields, open_writer
 from camtool.render.output import FORMATS
 
@@ -107,7 +107,7 @@ def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:
                             help="With --batch: stop at the first bad row (exit 2), or skip it: it keeps its place "
                                  "(empty in CSV, null with an error key in JSON), is reported on stderr, and the "
                                  "run exits 1.")(function)
-    return click.option("--batch", metavar="FILE",
+    return click.option("--batch", metavar="FILE", shell_complete=file_completion,
                         help="Read one scene per row from FILE (CSV with a header, or JSON lines; - for stdin; "
                              "UTF-8, a BOM is fine); columns are named like the long options, cells may carry "
                              "units; other columns are passed through to the output.")(function)

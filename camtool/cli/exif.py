@@ -16,7 +16,7 @@ import click
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.equipment import CAMERA, LENS, open_presets, resolve_sensor
 from camtool.cli.lensdata import lens_data, model_options
-from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, param_named, sensor_options
+from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, file_completion, param_named, sensor_options
 from camtool.core.text import printable
 from camtool.dof.ladder import model_choices
 from camtool.plans.photo import KEYS, names_from_lines
@@ -29,7 +29,7 @@ COLUMNS = [Column("file", "file", TEXT), Column("focal_length_mm", "f", SMALL), 
 
 
 @camtool_command("exif", keys=KEYS, batch=False)
-@click.argument("paths", nargs=-1, metavar="FILE...")
+@click.argument("paths", nargs=-1, metavar="FILE...", shell_complete=file_completion)
 @click.option("-r", "--recursive", is_flag=True,
               help="Descend into directories given as FILE (files with an image or raw suffix, sorted).")
 @click.option("-s", "--distance", type=DISTANCE_M, default=None, metavar="LENGTH",

@@ -10,7 +10,7 @@ import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
-from camtool.cli.options import library_errors
+from camtool.cli.options import completion, library_errors, preset_names
 from camtool.cli.params import FNumberType, NumberType, TimeType, _ListType, flatten
 from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
@@ -112,6 +112,19 @@ def single(ctx: click.Context, values: Any, default: float | None = None) -> Any
 
 
 # No --batch: a row of this command is a choice among light sources and solved settings, not a grid point.
+def _light_names() -> list[str]:
+    from camtool.exposure.light import LIGHT_LEVELS
+
+    return list(LIGHT_LEVELS)
+
+
+def _film_names() -> list[str]:
+    from camtool.exposure.reciprocity import load_films
+
+    shipped = [name for film in load_films().values() for name in (film.id, *film.aliases)]
+    return shipped + preset_names("film")
+
+
 @camtool_command("exposure", keys=KEYS, batch=False)
 @click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
               help="f-number (8, f/8, f8) or T-stop (T2; exposure uses it as is); a list 2.8,4 gives a row each. "
@@ -129,7 +142,7 @@ def single(ctx: click.Context, values: Any, default: float | None = None) -> Any
                    "the equivalents when both -N and -t are left out.")
 @click.option("--ev", type=NumberType(-10, 25), multiple=True,
               help="Light level as the EV a meter reads at the ISO in use (--iso, default 100).")
-@click.option("--light", metavar="NAME",
+@click.option("--light", metavar="NAME", shell_complete=completion(_light_names),
               help="Named light level: sunny, slight-overcast, overcast, heavy-overcast, shade, snow, "
                    "sunset, home-interior, ... (sunny-16 rule and ANSI exposure tables).")
 @click.option("--luminance", type=NumberType(1e-9, 1e12),
@@ -147,7 +160,7 @@ def single(ctx: click.Context, values: Any, default: float | None = None) -> Any
 @click.option("--magnification", type=NumberType(0, 100), help="Close-up magnification m (1 = 1:1): bellows factor.")
 @click.option("--pupil-mag", "pupil_magnification", type=NumberType(0.01, 100), default="1", show_default=True,
               help="Pupil magnification P of the lens (exit/entrance pupil) for the bellows factor (1 + m/P)².")
-@click.option("--film", metavar="NAME",
+@click.option("--film", metavar="NAME", shell_complete=completion(_film_names),
               help="Film for reciprocity failure, from its maker's data (hp5, tmax100, tri-x, velvia50, acros, "
                    "800t, ...; `camtool presets list --kind film` lists them) or a films preset.")
 @click.option("--reciprocity-p", "reciprocity_p", type=NumberType(1, 3),

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any, TypeVar
 
 import click
@@ -94,22 +94,49 @@ distance_plane_option = click.option(
     "--distance-from", "distance_from", type=click.Choice(FOCUS_PLANES), default="sensor", show_default=True,
     help="Reference plane of all distances: the sensor (focal-plane mark, as lens scales and specs) or the lens.")
 
-def preset_completion(kind: str) -> Callable[[click.Context, click.Parameter, str], list[Any]]:
-    """Shell completion of preset names of one kind (loads the preset database only when completing)."""
+Completer = Callable[[click.Context, click.Parameter, str], list[Any]]
+
+
+def completion(names: Callable[[], Iterable[str]]) -> Completer:
+    """Shell completion from a list of values, made only when completing (a failure completes nothing)."""
 
     def complete(ctx: click.Context, param: click.Parameter, incomplete: str) -> list[Any]:
         from click.shell_completion import CompletionItem
 
-        from camtool.presets import load_db
-
         try:
-            names = load_db().names(kind)
-        except Exception:  # a broken preset file must not break the shell
+            values = list(names())
+        except Exception:
             return []
         prefix = incomplete.lower()
-        return [CompletionItem(name) for name in names if name.lower().startswith(prefix)]
+        return [CompletionItem(value) for value in dict.fromkeys(values) if value.lower().startswith(prefix)]
 
     return complete
+
+
+def preset_names(*kinds: str) -> list[str]:
+    """The ids of the presets of ``kinds`` in effect."""
+    from camtool.presets import load_db
+
+    database = load_db()
+    return [name for kind in kinds for name in database.names(kind)]
+
+
+def preset_completion(*kinds: str) -> Completer:
+    """Shell completion of the preset names of ``kinds`` (loads the preset database only when completing)."""
+    return completion(lambda: preset_names(*kinds))
+
+
+def _coc_rules() -> Iterable[str]:
+    from camtool.geometry.coc import RULES_TO_COMPLETE
+
+    return RULES_TO_COMPLETE
+
+
+def file_completion(ctx: click.Context, param: click.Parameter, incomplete: str) -> list[Any]:
+    """Shell completion of file paths (the shell's own)."""
+    from click.shell_completion import CompletionItem
+
+    return [CompletionItem(incomplete, type="file")]
 
 
 sensor_options = stack(
@@ -122,7 +149,7 @@ sensor_options = stack(
 coc_options = stack(
     click.option("--coc", type=COC_MM, multiple=True,
                  help="Circle of confusion, e.g. 0.03 or 0.03mm (overrides --coc-rule)."),
-    click.option("--coc-rule", default=None, metavar="RULE",
+    click.option("--coc-rule", default=None, metavar="RULE", shell_complete=completion(_coc_rules),
                  help="CoC from the sensor: d/1500 (default), d/1730, d/1442, px:2 (pixel pitches), print:8x10in@25cm."),
     click.option("--pixel-pitch", type=PIXEL_PITCH_UM,
                  help="Pixel pitch for --coc-rule px:K, e.g. 4.3 or 4.3um (bare numbers are µm, as spec sheets give it)."),

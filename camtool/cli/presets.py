@@ -68,7 +68,7 @@ def list_presets(ctx: click.Context, kind: str | None, search: str | None, fmt: 
 
 
 @presets.command("show")
-@click.argument("name", shell_complete=preset_completion("lens"))
+@click.argument("name", shell_complete=preset_completion(*KINDS))
 @click.option("--kind", type=KIND_CHOICE, help="The kind, when a name is used by several kinds.")
 @format_option
 @presets_option

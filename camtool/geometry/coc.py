@@ -25,6 +25,8 @@ from typing import NamedTuple
 from camtool.core.units import UnitError, parse_length
 
 DEFAULT_RULE = "d/1500"
+RULES_TO_COMPLETE = ("d/1500", "d/1730", "d/1442", "px:1", "px:2", "print:8x10in@25cm")
+"""The rules a shell completes for ``--coc-rule`` (any ``d/K``, ``px:K`` or ``print:WxH@DIST`` is accepted)."""
 EYE_ACUITY_MM_AT_250 = 0.25
 """Blur diameter an eye just resolves on a print viewed from 25 cm (the traditional figure)."""
 

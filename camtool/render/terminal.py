@@ -77,6 +77,9 @@ def write_failure(error: OSError) -> tuple[int, str | None]:
 def interrupted() -> None:
     """Ctrl-C: one line and exit 130 (128 + SIGINT), as shells expect, wherever it landed."""
     discard_stdout()
+    from camtool.render.progress import stop_all
+
+    stop_all()
     try:
         sys.stderr.write("camtool: interrupted\n")
         sys.stderr.flush()
