@@ -45,6 +45,7 @@ from camtool.core.ranges import (
     FOCAL_LENGTH_MM,
     MAGNIFICATION,
     PIXEL_PITCH_UM,
+    PUPIL_MAGNIFICATION,
     SENSOR_SIDE_MM,
     describe,
 )
@@ -155,8 +156,6 @@ SensorSideReal = Annotated[float, _Kind("number", scalar=True, bounds=SENSOR_SID
 Magnification = Annotated[Any, _Kind("number", bounds=MAGNIFICATION)]
 MagnificationOrZero = Annotated[Any, _Kind("number", bounds=(0.0, MAGNIFICATION[1]), zero_ok=True)]
 """A magnification, or 0 for a subject at infinity (closed at 0, unlike :data:`Magnification`)."""
-PUPIL_MAGNIFICATION = (0.05, 20.0)
-"""The pupil magnification P, as ``--pupil-mag`` takes it: retrofocus wide angles to long telephotos."""
 PupilMagnification = Annotated[Any, _Kind("number", bounds=PUPIL_MAGNIFICATION)]
 OptionalPupilMagnification = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=PUPIL_MAGNIFICATION)]
 Wavelength = Annotated[Any, _Kind("number", bounds=(200.0, 2000.0), unit="nm")]

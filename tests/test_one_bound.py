@@ -18,7 +18,7 @@ import pytest
 import camtool
 from camtool import api
 from camtool.cli import cli
-from camtool.cli.params import FNumberType, LengthType, NumberType
+from camtool.cli.params import FNumberType, LengthType, NumberType, PupilMagnificationType
 from camtool.core.errors import DomainError
 
 # API argument -> (command, option parameter name)
@@ -34,6 +34,7 @@ STANDS_FOR = {
     "rule_constant": ("stars", "rule_constant"),
     "npf_k": ("stars", "npf_k"),
     "iso": ("exposure", "iso"),
+    "pupil_magnification": ("dof", "pupil_mag"),
 }
 
 
@@ -50,6 +51,10 @@ def _option_bounds(command: str, name: str) -> tuple[float, float] | None:
         return F_NUMBER
     if isinstance(kind, NumberType):
         return kind.low, kind.high
+    if isinstance(kind, PupilMagnificationType):
+        from camtool.core.ranges import PUPIL_MAGNIFICATION
+
+        return PUPIL_MAGNIFICATION
     if isinstance(kind, click.FloatRange):
         return kind.min, kind.max
     return None
@@ -100,3 +105,25 @@ def test_a_focal_length_outside_the_option_s_range_is_refused_on_both_paths(valu
     assert caught.value.param == "focal_length_mm"
     assert run("dof", "-f", "1", "-N", "8", "-s", "3m").exit_code == 0
     camtool.depth_of_field(1.0, 8, 0.03, 3000)
+
+
+def test_every_pupil_magnification_option_takes_one_range() -> None:
+    """--pupil-mag is one quantity on every command that takes it (exposure's bellows factor included)."""
+    found = {}
+    ctx = click.Context(cli)
+    for name in cli.list_commands(ctx):
+        command = cli.get_command(ctx, name)
+        for sub in list(getattr(command, "commands", {}).values()) or [command]:
+            for param in sub.params:
+                if "--pupil-mag" in getattr(param, "opts", ()):
+                    found[f"{name} {sub.name}"] = _option_bounds_of(param)
+    assert len(found) >= 5 and set(found.values()) == {(0.05, 20.0)}, found
+
+
+def _option_bounds_of(param: click.Parameter) -> tuple[float, float] | None:
+    kind = param.type
+    if isinstance(kind, PupilMagnificationType):
+        from camtool.core.ranges import PUPIL_MAGNIFICATION
+
+        return PUPIL_MAGNIFICATION
+    return (kind.low, kind.high) if isinstance(kind, NumberType) else None

@@ -11,7 +11,7 @@ import click
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
 from camtool.cli.options import completion, library_errors, preset_names
-from camtool.cli.params import FNumberType, NumberType, TimeType, _ListType, flatten
+from camtool.cli.params import FNumberType, NumberType, PupilMagnificationType, TimeType, _ListType, flatten
 from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
 from camtool.render.columns import NUMBER, TEXT, Column
@@ -158,7 +158,7 @@ def _film_names() -> list[str]:
               help="ND filter, repeatable (stacked): a factor ND1000 or 1000x, stops 10stops or 10ev, an optical "
                    "density 3.0D or OD3 (a bare number is refused: it could be any of the three).")
 @click.option("--magnification", type=NumberType(0, 100), help="Close-up magnification m (1 = 1:1): bellows factor.")
-@click.option("--pupil-mag", "pupil_magnification", type=NumberType(0.01, 100), default="1", show_default=True,
+@click.option("--pupil-mag", "pupil_magnification", type=PupilMagnificationType(), default="1", show_default=True,
               help="Pupil magnification P of the lens (exit/entrance pupil) for the bellows factor (1 + m/P)².")
 @click.option("--film", metavar="NAME", shell_complete=completion(_film_names),
               help="Film for reciprocity failure, from its maker's data (hp5, tmax100, tri-x, velvia50, acros, "
@@ -227,7 +227,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
         answer = work_out(
             **value, light=light, meter_k=meter_k[0], meter_c=meter_c[0], nd=nd,
             magnification=magnification[0] if magnification else 0.0,
-            pupil_magnification=pupil_magnification[0], film=film_data,
+            pupil_magnification=pupil_magnification, film=film_data,
             reciprocity_p=reciprocity_p[0] if reciprocity_p else None,
             new_iso=new_iso[0] if new_iso else None,
             new_f_number=float(new_f_number[0]) if new_f_number else None,

@@ -15,6 +15,7 @@ from typing import Any
 
 import click
 
+from camtool.core import ranges
 from camtool.core.ranges import F_NUMBER
 from camtool.core.units import MM_PER_UNIT, TStop, UnitError, parse_f_number, parse_length, parse_t_stop, parse_time
 
@@ -267,7 +268,7 @@ class SignedLengthType(click.ParamType):
 
 
 class PupilMagnificationType(click.ParamType):
-    """Pupil magnification P = exit/entrance pupil diameter; valid 0.05 to 20."""
+    """Pupil magnification P = exit/entrance pupil diameter, within ``ranges.PUPIL_MAGNIFICATION``."""
 
     name = "ratio"
 
@@ -278,8 +279,9 @@ class PupilMagnificationType(click.ParamType):
             number = float(str(value).strip())
         except ValueError:
             self.fail(f"{value!r} is not a number (examples: 0.6, 1, 2.5)", param, ctx)
-        if not 0.05 <= number <= 20.0:
-            self.fail(f"{value} is outside the valid range: 0.05 to 20 (exit over entrance pupil diameter)",
+        low, high = ranges.PUPIL_MAGNIFICATION
+        if not low <= number <= high:
+            self.fail(f"{value} is outside the valid range: {low:g} to {high:g} (exit over entrance pupil diameter)",
                       param, ctx)
         return number
 

@@ -42,6 +42,9 @@ HIATUS_FOCAL_LENGTHS = 10.0
 MAGNIFICATION = (1.0e-9, 1000.0)
 """Magnification for close-up work."""
 
+PUPIL_MAGNIFICATION = (0.05, 20.0)
+"""The pupil magnification P (exit over entrance pupil diameter): retrofocus wide angles to long telephotos."""
+
 EXTENSION_MM = (0.0, 10_000.0)
 """Extension tubes or bellows behind a lens: up to 10 m, beyond any bellows made (and any magnification above)."""
 
