@@ -38,6 +38,8 @@ from typing import Annotated, Any, NamedTuple, TypeVar
 from camtool.core.domain import ISO_RANGE, SHUTTER_RANGE_S
 from camtool.core.errors import DomainError
 from camtool.core.ranges import (
+    CHART_DPI,
+    CHART_SIDE_IN,
     COC_MM,
     CROP_FACTOR,
     DISTANCE_MM,
@@ -61,9 +63,11 @@ from camtool.geometry.thinlens import FocusGeometry
 from camtool.plans.photo import PhotoAnswer
 from camtool.plans.stack import BracketStack, RailStack
 from camtool.plans.tilt import TiltAnswer
+from camtool.render.chartdata import ChartData
 
 __all__ = [
     "BracketStack",
+    "ChartData",
     "Composition",
     "DepthOfField",
     "DofLimits",
@@ -80,6 +84,7 @@ __all__ = [
     "StarLimits",
     "TiltAnswer",
     "bracket_stack",
+    "chart",
     "circle_of_confusion",
     "composition",
     "depth_of_field",
@@ -95,6 +100,7 @@ __all__ = [
     "preset",
     "preset_names",
     "rail_stack",
+    "save_chart",
     "star_trail_limits",
     "tilt",
 ]
@@ -103,7 +109,7 @@ __all__ = [
 class _Kind:
     """What a public function's parameter takes; :func:`_checked` checks each argument against it."""
 
-    what: str  # "number", "choice", "text", "flag", "prescription"
+    what: str  # "number", "choice", "text", "flag", "points", "chart", "prescription"
     optional: bool = False  # None allowed (it then means "not given")
     allow_inf: bool = False  # +inf allowed (a distance at infinity)
     scalar: bool = False  # one number only, no array
@@ -130,6 +136,8 @@ class _Kind:
             text = "True or False"
         elif self.what == "points":
             text = "two (distance_mm, height_mm) pairs"
+        elif self.what == "chart":
+            text = "a camtool.ChartData (from camtool.chart)"
         else:
             text = "a camtool.optics.prescription.Prescription"
         return text + (", or None" if self.optional else "")
@@ -330,6 +338,9 @@ def _check(name: str, value: Any, kind: _Kind) -> Any:
     elif kind.what == "flag":
         numpy = sys.modules.get("numpy")
         if not (isinstance(value, bool) or (numpy is not None and isinstance(value, numpy.bool_))):
+            raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
+    elif kind.what == "chart":
+        if not isinstance(value, ChartData):
             raise DomainError(name, _shown(value), kind.describe(), f"a {type(value).__name__}")
     else:
         from camtool.optics.prescription import Prescription
@@ -943,3 +954,102 @@ def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_m
     return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
                 overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,
                 pupil_magnification=pupil_magnification or 1.0, distance_from=distance_from, lens_name=lens)
+
+
+ChartKind = Annotated[str, _Kind("choice", choices=("dof", "blur", "aperture", "trade", "card"))]
+Units = Annotated[str, _Kind("choice", choices=("metric", "imperial"))]
+OptionalFNumbers = Annotated[Any, _Kind("number", optional=True, bounds=F_NUMBER)]
+OptionalFocalLengths = Annotated[Any, _Kind("number", optional=True, bounds=FOCAL_LENGTH_MM, unit="mm")]
+OptionalDistances = Annotated[Any, _Kind("number", optional=True, allow_inf=True, bounds=DISTANCE_MM, unit="mm")]
+OptionalFill = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(0.0, 1.0))]
+FillAxis = Annotated[str, _Kind("choice", choices=("height", "width"))]
+Inches = Annotated[float, _Kind("number", scalar=True, bounds=CHART_SIDE_IN, unit="in")]
+Dpi = Annotated[float, _Kind("number", scalar=True, bounds=CHART_DPI)]
+
+
+def _listed(value: Any) -> list[float]:
+    import numpy as np
+
+    return [] if value is None else [float(v) for v in np.atleast_1d(np.asarray(value, dtype=float))]
+
+
+@_checked
+def chart(kind: ChartKind, *, coc_mm: RealCoC, focal_length_mm: OptionalFocalLengths = None,
+          f_number: OptionalFNumbers = None, distance_mm: OptionalDistances = None,
+          near_mm: OptionalDistance = None, far_mm: OptionalDistanceOrInf = None, model: Model = "auto",
+          distance_from: DistanceFrom = "sensor", sensor_width_mm: SensorSideReal = 36.0,
+          sensor_height_mm: SensorSideReal = 24.0, sensor_label: Text = "36 × 24 mm",
+          magnification: OptionalPositive = None, subject_size_mm: OptionalDistance = None,
+          fill: OptionalFill = None, fill_axis: FillAxis = "height", pupil_magnification: OptionalPupilMagnification = None,
+          wavelength_nm: RealWavelength = 550.0, diffraction: Flag = False, units: Units = "metric") -> ChartData:
+    """The numbers of a ``camtool chart KIND``: curves and marks in mm (draw them with :func:`save_chart`).
+
+    ``dof`` takes focal lengths and f-numbers (lists or arrays) and plots near and far against the focus
+    distance; ``blur`` background blur behind a subject (``magnification``, or ``subject_size_mm`` and
+    ``fill``); ``aperture`` defocus and diffraction blur against f-number for a scene from ``near_mm`` to
+    ``far_mm``; ``trade`` every rung's error against its time for one scene (``distance_mm``); ``card`` a
+    printable card's cells (f-numbers across, ``distance_mm`` rows). The defaults and ranges are the
+    command's (:mod:`camtool.plans.chart`).
+
+    Examples
+    --------
+    50 mm f/8, c = 0.03 mm, 3 m from the lens: near 2337.9 mm, far 4185.3 mm (Wikipedia, "Depth of field"):
+
+    >>> card = chart("card", coc_mm=0.03, focal_length_mm=50, f_number=8, distance_mm=3000, model="thin",
+    ...              distance_from="lens")
+    >>> [round(card.extra[k][0][0], 1) for k in ("near_mm", "far_mm")]
+    [2337.9, 4185.3]
+    """
+    from camtool.plans import chart as plan
+
+    focal, apertures, distances = _listed(focal_length_mm), _listed(f_number), _listed(distance_mm)
+    if kind == "dof":
+        return plan.dof_chart(focal_lengths_mm=focal, f_numbers=apertures or [8.0], coc_mm=coc_mm, model=model,
+                              distance_from=distance_from, diffraction=diffraction, wavelength_nm=wavelength_nm,
+                              from_mm=near_mm, to_mm=far_mm)
+    if kind == "blur":
+        return plan.blur_chart(f_numbers=apertures or [2.8], focal_lengths_mm=focal, magnification=magnification,
+                               subject_size_mm=subject_size_mm, fill=fill, fill_axis=fill_axis,
+                               sensor_width_mm=sensor_width_mm, sensor_height_mm=sensor_height_mm,
+                               sensor_label=sensor_label)
+    if kind == "aperture":
+        return plan.aperture_chart(focal_length_mm=_one("focal_length_mm", focal), coc_mm=coc_mm, near_mm=near_mm,
+                                   far_mm=far_mm, distance_from=distance_from,
+                                   pupil_magnification=pupil_magnification, wavelength_nm=wavelength_nm)
+    if kind == "trade":
+        return plan.trade_chart(focal_length_mm=_one("focal_length_mm", focal), f_number=_one("f_number", apertures),
+                                coc_mm=coc_mm, distance_mm=_one("distance_mm", distances), distance_from=distance_from,
+                                diffraction=diffraction, wavelength_nm=wavelength_nm)
+    return plan.card_chart(focal_length_mm=_one("focal_length_mm", focal), coc_mm=coc_mm, f_numbers=apertures,
+                           distances_mm=distances, units=units, model=model, distance_from=distance_from)
+
+
+def _one(name: str, values: list[float]) -> float:
+    if len(values) != 1:
+        raise DomainError(name, values or None, "one number for this chart")
+    return values[0]
+
+
+@_checked
+def save_chart(data: Annotated[Any, _Kind("chart")], output: Text, *, width_in: Inches = 8.0, height_in: Inches = 5.0,
+               dpi: Dpi = 150.0, units: Units = "metric") -> None:
+    """Draw a :func:`chart`'s data to the file ``output`` (PNG, SVG or PDF by its extension), as ``camtool chart`` does.
+
+    Needs matplotlib (the ``chart`` extra). The file carries no date, so the same data give the same bytes.
+    """
+    from camtool.core.errors import InputError
+    from camtool.core.files import WriteProblem, check_writable, write_bytes
+    from camtool.plans.chart import check_pixels, image_format
+    from camtool.render import chartplot
+
+    try:
+        fmt = image_format(output=output, given=None)
+    except InputError:
+        raise DomainError("output", output, "a file name ending in .png, .svg or .pdf") from None
+    if fmt == "png":
+        check_pixels(size_in=(width_in, height_in), dpi=dpi)
+    try:
+        check_writable([output])
+        write_bytes(output, chartplot.to_bytes(chartplot.draw(data, width_in, height_in, units), fmt, dpi))
+    except WriteProblem as problem:
+        raise DomainError("output", output, "a file that can be written", problem.problem) from None

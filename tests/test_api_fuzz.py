@@ -22,6 +22,7 @@ import inspect
 import math
 import os
 import re
+import tempfile
 from decimal import Decimal
 from fractions import Fraction
 from pathlib import Path
@@ -37,6 +38,7 @@ import camtool
 from camtool.core.errors import CamtoolError, DomainError
 
 EXAMPLES = int(os.environ.get("CAMTOOL_API_FUZZ_EXAMPLES", "150"))
+_OUT = tempfile.mkdtemp(prefix="camtool-api-fuzz-")
 SEED = int(os.environ.get("CAMTOOL_API_FUZZ_SEED", "20261127"))
 
 FUNCTIONS = {name: getattr(camtool, name) for name in camtool.__all__ if inspect.isfunction(getattr(camtool, name))}
@@ -102,7 +104,30 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "lens": st.sampled_from([None, "nikon-z-24mm-f1.8-s", "sony-fe-85mm-f1.8", "nikon-z-24-70mm-f4-s", "no-such-lens"]),
     "name": st.sampled_from(["full-frame", "nikon-z-8", "nikon-z-24mm-f1.8-s", "dgauss100", "hp5", "Full Frame",
                              "no-such-preset"]),
+    "sensor_label": st.sampled_from(["36 × 24 mm", "APS-C", ""]),
+    "subject_size_mm": st.one_of(st.none(), st.floats(10.0, 1e4)),
+    "fill": st.one_of(st.none(), st.floats(0.05, 1.0)),
+    "fill_axis": st.sampled_from(["height", "width"]),
+    "units": st.sampled_from(["metric", "imperial"]),
+    "data": st.just(None).map(lambda _: _chart()),
+    "output": st.sampled_from([str(Path(_OUT) / name) for name in ("c.svg", "c.png", "c.pdf", "c.txt", "c")]
+                              + [_OUT, "/nonexistent/dir/c.svg"]),
+    "width_in": st.floats(1.0, 12.0),
+    "height_in": st.floats(1.0, 12.0),
+    "dpi": st.floats(20.0, 200.0),
 }
+# per function, where a parameter's name means something else there
+VALID_IN = {"chart": {"kind": st.sampled_from(["dof", "blur", "aperture", "trade", "card"])}}
+
+def _chart() -> Any:
+    """One chart's data, made once (for save_chart)."""
+    if not _CHARTS:
+        _CHARTS.append(camtool.chart("dof", coc_mm=0.03, focal_length_mm=50, f_number=[4, 8], model="thin"))
+    return _CHARTS[0]
+
+
+_CHARTS: list[Any] = []
+
 
 def _prescription(name: str) -> Any:
     """A shipped lens prescription (the double Gauss 100 mm), loaded once."""
@@ -143,11 +168,11 @@ def hostile_arrays() -> st.SearchStrategy[Any]:
             | hnp.arrays(np.int64, shapes) | hnp.arrays(np.uint8, shapes))
 
 
-def argument(name: str) -> st.SearchStrategy[Any]:
-    valid = VALID[name]
+def argument(name: str, function: str = "") -> st.SearchStrategy[Any]:
+    valid = VALID_IN.get(function, {}).get(name, VALID[name])
     if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name", "lens",
                 "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum", "points",
-                "criterion"):
+                "criterion", "sensor_label", "fill_axis", "units", "data", "output"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()
@@ -158,7 +183,7 @@ def argument(name: str) -> st.SearchStrategy[Any]:
 
 def arguments(function: Any) -> st.SearchStrategy[dict[str, Any]]:
     parameters = inspect.signature(function).parameters
-    return st.fixed_dictionaries({name: argument(name) for name in parameters})
+    return st.fixed_dictionaries({name: argument(name, function.__name__) for name in parameters})
 
 
 def _values(result: Any, field: str = "") -> list[tuple[str, Any]]:
@@ -233,7 +258,7 @@ def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
                 "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
                 "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt", "rail_stack",
-                "bracket_stack"}
+                "bracket_stack", "chart", "save_chart"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)

@@ -150,3 +150,26 @@ def test_a_plain_lens_bracketed_to_infinity_ends_at_hyperfocal_h(plane: str, mod
     assert all(f["distance_mm"] < h["hyperfocal_mm"] for f in frames[:-1])
     if model == "thin" and plane == "lens":  # Wikipedia, "Hyperfocal distance": H = f²/(N·c) + f
         assert h["hyperfocal_mm"] == pytest.approx(50**2 / (8 * 0.03) + 50, rel=1e-12)
+
+
+@pytest.mark.parametrize("model", ["thin", "auto"])
+def test_the_chart_api_gives_the_card_and_curves_the_command_draws(model: str, tmp_path) -> None:
+    """``camtool.chart`` and ``camtool chart … --data`` are one path: the same numbers, float for float."""
+    import json
+
+    import camtool
+
+    data = tmp_path / "card.json"
+    result = run("chart", "card", "-f", "50", "-N", "4,8", "-s", "2m,5m", "--coc", "0.03", "--model", model,
+                 "-o", str(tmp_path / "card.svg"), "--data", str(data))
+    assert result.exit_code == 0, result.output
+    card = camtool.chart("card", coc_mm=0.03, focal_length_mm=50, f_number=[4, 8], distance_mm=[2000, 5000],
+                         model=model)
+    shown = json.loads(data.read_text())
+    assert shown["extra"]["near_mm"] == card.to_json()["extra"]["near_mm"]
+    assert shown["extra"]["far_mm"] == card.to_json()["extra"]["far_mm"]
+    dof = run("chart", "dof", "-f", "50", "-N", "8", "--coc", "0.03", "--model", model, "-o",
+              str(tmp_path / "dof.svg"), "--data", str(data))
+    assert dof.exit_code == 0, dof.output
+    curves = camtool.chart("dof", coc_mm=0.03, focal_length_mm=50, f_number=8, model=model).to_json()["curves"]
+    assert json.loads(data.read_text())["curves"] == curves

@@ -41,6 +41,7 @@ from camtool.cli.options import (
     stack,
 )
 from camtool.cli.params import LengthType, NumberType, flatten
+from camtool.core import ranges
 from camtool.core.errors import InputError
 from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
 from camtool.dof.ladder import focal_lengths, model_choices
@@ -85,8 +86,9 @@ class SizeType(click.ParamType):
             self.fail(f"{value!r} is not a size (examples: 8x5, 8x5in, 20x12cm)", param, ctx)
         per_inch = {"in": 1.0, None: 1.0, "cm": 2.54, "mm": 25.4}[match.group(3)]
         w, h = float(match.group(1)) / per_inch, float(match.group(2)) / per_inch
-        if not (1.0 <= w <= 40.0 and 1.0 <= h <= 40.0):
-            self.fail(f"{value} is outside the valid range: 1 to 40 inches a side", param, ctx)
+        low, high = ranges.CHART_SIDE_IN
+        if not (low <= w <= high and low <= h <= high):
+            self.fail(f"{value} is outside the valid range: {low:g} to {high:g} inches a side", param, ctx)
         return w, h
 
 
@@ -98,7 +100,7 @@ chart_output_options = stack(
                  help="png, svg or pdf; needed with -o -, otherwise taken from the file's extension."),
     click.option("--size", type=SizeType(), metavar="WxH", help="Figure size in inches (8x5) or with a unit "
                  "(20x12cm). Default: 8x5 in; for card, the --paper size."),
-    click.option("--dpi", type=NumberType(20, 1200), default="150", show_default=True,
+    click.option("--dpi", type=NumberType(*ranges.CHART_DPI), default="150", show_default=True,
                  help="Pixels per inch of a PNG (SVG and PDF are vector); a PNG has at most 144 megapixels "
                       "(40x40 in at 300 dpi)."),
     click.option("--data", "data_file", metavar="FILE",

@@ -42,6 +42,12 @@ HIATUS_FOCAL_LENGTHS = 10.0
 MAGNIFICATION = (1.0e-9, 1000.0)
 """Magnification for close-up work."""
 
+CHART_SIDE_IN = (1.0, 40.0)
+"""A chart's width or height in inches."""
+
+CHART_DPI = (20.0, 1200.0)
+"""A raster chart's resolution in dots per inch."""
+
 PUPIL_MAGNIFICATION = (0.05, 20.0)
 """The pupil magnification P (exit over entrance pupil diameter): retrofocus wide angles to long telephotos."""
 
