@@ -1,7 +1,7 @@
 """Start-up budget: wall time of single camtool commands against Python's own imports.
 
 docs/design.md §7: ``camtool dof ... --format json`` within 2× of ``python -c "import click"``,
-and the table (drawn by camtool's own plain-text renderer) within 2× of the same.
+and the table (drawn by rich, `camtool/render/table.py`) within 2× of the same.
 Each command runs ``--repeat`` times, interleaved so that machine noise hits
 every candidate alike; the figures are medians and the verdicts are ratios.
 
