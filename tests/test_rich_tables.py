@@ -162,3 +162,59 @@ def test_the_theme_is_the_one_source_of_escape_codes() -> None:
         assert start.startswith("\x1b[") and end == "\x1b[0m"
     out = io.StringIO()
     assert table_module.colour_system(out) is None
+
+
+GRID = ["dof", "-f", "50", "-N", ",".join(f"{1 + i / 100:g}" for i in range(1000)), "-s",
+        ",".join(f"{1 + i / 10:g}m" for i in range(100)), "--model", "thin", "--format", "csv"]
+
+
+def _stderr_on_a_terminal(args: list[str], out: Path, interrupt_after: bytes | None = None) -> tuple[str, int]:
+    """Run camtool with stdout to ``out`` and stderr on a pseudo-terminal: what the terminal got, and the status."""
+    import pty
+    import signal
+    import time
+
+    from test_shell import CAMTOOL, ENV
+
+    pid, fd = pty.fork()
+    if pid == 0:  # child: stdout to the file, stderr stays on the terminal
+        target = os.open(out, os.O_WRONLY | os.O_CREAT | os.O_TRUNC)
+        os.dup2(target, 1)
+        os.execve(CAMTOOL, [CAMTOOL, *args], {**ENV, "TERM": "xterm-256color", "COLUMNS": "100"})
+    chunks: list[bytes] = []
+    sent = False
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:
+        try:
+            data = os.read(fd, 65536)
+        except OSError:
+            break
+        if not data:
+            break
+        chunks.append(data)
+        if interrupt_after is not None and not sent and interrupt_after in b"".join(chunks):
+            os.kill(pid, signal.SIGINT)
+            sent = True
+    _, status = os.waitpid(pid, 0)
+    return b"".join(chunks).decode(errors="replace"), os.waitstatus_to_exitcode(status)
+
+
+def test_progress_shows_on_a_terminal_only_on_stderr(tmp_path) -> None:
+    drawn, status = _stderr_on_a_terminal(GRID, tmp_path / "out.csv")
+    assert status == 0
+    assert "camtool dof: rows" in drawn and "100000" in drawn.replace(",", "")
+    lines = (tmp_path / "out.csv").read_text().splitlines()
+    assert len(lines) == 100_001 and "\x1b" not in lines[0] + lines[-1]  # stdout untouched
+
+
+def test_no_progress_into_a_pipe() -> None:
+    result = subprocess.run([sys.executable, "-m", "camtool", *GRID], capture_output=True, text=True)
+    assert result.returncode == 0 and result.stderr == ""
+
+
+def test_ctrl_c_during_progress_ends_in_one_line_and_restores_the_cursor(tmp_path) -> None:
+    many = [*GRID[:4], ",".join(f"{1 + i / 1000:g}" for i in range(10_000)), *GRID[5:]]
+    drawn, status = _stderr_on_a_terminal(many, tmp_path / "out.csv", interrupt_after=b"camtool dof: rows")
+    assert status == 130
+    assert drawn.rstrip().endswith("camtool: interrupted")
+    assert "\x1b[?25h" in drawn.split("camtool: interrupted")[0][-40:]

@@ -170,18 +170,22 @@ def stream_grid(ctx: click.Context, grid: Grid, first: Output, compute: Callable
     An error in a later chunk ends the run after the chunks before it are
     written (JSON still a complete array), as a bad row ends ``--batch``.
     """
+    from camtool.render.progress import progress
+
     writer = open_writer(fmt, units, fields)
     out = first
-    try:
-        while True:
-            writer.write(out.rows, out.columns, out.keys, out.footer)
-            if grid.done:
-                break
-            grid.advance()
-            out = compute()
-    except click.ClickException:
-        writer.close()
-        raise
+    with progress(f"camtool {ctx.info_name}: rows", total=grid.count) as bar:
+        try:
+            while True:
+                writer.write(out.rows, out.columns, out.keys, out.footer)
+                bar.advance(grid.stop - grid.start)
+                if grid.done:
+                    break
+                grid.advance()
+                out = compute()
+        except click.ClickException:
+            writer.close()
+            raise
     writer.close()
 
 

@@ -46,8 +46,9 @@ class Progress:
             console = Console(file=self.stream, highlight=False, markup=False, emoji=False,
                               color_system=None if os.environ.get("NO_COLOR") else "auto")
             columns = [TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
+            # drawn when the work reports (no refresh thread): nothing can redraw it after Ctrl-C clears it
             self._bar = Bar(*columns, console=console, transient=True, redirect_stdout=False,
-                            redirect_stderr=False)
+                            redirect_stderr=False, auto_refresh=False)
             self._task = self._bar.add_task(self.label, total=self.total)
             self._bar.start()
             _ACTIVE.append(self._bar)
@@ -57,20 +58,22 @@ class Progress:
         """``steps`` more done (a chunk's rows, a file, a frame)."""
         self.done += steps
         if self._bar is not None:
-            self._bar.update(self._task, completed=self.done)
+            self._bar.update(self._task, completed=self.done, refresh=True)
 
     def grow(self, total: float) -> None:
         """The work turned out to have ``total`` steps (e.g. a grid's size once known)."""
         self.total = total
         if self._bar is not None:
-            self._bar.update(self._task, total=total)
+            self._bar.update(self._task, total=total, refresh=True)
 
-    def __exit__(self, *exc: object) -> None:
-        if self._bar is not None:
+    def __exit__(self, kind: object, *exc: object) -> None:
+        if self._bar is not None and kind is None:
             self._bar.stop()
             if self._bar in _ACTIVE:
                 _ACTIVE.remove(self._bar)
-            self._bar = None
+        elif self._bar is not None:  # an error or Ctrl-C: taken off by stop_all, or by the error's own line
+            stop_all()
+        self._bar = None
 
 
 def progress(label: str, total: float | None = None, stream: IO[str] | None = None) -> Progress:
