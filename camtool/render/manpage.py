@@ -20,9 +20,13 @@ HELP_OPTIONS = ["-h", "--help"]
 
 ENVIRONMENT = [
     ("CAMTOOL_FORMAT", "Default output format (table, json or csv) when --format is not given."),
-    ("NO_COLOR", "When set, tables are printed without colour (colour is only used on a terminal anyway)."),
-    ("COLUMNS", "Width of the terminal for tables (ignored unless a positive number); columns that do not fit are "
-                "left out and named on stderr, never cropped; into a pipe a table takes the width it needs."),
+    ("NO_COLOR", "When set (to anything), tables are printed without colour (colour is only used on a terminal "
+                 "anyway); TERM=dumb does the same."),
+    ("FORCE_COLOR", "When set, tables are coloured into a pipe too (for less -R)."),
+    ("COLUMNS", "Width of the terminal for tables (ignored unless a positive number); columns that neither "
+                "identify a row nor hold its answer are left out to fit and named on stderr, never cropped; "
+                "text then wraps, and a table still too wide becomes one block per row; into a pipe a table takes "
+                "the width it needs."),
     ("XDG_CONFIG_HOME", "User presets are read from $XDG_CONFIG_HOME/camtool (default ~/.config/camtool)."),
     ("XDG_CONFIG_DIRS", "System-wide presets are read from camtool/ below each of these directories."),
     ("XDG_DATA_HOME", "The lensfun import is written to $XDG_DATA_HOME/camtool (default ~/.local/share/camtool)."),
