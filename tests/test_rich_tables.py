@@ -218,3 +218,19 @@ def test_ctrl_c_during_progress_ends_in_one_line_and_restores_the_cursor(tmp_pat
     assert status == 130
     assert drawn.rstrip().endswith("camtool: interrupted")
     assert "\x1b[?25h" in drawn.split("camtool: interrupted")[0][-40:]
+
+
+def test_footers_of_many_chunks_are_said_once() -> None:
+    from camtool.render.output import LATER_NOTES, RowWriter
+
+    out = io.StringIO()
+    writer = RowWriter("table", stream=out)
+    columns = [Column("near_mm", "near")]
+    for chunk in range(87):
+        writer.write([{"near_mm": 1000.0 + chunk}], columns, ["near_mm"],
+                     f"thin model · CoC 0.03 mm · the branch at m = {chunk}")
+    writer.close()
+    footer = out.getvalue().split("\n")[3 + 87:]
+    assert footer[0] == "thin model · CoC 0.03 mm · the branch at m = 0"
+    assert footer[1].startswith("later rows: the branch at m = 1 · ") and f"… and {86 - LATER_NOTES} more" in footer[1]
+    assert footer[2:] == [""]

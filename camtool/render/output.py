@@ -23,6 +23,8 @@ FORMATS = ("table", "json", "csv")
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
 SLICE = 20_000
 """Rows turned to text at a time by the column writer."""
+LATER_NOTES = 4
+"""New footer notes of later chunks shown in a table's footer before the rest are counted."""
 
 
 class RowWriter:
@@ -57,6 +59,7 @@ class RowWriter:
         self.keys: list[str] | None = None
         self.columns: list[Column] = []
         self.footers: list[str] = []
+        self.later: list[str] = []
         self.pending: list[dict[str, Any]] = []
         self.table_rows: list[dict[str, Any]] = []
         self.started = False
@@ -67,9 +70,26 @@ class RowWriter:
         """Write (or, for a table, keep) one chunk of rows; the first chunk fixes the keys and columns."""
         if self.keys is None:
             self._start(keys, columns)
-        if footer and footer not in self.footers:
-            self.footers.append(printable(footer))
+        if footer:
+            self._footer(printable(footer))
         self._emit(rows)
+
+    def _footer(self, footer: str) -> None:
+        """Keep a chunk's footer: the first whole, a later one's parts only where they say something new."""
+        if not self.footers:
+            self.footers.append(footer)
+            return
+        said = {part for line in self.footers for part in line.split(" · ")} | set(self.later)
+        self.later.extend(part for part in dict.fromkeys(footer.split(" · ")) if part not in said)
+
+    def _footer_text(self) -> str:
+        """The footers of every chunk: the first, then at most :data:`LATER_NOTES` new notes of later chunks."""
+        lines = list(self.footers)
+        if self.later:
+            shown = " · ".join(self.later[:LATER_NOTES])
+            more = len(self.later) - LATER_NOTES
+            lines.append(f"later rows: {shown}" + (f" · … and {more} more notes" if more > 0 else ""))
+        return "\n".join(lines)
 
     def skip(self, message: str, cells: dict[str, Any] | None = None) -> None:
         """A row that could not be computed, in its place (``cells``: what it keeps, e.g. passed-through input)."""
@@ -93,7 +113,7 @@ class RowWriter:
         elif self.fmt not in ("csv", "json") and self.columns:
             from camtool.render.table import write_table
 
-            write_table(self.table_rows, self.columns, self.stream, self.units, "\n".join(self.footers),
+            write_table(self.table_rows, self.columns, self.stream, self.units, self._footer_text(),
                         errors=self.errors)
 
     def _start(self, keys: Sequence[str], columns: Sequence[Column]) -> None:
