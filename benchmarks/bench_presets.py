@@ -7,8 +7,9 @@ shell script pays per call), measured in one run on this machine:
 
 - ``import click`` -- the docs/design.md §7 start-up reference;
 - ``load_db() + lens lookup`` with the shipped presets only;
-- the same with a generated lensfun import of 2,000 presets (1,000 sensors,
-  1,000 lenses) in ``$XDG_DATA_HOME/camtool/lensfun.yaml``;
+- the same with a generated lensfun import of 2,000 presets (1,000 cameras with
+  their sensors, 1,000 lenses) in ``$XDG_DATA_HOME/camtool/lensfun.yaml``, shaped
+  like the import's output;
 - both again with a cold cache (``CAMTOOL_NO_CACHE=1``: every file parsed as YAML).
 
 It prints the ratios the budgets are stated in: load+lookup with the import
@@ -36,12 +37,12 @@ LOOKUP = "import click; from camtool.presets import load_db; load_db().lens('can
 def write_lensfun_like(path: Path, count: int = 2000) -> None:
     """A preset file shaped like an import of the lensfun database, ``count`` entries."""
     half = count // 2
-    lines = ["sensors:"]
+    lines = ["cameras:"]
     for i in range(half):
         crop = 1.0 + (i % 50) / 10
-        lines.append(f"- {{id: bench-camera-{i}, name: Bench Camera {i}, width_mm: {36 / crop:.3f}, "
-                     f"height_mm: {24 / crop:.3f}, approximate: true, category: digital, "
-                     f"source: 'lensfun bench.xml: crop factor {crop:g}, size derived', notes: lensfun mount Bench}}")
+        lines.append(f"- {{id: bench-camera-{i}, name: Bench Camera {i}, aliases: [Bench BC-{i}], "
+                     f"sensor: {{width_mm: {36 / crop:.3f}, height_mm: {24 / crop:.3f}}}, mount: Bench, "
+                     f"approximate: true, source: 'lensfun bench.xml: crop factor {crop:g}, sensor size derived'}}")
     lines.append("lenses:")
     for i in range(count - half):
         low = 10 + i % 90

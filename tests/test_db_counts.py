@@ -14,6 +14,7 @@ DB = ROOT / "lens_db"
 def shipped_counts() -> dict[str, int]:
     counts = {kind: len(yaml.safe_load((DB / f"{kind}.yaml").read_text(encoding="utf-8"))[kind])
               for kind in ("sensors", "cameras", "lenses", "scenes")}
+    counts["compact-lenses"] = len(yaml.safe_load((DB / "compact-lenses.yaml").read_text(encoding="utf-8"))["lenses"])
     counts["prescriptions"] = len(list((DB / "prescriptions").glob("*.yaml")))
     return counts
 
@@ -24,13 +25,16 @@ def test_readme_counts_the_shipped_presets():
                       r"(\d+) lens prescriptions (?:\(.*?\) )?and (\d+) scenes", text)
     assert match, "README.md no longer says what lens_db/ ships"
     said = dict(zip(("sensors", "cameras", "lenses", "prescriptions", "scenes"), map(int, match.groups()), strict=True))
-    assert said == shipped_counts()
+    counts = shipped_counts()
+    assert said == {kind: counts[kind] for kind in said}
+    compacts = re.search(r"and (\d+) built-in lenses of compacts \(`compact-lenses\.yaml`\)", text)
+    assert compacts and int(compacts.group(1)) == counts["compact-lenses"]
 
 
 def test_lens_db_readme_table_counts_the_shipped_presets():
     text = (DB / "README.md").read_text(encoding="utf-8")
     counts = shipped_counts()
-    for kind in ("sensors", "cameras", "lenses", "scenes"):
+    for kind in ("sensors", "cameras", "compact-lenses", "lenses", "scenes"):
         row = re.search(rf"^\| `{kind}\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
         assert row and int(row.group(1)) == counts[kind], kind
     row = re.search(r"^\| `prescriptions/\*\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)

@@ -16,6 +16,7 @@ from camtool.presets.lensfun import (
     parse_aperture,
     parse_focal,
     sensor_size,
+    short_maker,
 )
 
 FIXTURES = Path(__file__).resolve().parent / "data" / "lensfun"
@@ -61,7 +62,7 @@ def test_import_fixtures(isolated):
     result = import_lensfun(dirs=[FIXTURES])
     out = isolated / "xdg_data_home" / "camtool" / "lensfun.yaml"
     assert result.path == str(out) and out.is_file()
-    assert (result.sensors, result.lenses, result.files) == (3, 4, 2)
+    assert (result.cameras, result.lenses, result.files) == (3, 4, 2)
     assert [Path(p).name for p, _ in result.bad_files] == ["fixture-broken.xml"]
     assert result.skipped["camera: no model or crop factor"] == 1
     assert result.skipped["lens: focal length unknown"] == 1
@@ -70,23 +71,116 @@ def test_import_fixtures(isolated):
     assert validate_file(out) == []
     text = out.read_text(encoding="utf-8")
     assert "CC BY-SA 3.0" in text
+    assert "sensors:" not in text
 
     db = load_db()
-    body = db.sensor("Testmaker T100")
-    assert body.approximate and body.tier == "lensfun"
-    assert (round(body.width_mm, 2), round(body.height_mm, 2)) == (24.0, 16.0)
-    assert db.sensor("testmaker t200").width_mm == pytest.approx(36.0, abs=1e-3)
+    # An interchangeable body is a camera with its sensor (sized from the crop factor) and its mount.
+    body = db.camera("Testmaker T100")
+    assert (body.id, body.approximate, body.tier, body.mount) == ("testmaker-t100", True, "lensfun", "Test Mount")
+    assert body.lens_id is None
+    assert (round(body.sensor.width_mm, 2), round(body.sensor.height_mm, 2)) == (24.0, 16.0)
+    assert db.sensor("Testmaker T100").width_mm == body.sensor.width_mm
+    # lensfun's English model names the camera; the other spelling finds it too.
+    english = db.camera("testmaker t200")
+    assert english.id == "testmaker-t200-english" and english.sensor.width_mm == pytest.approx(36.0, abs=1e-3)
     kit = db.lens("Testmaker 18-55mm f/3.5-5.6 Kit")
     assert (kit.focal_min_mm, kit.focal_max_mm, kit.f_number_min, kit.f_number_min_tele) == (18, 55, 3.5, 5.6)
     prime = db.lens("testmaker-50mm-1-1.8")
     assert (prime.focal_length_mm, prime.f_number_min) == (50, 1.8)
     special = db.lens("Testmaker Zoom Special")
     assert (special.focal_min_mm, special.focal_max_mm, special.f_number_min, special.f_number_max) == (70, 200, 4, 32)
-    # A compact's "fixed lens": named after its only body, range from the calibration data, 4:3 sensor.
-    compact = db.lens("Compactco Pocket 1 fixed lens")
-    assert (compact.focal_min_mm, compact.focal_max_mm, compact.f_number_min) == (4.8, 20.1, 2.8)
-    assert compact.sensor_id == "compactco-pocket-1"
-    assert db.sensor("compactco pocket 1").aspect_ratio == pytest.approx(4 / 3, abs=1e-3)
+    # A compact is a camera with its own lens: range from the calibration data, made for its 4:3 sensor.
+    compact = db.camera("Compactco Pocket 1")
+    assert (compact.id, compact.mount, compact.lens_id) == ("compactco-pocket-1", "fixed lens", "compactco-pocket-1-lens")
+    assert compact.sensor.aspect_ratio == pytest.approx(4 / 3, abs=1e-3)
+    lens = db.lens(compact.lens_id)
+    assert (lens.focal_min_mm, lens.focal_max_mm, lens.f_number_min, lens.mount) == (4.8, 20.1, 2.8, "fixed lens")
+    assert lens.sensor_id == "compactco-pocket-1"
+
+
+def test_imported_compact_brings_its_lens_to_the_command_line(isolated):
+    from cli_helpers import run
+
+    import_lensfun(dirs=[FIXTURES])
+    # --camera brings the compact's own lens (a zoom: the focal length is asked for, the aperture is
+    # the lens's widest) and its sensor.
+    shown = run("dof", "--camera", "compactco-pocket-1", "-s", "2m")
+    assert shown.exit_code == 2 and "compactco-pocket-1-lens is a zoom (4.8–20.1 mm)" in shown.output
+    shown = run("dof", "--camera", "compactco-pocket-1", "-f", "10", "-s", "2m")
+    assert shown.exit_code == 0, shown.output
+    assert "f/2.8" in shown.output and "Compactco Pocket 1 (" in shown.output
+
+
+@pytest.mark.parametrize(
+    ("registered", "everyday"),
+    [("Ricoh Imaging Company, Ltd.", "Ricoh"), ("Leica Camera AG", "Leica"), ("Casio Computer Co.,Ltd", "Casio"),
+     ("Eastman Kodak Company", "Eastman Kodak"), ("Samsung Techwin Co.", "Samsung"), ("SIGMA", "Sigma"),
+     ("Konica Minolta", "Konica Minolta"), ("DJI", "DJI"), ("Olympus Optical Co.,Ltd", "Olympus")],
+)
+def test_short_maker(registered, everyday):
+    assert short_maker(registered) == everyday
+
+
+def test_a_ricoh_compact_gets_a_readable_id_and_its_own_lens(tmp_path, isolated):
+    # The shape of lensfun's compact-ricoh.xml: a registered maker name, the body's own mount, the
+    # lens named "... & compatibles" with the English model "fixed lens", and a converter variant.
+    xml = tmp_path / "xml"
+    xml.mkdir()
+    (xml / "compact-ricoh.xml").write_text(
+        "<lensdatabase>"
+        "<camera><maker>Ricoh Imaging Company, Ltd.</maker><model>Ricoh GR II</model>"
+        "<mount>ricohGRII</mount><cropfactor>1.53</cropfactor></camera>"
+        "<lens><maker>Ricoh imaging company, ltd.</maker><model>Ricoh GR II &amp; compatibles</model>"
+        "<model lang=\"en\">fixed lens</model><mount>ricohGRII</mount><cropfactor>1.53</cropfactor>"
+        "<calibration><vignetting model=\"pa\" focal=\"18.3\" aperture=\"2.8\" distance=\"10\" k1=\"0\" k2=\"0\" k3=\"0\"/>"
+        "</calibration></lens>"
+        "<lens><maker>Ricoh imaging company, ltd.</maker><model>Ricoh GR II &amp; compatibles, with GW-3</model>"
+        "<model lang=\"en\">fixed lens, with GW-3</model><mount>ricohGRII</mount>"
+        "<calibration><distortion model=\"ptlens\" focal=\"13.8\" a=\"0\" b=\"0\" c=\"0\"/></calibration></lens>"
+        "</lensdatabase>", encoding="utf-8")
+    result = import_lensfun(dirs=[xml])
+    assert (result.cameras, result.lenses) == (1, 2)
+    db = load_db()
+    camera = db.camera("ricoh-gr-ii")
+    assert (camera.name, camera.mount, camera.lens_id) == ("Ricoh GR II", "fixed lens", "ricoh-gr-ii-lens")
+    assert db.lens("ricoh-gr-ii-lens").focal_length_mm == 18.3
+    converter = db.lens("ricoh-gr-ii-lens-with-gw-3")
+    assert (converter.focal_length_mm, converter.sensor_id) == (13.8, "ricoh-gr-ii")
+    text = Path(result.path).read_text(encoding="utf-8")
+    assert "ricoh-imaging-company" not in text and "compatibles" not in text
+
+
+def test_a_fixed_lens_that_cannot_be_imported_leaves_its_camera_without_a_lens(tmp_path, isolated):
+    xml = tmp_path / "xml"
+    xml.mkdir()
+    (xml / "compact.xml").write_text(
+        "<lensdatabase><camera><maker>Compactco</maker><model>Compactco Blank</model><mount>blank</mount>"
+        "<cropfactor>5</cropfactor></camera>"
+        "<lens><maker>Compactco</maker><model>fixed lens</model><mount>blank</mount></lens></lensdatabase>",
+        encoding="utf-8")
+    result = import_lensfun(dirs=[xml])
+    assert result.skipped["lens: focal length unknown"] == 1
+    assert validate_file(result.path) == []
+    camera = load_db().camera("compactco-blank")
+    assert (camera.mount, camera.lens_id) == ("fixed lens", None)
+
+
+def test_a_body_shipped_by_camtool_is_not_imported_again(tmp_path, isolated):
+    # lensfun's Sony spells the a7 III "ILCE-7M3" ("Alpha 7 III" in English); the shipped preset has
+    # the alias ilce-7m3, so the import leaves the body (and its camtool figures) alone.
+    xml = tmp_path / "xml"
+    xml.mkdir()
+    (xml / "mil-sony.xml").write_text(
+        "<lensdatabase><camera><maker>Sony</maker><model>ILCE-7M3</model><model lang=\"en\">Alpha 7 III</model>"
+        "<mount>Sony E</mount><cropfactor>1</cropfactor></camera>"
+        "<camera><maker>Sony</maker><model>ILCE-7</model><model lang=\"en\">Alpha 7</model>"
+        "<mount>Sony E</mount><cropfactor>1</cropfactor></camera></lensdatabase>", encoding="utf-8")
+    result = import_lensfun(dirs=[xml])
+    assert result.skipped["camera: already in camtool's shipped presets"] == 1 and result.cameras == 1
+    db = load_db()
+    assert db.camera("ilce-7m3").tier == "shipped"
+    imported = db.camera("Sony ILCE-7")
+    assert (imported.id, imported.tier) == ("sony-alpha-7", "lensfun")
 
 
 def test_import_never_overrides_shipped_presets(tmp_path, isolated):
@@ -118,7 +212,7 @@ def test_failed_import_writes_nothing(tmp_path, isolated):
 def test_explicit_output_path(tmp_path):
     out = tmp_path / "elsewhere" / "lf.yaml"
     result = import_lensfun(dirs=[FIXTURES], out=out)
-    assert result.path == str(out) and load_db(extra_files=(out,)).sensor("testmaker-t100").approximate
+    assert result.path == str(out) and load_db(extra_files=(out,)).camera("testmaker-t100").approximate
 
 
 def test_default_dirs_follow_xdg_data_home(isolated):
@@ -131,11 +225,23 @@ def test_default_dirs_follow_xdg_data_home(isolated):
 @pytest.mark.skipif(not SYSTEM.is_dir(), reason="lensfun database not installed (liblensfun-data-v1)")
 def test_system_lensfun_database(isolated):
     result = import_lensfun(dirs=[SYSTEM])
-    assert result.sensors > 300 and result.lenses > 500 and not result.bad_files
+    assert result.cameras > 300 and result.lenses > 500 and not result.bad_files
     db = load_db()
     assert len(db.names("lens")) > 500
-    assert db.sensor("Canon EOS 5D Mark II").width_mm == pytest.approx(36.0, abs=0.2)
+    assert db.camera("Canon EOS 5D Mark II").sensor.width_mm == pytest.approx(36.0, abs=0.2)
     assert validate_file(result.path) == []
+    # No id keeps a registered maker name or lensfun's "& compatibles".
+    ids = db.names("camera") + db.names("lens")
+    assert not [i for i in ids if "company" in i or "compatibles" in i or "corporation" in i]
+    # Every compact is a camera with its own lens (a body on a fixed-lens mount), except where the lens could not
+    # be imported; each lens it names exists and is made for it.
+    compacts = [db.camera(i) for i in db.names("camera") if db.camera(i).tier == "lensfun"
+                and db.camera(i).mount == "fixed lens"]
+    assert len(compacts) > 200
+    with_lens = [c for c in compacts if c.lens_id]
+    assert len(with_lens) > 0.9 * len(compacts)
+    for camera in with_lens:
+        assert db.lens(camera.lens_id).sensor_id == camera.id
 
 
 # --- hardening: aspect ratios, odd entries, the output file ---------------------------------

@@ -136,7 +136,7 @@ def validate(file: str) -> None:
 @click.option("--out", type=click.Path(dir_okay=False),
               help="Output preset file; default $XDG_DATA_HOME/camtool/lensfun.yaml, read as the lensfun tier.")
 def import_lensfun(dirs: tuple[str, ...], out: str | None) -> None:
-    """Import cameras (as sensors from their crop factor, marked approximate) and lenses from lensfun.
+    """Import cameras (sensor sized from their crop factor, marked approximate) and lenses from lensfun.
 
     lensfun is the lens database of darktable and RawTherapee (Debian
     package liblensfun-data-v1, under /usr/share/lensfun/version_1/); camtool
@@ -155,7 +155,7 @@ def import_lensfun(dirs: tuple[str, ...], out: str | None) -> None:
         result = run_import(list(dirs) or None, out)
     except LensfunImportError as error:
         raise click.ClickException(str(error)) from None
-    click.echo(f"imported {result.sensors} sensors and {result.lenses} lenses from {result.files} files "
+    click.echo(f"imported {result.cameras} cameras and {result.lenses} lenses from {result.files} files "
                f"into {result.path}; skipped {result.skipped_total}")
     for reason, count in sorted(result.skipped.items()):
         click.echo(f"  skipped {count}: {reason}")

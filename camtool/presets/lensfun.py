@@ -11,18 +11,28 @@ reads as the "lensfun" tier.
 
 What is kept:
 
-- each ``<camera>`` becomes a *sensor* preset named after the body. lensfun
-  gives only a crop factor, so the size is derived from it: diagonal
-  43.27 mm / crop, in the aspect ratio of the body itself. lensfun records an
-  aspect ratio only on lenses, and on an interchangeable lens it is the
-  ratio of whatever body the lens was calibrated on (a Sigma lens made for
-  both Sony E and Micro Four Thirds says 4:3), so it is used only from the
-  body's own fixed lens: a lens named "fixed lens" or "Standard", or one
-  made for that mount alone when no lens on the mount serves another mount
-  and the lenses on it agree. Otherwise 3:2 for crop factors 0.9 to 1.8
-  (35 mm and APS bodies) and 4:3 otherwise (medium format, Four Thirds,
-  compacts); every such sensor is marked ``approximate``;
-- each ``<lens>`` becomes a lens preset with its focal length or range and
+- each ``<camera>`` becomes a *camera* preset named after its maker and model
+  (``Ricoh GR III`` gives ``ricoh-gr-iii``: the maker's English name where
+  lensfun gives one, else its name without "Imaging Company, Ltd." and the
+  like; the model's English name where given, the other spelling kept as an
+  alias). lensfun gives only a crop factor, so its sensor size is derived
+  from it: diagonal 43.27 mm / crop, in the aspect ratio of the body itself.
+  lensfun records an aspect ratio only on lenses, and on an interchangeable
+  lens it is the ratio of whatever body the lens was calibrated on (a Sigma
+  lens made for both Sony E and Micro Four Thirds says 4:3), so it is used
+  only from the body's own fixed lens: a lens named "fixed lens" or
+  "Standard", or one made for that mount alone when no lens on the mount
+  serves another mount and the lenses on it agree. Otherwise 3:2 for crop
+  factors 0.9 to 1.8 (35 mm and APS bodies) and 4:3 otherwise (medium
+  format, Four Thirds, compacts); every such camera is marked
+  ``approximate``;
+- a camera whose mount carries a fixed lens (a compact) becomes a camera with
+  ``mount: fixed lens`` and its own lens: ``<camera id>-lens`` (a converter
+  variant such as lensfun's "fixed lens, with GW-4" becomes
+  ``<camera id>-lens-with-gw-4``), made for that camera's sensor, so
+  ``--camera`` brings the lens's focal length and f-number; an
+  interchangeable body keeps its lensfun mount;
+- each other ``<lens>`` becomes a lens preset with its focal length or range and
   widest f-number, taken from ``<focal>`` / ``<aperture>`` when present, else
   parsed from the model name (``18-55mm f/3.5-5.6``, ``1:2``, ``2.8/50``),
   else from the range of its calibration data, as lensfun itself does.
@@ -72,7 +82,7 @@ _GENERIC_LENS_NAMES = {"fixedlens", "standard"}
 class ImportResult:
     """What an import did: counts, the reasons entries were skipped, files that failed."""
 
-    sensors: int = 0
+    cameras: int = 0
     lenses: int = 0
     files: int = 0
     skipped: Counter[str] = field(default_factory=Counter)
@@ -81,8 +91,8 @@ class ImportResult:
 
     @property
     def imported(self) -> int:
-        """Presets written (sensors plus lenses)."""
-        return self.sensors + self.lenses
+        """Presets written (cameras plus lenses)."""
+        return self.cameras + self.lenses
 
     @property
     def skipped_total(self) -> int:
@@ -214,17 +224,107 @@ def _display_name(maker: str | None, model: str) -> str:
     return model
 
 
+def _english(element: ElementTree.Element, tag: str) -> str | None:
+    """The text of the child ``tag`` marked ``lang="en"``, if any."""
+    for child in element.findall(tag):
+        value = " ".join((child.text or "").split())
+        if value and child.attrib.get("lang") == "en":
+            return value
+    return None
+
+
+# Words after which a maker's registered name is only its legal form ("Ricoh Imaging Company,
+# Ltd.", "Leica Camera AG", "Casio Computer Co.,Ltd"): the name a photographer uses ends before them.
+_CORPORATE_WORDS = {"imaging", "company", "co", "corp", "corporation", "ltd", "limited", "inc", "camera", "ag",
+                    "gmbh", "optical", "computer", "techwin"}
+
+
+def short_maker(name: str | None) -> str | None:
+    """A maker's everyday name from lensfun's registered one.
+
+    >>> short_maker("Ricoh Imaging Company, Ltd."), short_maker("Casio Computer Co.,Ltd"), short_maker("SIGMA")
+    ('Ricoh', 'Casio', 'Sigma')
+    >>> short_maker("Konica Minolta"), short_maker("DJI"), short_maker(None)
+    ('Konica Minolta', 'DJI', None)
+    """
+    if not name:
+        return None
+    kept: list[str] = []
+    for word in name.replace(",", " ").split():
+        if kept and word.lower().rstrip(".") in _CORPORATE_WORDS:
+            break
+        kept.append(word)
+    short = " ".join(kept)
+    return short.title() if short.isupper() and len(short) > 3 else short
+
+
+def _maker(element: ElementTree.Element) -> str | None:
+    return short_maker(_english(element, "maker") or _text(element, "maker"))
+
+
+def camera_name(camera: ElementTree.Element) -> tuple[str, list[str]] | None:
+    """A lensfun camera's display name (maker and model) and its other spellings, or None without a model.
+
+    The model's English name wins where lensfun gives one (Nikon's "Z 6II" for "Nikon Z 6_2");
+    the other spelling is kept as an alias.
+    """
+    default = _COMPATIBLES.sub("", _text(camera, "model") or "") or None
+    english = _COMPATIBLES.sub("", _english(camera, "model") or "") or None
+    model = english or default
+    if not model:
+        return None
+    maker = _maker(camera)
+    name = _display_name(maker, model)
+    variant = _text(camera, "variant")
+    if variant:
+        name = f"{name} ({variant})"
+    others = [_display_name(maker, default)] if default and english and normalize(default) != normalize(english) else []
+    return name, others
+
+
+_COMPATIBLES = re.compile(r"\s*&\s*compatibles\b", re.IGNORECASE)
+_STANDARD_SUFFIX = re.compile(r"\s*\(standard\)\s*$", re.IGNORECASE)
+
+
+def _fixed_lens(lens: ElementTree.Element) -> str | None:
+    """None for an interchangeable lens; for a compact's own lens, the suffix of its variant ("" for the lens itself).
+
+    lensfun names a body's built-in lens "fixed lens" (in English), "Standard", or "<body> &
+    compatibles (Standard)"; "fixed lens, with GW-4" and "<body> & compatibles, with WCL-X100" are
+    the same lens with a converter.
+
+    >>> lens = ElementTree.fromstring("<lens><model>X100V &amp; compatibles, with WCL-X100</model></lens>")
+    >>> _fixed_lens(lens), _fixed_lens(ElementTree.fromstring("<lens><model>XF 23mm F2</model></lens>"))
+    (', with WCL-X100', None)
+    """
+    texts = [" ".join((child.text or "").split()) for child in lens.findall("model")]
+    for text in texts:
+        key = normalize(text)
+        if key in _GENERIC_LENS_NAMES or key.startswith("standard") or "(standard)" in text.lower():
+            return ""
+    for text in texts:
+        if text.lower().startswith("fixed lens"):
+            return text[len("fixed lens"):]
+    for text in texts:
+        match = _COMPATIBLES.search(text)
+        if match:
+            return _STANDARD_SUFFIX.sub("", text[match.end():])
+    return None
+
+
 class _Collector:
     """Accumulates records from the XML files, skipping clashes."""
 
     def __init__(self, taken: dict[str, set[str]]) -> None:
         self.taken = taken
-        self.sensors: list[dict[str, Any]] = []
+        self.cameras: list[dict[str, Any]] = []
         self.lenses: list[dict[str, Any]] = []
-        self.keys: dict[str, set[str]] = {"sensor": set(), "lens": set()}
+        self.keys: dict[str, set[str]] = {"camera": set(), "lens": set()}
         self.result = ImportResult()
         self.mount_cameras: dict[str, list[tuple[str, str]]] = {}
         self.mount_aspect: dict[str, float] = {}
+        # Mounts that carry a body's own lens (a compact's "mount" names the body, not a system).
+        self.fixed_mounts: set[str] = set()
         # Aspect ratios seen on each mount: from fixed lenses, from single-mount lenses; mounts
         # that a multi-mount lens also serves (interchangeable mounts shared with other systems).
         self.fixed_aspects: dict[str, set[float]] = {}
@@ -257,13 +357,24 @@ class _Collector:
             self.result.skipped[f"{kind}: listed more than once"] += 1
             return False
         self.keys[kind].add(key)
-        (self.sensors if kind == "sensor" else self.lenses).append(record)
+        # An alias another entry (or a shipped preset) already answers to is dropped, not fatal.
+        aliases = [alias for alias in record.get("aliases", ())
+                   if normalize(alias) not in self.keys[kind] and normalize(alias) not in self.taken.get(kind, set())]
+        if aliases:
+            record["aliases"] = aliases
+            self.keys[kind].update(normalize(alias) for alias in aliases)
+        else:
+            record.pop("aliases", None)
+        self.keys[kind].add(normalize(record["name"]))
+        (self.cameras if kind == "camera" else self.lenses).append(record)
         return True
 
     def _shipped(self, kind: str, record: dict[str, Any]) -> bool:
         taken = self.taken.get(kind, set())
-        return any(key in taken for key in match_keys(record["name"], record.get("_maker")) | {
-            normalize(record["id"])})
+        keys = {normalize(record["id"])}
+        for name in (record["name"], *record.get("aliases", ())):
+            keys |= match_keys(name, record.get("_maker"))
+        return any(key in taken for key in keys)
 
 
 _MAKER_WORDS = {"canon": ("canon",), "nikon": ("nikon", "nikkor"), "sony": ("sony",),
@@ -297,49 +408,58 @@ def match_keys(name: str, maker: str | None = None) -> set[str]:
     return keys
 
 def _scan(root: ElementTree.Element, collector: _Collector) -> None:
-    """First pass over a file: fixed-lens mounts and their aspect ratios."""
+    """First pass over a file: the bodies on each mount, fixed-lens mounts and their aspect ratios."""
     for camera in root.iter("camera"):
-        mount, model = _text(camera, "mount"), _text(camera, "model")
-        if mount and model:
-            name = _display_name(_text(camera, "maker"), model)
-            collector.mount_cameras.setdefault(mount, []).append((name, slugify(name)))
+        mount, named = _text(camera, "mount"), camera_name(camera)
+        if mount and named:
+            collector.mount_cameras.setdefault(mount, []).append((named[0], slugify(named[0])))
     for lens_element in root.iter("lens"):
         aspect = _aspect(_text(lens_element, "aspect-ratio"))
         mounts = [m.text.strip() for m in lens_element.findall("mount") if m.text and m.text.strip()]
         if len(mounts) > 1:
             collector.shared_mounts.update(mounts)
+        fixed = _fixed_lens(lens_element) is not None
+        if fixed:
+            collector.fixed_mounts.update(mounts)
         if not aspect:
             continue
-        model = normalize(_text(lens_element, "model") or "")
-        fixed = model in _GENERIC_LENS_NAMES or model.startswith("standard")
+        plain = _fixed_lens(lens_element) == ""
         for mount in mounts:
-            target = collector.fixed_aspects if fixed else collector.single_mount_aspects
-            if fixed or len(mounts) == 1:
+            target = collector.fixed_aspects if plain else collector.single_mount_aspects
+            if plain or len(mounts) == 1:
                 target.setdefault(mount, set()).add(round(aspect, 4))
 
 
 def _cameras(root: ElementTree.Element, source: str, collector: _Collector) -> None:
     for camera in root.iter("camera"):
-        model = _text(camera, "model")
+        named = camera_name(camera)
         crop = _positive(_text(camera, "cropfactor"))
-        if not model or crop is None:
+        if not named or crop is None:
             collector.result.skipped["camera: no model or crop factor"] += 1
             continue
-        name = _display_name(_text(camera, "maker"), model)
-        variant = _text(camera, "variant")
-        if variant:
-            name = f"{name} ({variant})"
+        name, others = named
         mount = _text(camera, "mount")
         aspect = collector.mount_aspect.get(mount or "")
         width, height = sensor_size(crop, aspect)
         ratio = "its fixed lens" if aspect else ("3:2" if 0.9 <= crop <= 1.8 else "4:3")
-        record = {"id": slugify(name), "name": name, "width_mm": round(width, 3), "height_mm": round(height, 3),
-                  "approximate": True, "category": "digital",
-                  "source": f"lensfun {source}: crop factor {crop:g}, size derived (aspect from {ratio})"}
-        if mount:
+        record: dict[str, Any] = {"id": slugify(name), "name": name}
+        if others:
+            record["aliases"] = others
+        record["sensor"] = {"width_mm": round(width, 3), "height_mm": round(height, 3)}
+        if mount in collector.fixed_mounts:
+            record["mount"] = "fixed lens"
+            record["lens"] = f"{record['id']}-lens"
+        elif mount:
+            record["mount"] = mount
+        record["approximate"] = True
+        record["source"] = f"lensfun {source}: crop factor {crop:g}, sensor size derived (aspect from {ratio})"
+        if mount in collector.fixed_mounts:
             record["notes"] = f"lensfun mount {mount}"
-        if collector.add("sensor", record, model):
-            collector.result.sensors += 1
+        record["_maker"] = _maker(camera)
+        added = collector.add("camera", record, _text(camera, "model") or name)
+        del record["_maker"]
+        if added:
+            collector.result.cameras += 1
 
 
 def _calibration_range(lens: ElementTree.Element, attribute: str) -> list[float]:
@@ -358,55 +478,65 @@ def _lenses(root: ElementTree.Element, source: str, collector: _Collector) -> No
             collector.result.skipped["lens: no model"] += 1
             continue
         mounts = [m.text.strip() for m in lens.findall("mount") if m.text and m.text.strip()]
-        maker = _text(lens, "maker")
-        sensor_id = None
-        if normalize(model) in _GENERIC_LENS_NAMES or "(standard)" in model.lower():
-            bodies = [b for mount in mounts for b in collector.mount_cameras.get(mount, [])]
-            if normalize(model) in _GENERIC_LENS_NAMES and len(bodies) == 1:
-                name = f"{bodies[0][0]} fixed lens"
-                sensor_id = bodies[0][1]
-            elif normalize(model) in _GENERIC_LENS_NAMES:
-                name = f"{maker or ''} fixed lens {mounts[0] if mounts else ''}".strip()
-            else:
-                name = _display_name(maker, model)
-        else:
-            name = _display_name(maker, model)
-        focal = _element_range(lens, "focal") or parse_focal(model)
-        if focal is None:
-            calibrated = _calibration_range(lens, "focal")
-            focal = (min(calibrated), max(calibrated)) if calibrated else None
-        if focal is None:
+        maker = _maker(lens)
+        figures = _lens_figures(lens, model)
+        if figures is None:
             collector.result.skipped["lens: focal length unknown"] += 1
             continue
-        aperture_range = _element_range(lens, "aperture")
-        aperture = aperture_range[0] if aperture_range else parse_aperture(model)
-        if aperture is None:
-            calibrated = _calibration_range(lens, "aperture")
-            aperture = min(calibrated) if calibrated else None
-        record: dict[str, Any] = {"id": slugify(name), "name": name}
-        low, high = sorted(focal)
-        if high > low:
-            record.update(focal_min_mm=low, focal_max_mm=high)
-        else:
-            record["focal_length_mm"] = low
-        if aperture is not None:
-            record["f_number_min"] = aperture
-            tele = parse_aperture_tele(model) if not aperture_range else None
-            if tele is not None and tele > aperture and high > low:
-                record["f_number_min_tele"] = tele
-            if aperture_range and aperture_range[1] > aperture:
-                record["f_number_max"] = aperture_range[1]
+        crop = _positive(_text(lens, "cropfactor"))
+        origin = f"lensfun {source}" + (f" (calibrated at crop factor {crop:g})" if crop else "")
+        suffix = _fixed_lens(lens)
+        if suffix is not None:
+            # A compact's own lens: one preset for each body on its mount, made for that body's sensor.
+            bodies = [body for mount in mounts for body in collector.mount_cameras.get(mount, [])]
+            if not bodies:
+                collector.result.skipped["lens: a fixed lens without its camera"] += 1
+            for body_name, body_id in bodies:
+                name = f"{body_name} lens{suffix}"
+                record = {"id": slugify(name), "name": name, **figures, "mount": "fixed lens", "sensor": body_id,
+                          "source": origin}
+                if collector.add("lens", record, model):
+                    collector.result.lenses += 1
+            continue
+        name = _display_name(maker, model)
+        record = {"id": slugify(name), "name": name, **figures}
         if mounts:
             record["mount"] = mounts[0]
-        if sensor_id and normalize(sensor_id) in collector.keys["sensor"]:
-            record["sensor"] = sensor_id
-        crop = _positive(_text(lens, "cropfactor"))
-        record["source"] = f"lensfun {source}" + (f" (calibrated at crop factor {crop:g})" if crop else "")
+        record["source"] = origin
         record["_maker"] = maker
         added = collector.add("lens", record, model)
         del record["_maker"]
         if added:
             collector.result.lenses += 1
+
+
+def _lens_figures(lens: ElementTree.Element, model: str) -> dict[str, Any] | None:
+    """Focal length or range and the apertures of a lensfun lens, or None when no focal length is found."""
+    focal = _element_range(lens, "focal") or parse_focal(model)
+    if focal is None:
+        calibrated = _calibration_range(lens, "focal")
+        focal = (min(calibrated), max(calibrated)) if calibrated else None
+    if focal is None:
+        return None
+    aperture_range = _element_range(lens, "aperture")
+    aperture = aperture_range[0] if aperture_range else parse_aperture(model)
+    if aperture is None:
+        calibrated = _calibration_range(lens, "aperture")
+        aperture = min(calibrated) if calibrated else None
+    figures: dict[str, Any] = {}
+    low, high = sorted(focal)
+    if high > low:
+        figures.update(focal_min_mm=low, focal_max_mm=high)
+    else:
+        figures["focal_length_mm"] = low
+    if aperture is not None:
+        figures["f_number_min"] = aperture
+        tele = parse_aperture_tele(model) if not aperture_range else None
+        if tele is not None and tele > aperture and high > low:
+            figures["f_number_min_tele"] = tele
+        if aperture_range and aperture_range[1] > aperture:
+            figures["f_number_max"] = aperture_range[1]
+    return figures
 
 
 def _element_range(lens: ElementTree.Element, tag: str) -> tuple[float, float] | None:
@@ -422,7 +552,7 @@ def _element_range(lens: ElementTree.Element, tag: str) -> tuple[float, float] |
 
 def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | None = None
                  ) -> tuple[list[dict[str, Any]], list[dict[str, Any]], ImportResult]:
-    """Read every ``*.xml`` of ``dirs`` (default :func:`default_dirs`); return sensors, lenses, result.
+    """Read every ``*.xml`` of ``dirs`` (default :func:`default_dirs`); return cameras, lenses, result.
 
     ``taken`` maps a kind to lookup keys that must not be reused (camtool's
     shipped presets); clashing entries are skipped and counted.
@@ -455,13 +585,30 @@ def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | No
             _lenses(root, path.name, collector)
         except (ValueError, TypeError, AttributeError) as error:
             collector.result.bad_files.append((str(path), f"lenses: {error}"))
-    return collector.sensors, collector.lenses, collector.result
+    _settle_references(collector)
+    return collector.cameras, collector.lenses, collector.result
+
+
+def _settle_references(collector: _Collector) -> None:
+    """Drop a camera's ``lens`` or a lens's ``sensor`` that names nothing imported or shipped.
+
+    A compact's lens can be skipped (its focal length unknown, a clash) while its camera is kept,
+    and the other way round; a reference to a missing preset would make the whole file invalid.
+    """
+    lenses = collector.keys["lens"] | collector.taken.get("lens", set())
+    cameras = collector.keys["camera"] | collector.taken.get("camera", set())
+    for camera in collector.cameras:
+        if "lens" in camera and normalize(camera["lens"]) not in lenses:
+            del camera["lens"]
+    for lens in collector.lenses:
+        if "sensor" in lens and normalize(lens["sensor"]) not in cameras:
+            del lens["sensor"]
 
 
 def _shipped_keys() -> dict[str, set[str]]:
     from camtool.presets.loader import read_file
 
-    keys: dict[str, set[str]] = {"sensor": set(), "lens": set()}
+    keys: dict[str, set[str]] = {"camera": set(), "sensor": set(), "lens": set()}
     for path in paths.shipped_files():
         records = read_file(path).records
         for kind in keys:
@@ -489,10 +636,10 @@ def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.Pat
         where = ", ".join(map(str, directories)) or "the usual places"
         raise LensfunImportError(
             f"no lensfun XML files found in {where} (install liblensfun-data-v1 or give --dir)")
-    sensors, lenses, result = read_lensfun(directories, _shipped_keys())
-    if not sensors and not lenses:
+    cameras, lenses, result = read_lensfun(directories, _shipped_keys())
+    if not cameras and not lenses:
         raise LensfunImportError(f"nothing imported from {', '.join(map(str, directories))}")
-    _write_atomically(target, _render(sensors, lenses, directories))
+    _write_atomically(target, _render(cameras, lenses, directories))
     result.path = str(target)
     return result
 
@@ -522,17 +669,17 @@ def _output_path(target: Path) -> Path:
     return Path(os.path.realpath(target)) if target.is_symlink() else target
 
 
-def _render(sensors: list[dict[str, Any]], lenses: list[dict[str, Any]], dirs: list[Path]) -> str:
+def _render(cameras: list[dict[str, Any]], lenses: list[dict[str, Any]], dirs: list[Path]) -> str:
     import yaml
 
     dumper = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
-    body = yaml.dump({"sensors": sensors, "lenses": lenses}, Dumper=dumper, sort_keys=False, allow_unicode=True,
+    body = yaml.dump({"cameras": cameras, "lenses": lenses}, Dumper=dumper, sort_keys=False, allow_unicode=True,
                      width=120, default_flow_style=None)
     header = (
         "# camtool presets imported from the lensfun database on this system\n"
         f"# by `camtool presets import-lensfun` from: {', '.join(map(str, dirs))}\n"
-        "# lensfun data is licensed CC BY-SA 3.0 (https://lensfun.github.io/). Sensor sizes are derived\n"
-        "# from crop factors and marked approximate. Re-run the import to refresh; do not edit.\n"
+        "# lensfun data is licensed CC BY-SA 3.0 (https://lensfun.github.io/). Cameras' sensor sizes are\n"
+        "# derived from crop factors and marked approximate. Re-run the import to refresh; do not edit.\n"
     )
     return header + body
 
