@@ -123,7 +123,8 @@ coc_options = stack(
     click.option("--coc", type=COC_MM, multiple=True,
                  help="Circle of confusion, e.g. 0.03 or 0.03mm (overrides --coc-rule)."),
     click.option("--coc-rule", default=None, metavar="RULE",
-                 help="CoC from the sensor: d/1500 (default), d/1730, d/1442, px:2 (pixel pitches), print:8x10in@25cm."),
+                 help="CoC from the sensor: d/1500 (default), cine (0.025 mm, the default for cine cameras), d/1730, d/1442, "
+                 "px:2 (pixel pitches), print:8x10in@25cm."),
     click.option("--pixel-pitch", type=PIXEL_PITCH_UM,
                  help="Pixel pitch for --coc-rule px:K, e.g. 4.3 or 4.3um (bare numbers are µm, as spec sheets give it)."),
 )
