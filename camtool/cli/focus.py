@@ -68,7 +68,8 @@ INVERSE_COLUMNS = [
 ]
 
 
-@camtool_command("focus", keys=list(dict.fromkeys(FORWARD_KEYS + INVERSE_KEYS + FIXED_KEYS + OPTIMUM_KEYS + DEPTH_KEYS + ["t_stop"])))
+@camtool_command("focus", keys=list(dict.fromkeys([*FORWARD_KEYS, *INVERSE_KEYS, *FIXED_KEYS, *OPTIMUM_KEYS, *DEPTH_KEYS,
+                                                   "t_stop"])))
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres).")

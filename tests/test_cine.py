@@ -1,0 +1,109 @@
+"""The cinema workflow: T-stops shown as T-stops, the cine CoC, shutter angles, ND densities as cinematographers
+write them."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from cli_helpers import run, run_json
+
+from camtool.core.errors import DomainError, InputError
+from camtool.exposure.nd import parse_nd
+from camtool.exposure.shutter import shutter_angle_deg, shutter_time_s
+from camtool.geometry.coc import coc_from_rule
+from camtool.plans.cine import shutter_times
+
+# Wikipedia, "Depth of field", circle of confusion criterion (after Ray 2000): "generally 35 mm productions set it
+# at 0.025 mm (0.001 in)". 0.001 in is 0.0254 mm; the convention rounds it to 0.025 mm.
+CINE_COC_MM = 0.025
+
+
+def test_cine_rule_is_the_published_value_on_any_sensor() -> None:
+    for w, h in ((27.99, 19.22), (36.0, 24.0), (54.12, 25.58)):
+        assert coc_from_rule("cine", w, h).coc_mm == CINE_COC_MM
+    assert abs(CINE_COC_MM - 0.001 * 25.4) < 0.001  # 0.001 in, to the convention's rounding
+
+
+def test_cine_camera_defaults_to_the_cine_rule_and_a_typed_rule_wins() -> None:
+    row = run_json("dof", "--camera", "arri-alexa-35", "-f", "50", "-N", "2.8", "-s", "3m")[0]
+    assert row["coc_mm"] == CINE_COC_MM
+    d = math.hypot(27.99, 19.22)  # ALEXA 35 open gate (the preset's cited size)
+    row = run_json("dof", "--camera", "arri-alexa-35", "-f", "50", "-N", "2.8", "-s", "3m", "--coc-rule", "d/1500")[0]
+    assert row["coc_mm"] == pytest.approx(d / 1500, rel=1e-12)
+    row = run_json("dof", "--camera", "nikon-z8", "-f", "50", "-N", "2.8", "-s", "3m")[0]  # a stills camera
+    assert row["coc_mm"] != CINE_COC_MM
+
+
+def test_typed_t_stop_is_shown_as_a_t_stop_in_the_table() -> None:
+    result = run("dof", "--camera", "arri-alexa-35", "--lens", "cooke-s4i-50mm-t2", "-N", "T2.8", "-s", "4ft")
+    assert result.exit_code == 0, result.output
+    header, _, row = result.stdout.splitlines()[1:4]
+    assert "T" in header.split() and "T2.8" in row.split()
+    plain = run("dof", "-f", "50", "-N", "2.8", "-s", "4ft").stdout
+    assert "T2.8" not in plain and "N used" not in plain
+
+
+def test_solved_aperture_on_a_cine_lens_is_given_as_a_t_stop() -> None:
+    rows = run_json("focus", "--camera", "arri-alexa-35", "--lens", "cooke-s4i-50mm-t2", "--near", "3m", "--far", "5m")
+    # the preset has no f-number, so T stands in for N (the footer says so): the same number
+    assert rows[0]["t_stop"] == rows[0]["f_number"]
+    table = run("focus", "--camera", "arri-alexa-35", "--lens", "cooke-s4i-50mm-t2", "--near", "3m", "--far", "5m")
+    assert f"T{rows[0]['t_stop']:.3g}" in table.stdout
+    assert "t_stop" not in run_json("focus", "-f", "50", "--near", "3m", "--far", "5m")[0]
+
+
+def test_solved_t_stop_with_a_known_transmittance() -> None:
+    from types import SimpleNamespace
+
+    from camtool.plans.equipment import solved_t_stops
+
+    # Wikipedia, "F-number", T-stop: an f/2.0 lens of 75 % transmittance is T2.3
+    lens = SimpleNamespace(id="x", t_number_min=2.31, transmittance=0.75)
+    assert solved_t_stops(2.0, lens=lens).t_stops == pytest.approx(2.0 / math.sqrt(0.75), rel=1e-15)
+
+
+@pytest.mark.parametrize(("angle", "fps", "time_s"), [(180.0, 24.0, 1 / 48), (172.8, 24.0, 1 / 50),
+                                                       (144.0, 24.0, 1 / 60), (90.0, 6.0, 1 / 24), (45.0, 6.0, 1 / 48)])
+def test_shutter_angle_published_pairs(angle: float, fps: float, time_s: float) -> None:
+    # Wikipedia, "Shutter speed", cinematographic shutter formula (Brown 2002): 180° at 24 fps = 1/48 s,
+    # 172.8° = 1/50 s, 144° = 1/60 s; D. Mullen ASC on cinematography.com: 90° and 45° at 6 fps = 1/24, 1/48 s
+    assert shutter_time_s(angle, fps) == pytest.approx(time_s, rel=1e-14)
+    assert shutter_angle_deg(time_s, fps) == pytest.approx(angle, rel=1e-14)
+
+
+@pytest.mark.parametrize(("angle", "fps"), [(0.0, 24.0), (361.0, 24.0), (math.nan, 24.0), (180.0, 0.0),
+                                            (180.0, math.inf), (180.0, -24.0)])
+def test_shutter_angle_bounds(angle: float, fps: float) -> None:
+    with pytest.raises(DomainError):
+        shutter_time_s(angle, fps)
+
+
+def test_shutter_times_plan() -> None:
+    with pytest.raises(InputError):
+        shutter_times(shutter_angle_deg=[180.0])
+    with pytest.raises(InputError):
+        shutter_times(shutter_angle_deg=[180.0], fps=24.0, shutter_s=[0.01])
+
+
+def test_exposure_with_a_shutter_angle_equals_the_time() -> None:
+    by_angle = run_json("exposure", "--ev100", "12", "-N", "T2.8", "--shutter-angle", "180", "--fps", "24")[0]
+    by_time = run_json("exposure", "--ev100", "12", "-N", "T2.8", "-t", str(1 / 48))[0]
+    assert by_angle["iso"] == pytest.approx(by_time["iso"], rel=1e-12)
+    assert by_angle["shutter_angle_deg"] == pytest.approx(180.0, rel=1e-12)
+    row = run_json("exposure", "--ev100", "10", "-N", "2.8", "--iso", "800", "--fps", "24")[0]
+    assert row["shutter_angle_deg"] == pytest.approx(360 * 24 * row["corrected_shutter_s"], rel=1e-15)
+    for args in (["--shutter-angle", "180"], ["--shutter-angle", "180", "--fps", "24", "-t", "1/50"],
+                 ["--shutter-angle", "400", "--fps", "24"], ["--fps", "0", "-t", "1/50"]):
+        result = run("exposure", "-N", "4", *args)
+        assert result.exit_code == 2 and len(result.output.strip().splitlines()) == 1, result.output
+
+
+def test_nd_density_notation_through_the_one_parser() -> None:
+    # Kodak Wratten 2 #96 (B&H listing): ND .30 = 1 stop, ND .60 = 2, ND .90 = 3, ND 3.0 = 10 stops
+    for text, density in (("ND.3", 0.3), ("ND.6", 0.6), ("ND0.9", 0.9), ("ND1.2", 1.2), ("ND 3.0", 3.0)):
+        assert parse_nd(text).density == pytest.approx(density, rel=1e-15)
+        assert parse_nd(text).stops == pytest.approx(parse_nd(f"{density}D").stops, rel=1e-15)
+    assert parse_nd("ND8").stops == pytest.approx(3.0)  # ND with a whole number stays the factor
+    stacked = run_json("exposure", "-N", "4", "-t", "1/50", "--nd", "ND.9", "--nd", "ND.6")[0]
+    assert stacked["nd_stops"] == pytest.approx(1.5 / math.log10(2), rel=1e-12)
