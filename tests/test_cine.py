@@ -107,3 +107,45 @@ def test_nd_density_notation_through_the_one_parser() -> None:
     assert parse_nd("ND8").stops == pytest.approx(3.0)  # ND with a whole number stays the factor
     stacked = run_json("exposure", "-N", "4", "-t", "1/50", "--nd", "ND.9", "--nd", "ND.6")[0]
     assert stacked["nd_stops"] == pytest.approx(1.5 / math.log10(2), rel=1e-12)
+
+
+def test_squeeze_horizontal_angle_from_the_desqueezed_width() -> None:
+    # Wikipedia, "Angle of view": 2·atan(d/2f); an anamorphic's horizontal angle covers the de-squeezed width S·w
+    for squeeze in (1.3, 1.5, 1.8, 2.0):
+        row = run_json("fov", "-f", "50", "--sensor", "27.99x19.22", "--squeeze", str(squeeze))[0]
+        assert row["horizontal_deg"] == pytest.approx(math.degrees(2 * math.atan(squeeze * 27.99 / 100)), rel=1e-12)
+        assert row["vertical_deg"] == pytest.approx(math.degrees(2 * math.atan(19.22 / 100)), rel=1e-12)
+        assert row["sensor_width_mm"] == 27.99 and row["squeeze"] == squeeze
+        # the horizontal angle of a spherical f/S on the same sensor (the horizontal focal length)
+        same = run_json("fov", "-f", str(50 / squeeze), "--sensor", "27.99x19.22")[0]
+        assert row["horizontal_deg"] == pytest.approx(same["horizontal_deg"], rel=1e-12)
+    for bad in ("0.5", "5", "nan", "2,1.5"):
+        result = run("fov", "-f", "50", "--squeeze", bad)
+        assert result.exit_code == 2 and len(result.output.strip().splitlines()) == 1, result.output
+
+
+def test_squeeze_dof_horizontal_is_the_dof_of_f_over_squeeze() -> None:
+    # Maxwell (Cooke): vertical depth of a 2x 100 mm is that of 100 mm, horizontal that of 50 mm
+    row = run_json("dof", "-f", "100", "-N", "2.8", "-s", "3m", "--coc", "0.025", "--squeeze", "2", "--model", "thin")[0]
+    spherical = run_json("dof", "-f", "100", "-N", "2.8", "-s", "3m", "--coc", "0.025", "--model", "thin")[0]
+    assert (row["near_mm"], row["far_mm"]) == (spherical["near_mm"], spherical["far_mm"])
+    # the thin lens (design §4.4): H = f²/(Nc) + f of the horizontal focal length 50 mm
+    h = 50.0**2 / (2.8 * 0.025) + 50.0
+    from camtool.dof.closed import thin_dof
+
+    half = thin_dof(50.0, 2.8, 0.025, 3000.0, "sensor")
+    assert (row["near_horizontal_mm"], row["far_horizontal_mm"]) == (half.near_mm, half.far_mm)
+    assert row["near_horizontal_mm"] < row["near_mm"] and row["far_horizontal_mm"] > row["far_mm"]
+    # from the lens the far limit is u·H₀/(H − u) (design §4.4), here checked by hand at u = 3 m
+    lens = run_json("dof", "-f", "100", "-N", "2.8", "-s", "3m", "--coc", "0.025", "--squeeze", "2", "--model", "thin",
+                    "--distance-from", "lens")[0]
+    assert lens["far_horizontal_mm"] == pytest.approx(3000.0 * (h - 50.0) / (h - 3000.0), rel=1e-13)
+    assert lens["hyperfocal_horizontal_mm"] == pytest.approx(h, rel=1e-13)
+
+
+def test_squeeze_compose_fills_the_desqueezed_width() -> None:
+    rows = run_json("compose", "--subject-size", "4m", "--fill", "0.9", "--fill-axis", "width", "--sensor",
+                    "27.99x19.22", "--squeeze", "2", "-f", "40", "--distance-from", "lens")
+    # m = fill·(S·w)/size: the subject covers 0.9 of the de-squeezed 55.98 mm
+    assert rows[0]["magnification"] == pytest.approx(0.9 * 2 * 27.99 / 4000.0, rel=1e-12)
+    assert rows[0]["field_width_mm"] == pytest.approx(4000.0 / 0.9, rel=1e-12)

@@ -90,6 +90,11 @@ aperture_options = stack(
                  help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627)."),
 )
 
+squeeze_option = click.option(
+    "--squeeze", type=NumberType(*ranges.SQUEEZE), callback=one_value,
+    help="Anamorphic squeeze (1.3, 1.5, 1.8, 2): the horizontal angle is that of the de-squeezed width; dof adds "
+    "the horizontal limits, of f/squeeze (docs/cine.md).")
+
 distance_plane_option = click.option(
     "--distance-from", "distance_from", type=click.Choice(FOCUS_PLANES), default="sensor", show_default=True,
     help="Reference plane of all distances: the sensor (focal-plane mark, as lens scales and specs) or the lens.")
