@@ -149,3 +149,23 @@ def test_squeeze_compose_fills_the_desqueezed_width() -> None:
     # m = fill·(S·w)/size: the subject covers 0.9 of the de-squeezed 55.98 mm
     assert rows[0]["magnification"] == pytest.approx(0.9 * 2 * 27.99 / 4000.0, rel=1e-12)
     assert rows[0]["field_width_mm"] == pytest.approx(4000.0 / 0.9, rel=1e-12)
+
+
+def test_marks_sheet_is_the_dof_commands_answer(tmp_path) -> None:
+    pytest.importorskip("matplotlib")
+    import json as _json
+
+    data = tmp_path / "marks.json"
+    result = run("chart", "marks", "-f", "25,75", "--lenses", "cooke-s4i-50mm-t2", "-N", "T2.8", "-s", "4ft,10ft",
+                 "--camera", "arri-alexa-35", "--units", "imperial", "-o", str(tmp_path / "m.svg"), "--data", str(data))
+    assert result.exit_code == 0, result.output
+    sheet = _json.loads(data.read_text())["extra"]
+    assert sheet["lenses"] == ["25 mm", "75 mm", "cooke-s4i-50mm-t2"] and sheet["focal_lengths_mm"] == [25.0, 75.0, 50.0]
+    for col, f in enumerate(sheet["focal_lengths_mm"]):
+        rows = run_json("dof", "-f", f"{f:g}", "-N", "T2.8", "-s", "4ft,10ft", "--camera", "arri-alexa-35")
+        for row, answer in zip(range(2), rows):
+            assert sheet["near_mm"][row][col] == pytest.approx(answer["near_mm"], rel=1e-12)
+            assert sheet["far_mm"][row][col] == pytest.approx(answer["far_mm"], rel=1e-12)
+    assert _json.loads(data.read_text())["title"] == "Focus marks · T2.8"
+    bad = run("chart", "marks", "--lenses", "no-such-lens", "-N", "2", "-o", str(tmp_path / "x.svg"))
+    assert bad.exit_code == 2 and "--lenses" in bad.output and len(bad.output.strip().splitlines()) == 1

@@ -40,7 +40,7 @@ from camtool.cli.options import (
     sensor_options,
     stack,
 )
-from camtool.cli.params import LengthType, NumberType, flatten
+from camtool.cli.params import FNumberType, LengthType, NumberType, flatten
 from camtool.core.errors import InputError
 from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
 from camtool.dof.ladder import focal_lengths, model_choices
@@ -53,6 +53,7 @@ from camtool.plans.chart import (
     dof_chart,
     figure_size,
     image_format,
+    marks_chart,
     trade_chart,
 )
 
@@ -216,6 +217,7 @@ def chart() -> None:
       camtool chart trade -N 8 -s 3m --lens dgauss100-lens -o trade.svg
       camtool chart card -f 35 --units imperial --paper letter-quarter -o card.pdf
       camtool chart dof -f 35 -N 8 -o - --image-format svg > dof.svg
+      camtool chart marks -f 25,32,50,75 -N T2.8 --camera arri-alexa-35 --units imperial -o marks.pdf
     """
 
 
@@ -379,7 +381,44 @@ def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance
     return data
 
 
-for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card):
+@chart_command("marks", card=True)
+@click.option("-f", "--focal-length", "focal_length", type=LengthType("mm"), multiple=True, help="Focal lengths of a set.")
+@click.option("--lenses", multiple=True, metavar="NAME,...", help="Lens presets of a set, one column each.")
+@click.option("-N", "--f-number", "f_number", type=FNumberType(t_stops=True), multiple=True, help="The stop (T2.8).")
+@click.option("-s", "--distance", type=DISTANCE_M, multiple=True, help="The marks (default 3–50 ft or 1–15 m).")
+@click.option("--paper", type=click.Choice(["a6", "letter-quarter"]), default="a6", show_default=True, help=PAPER_HELP)
+@sensor_options
+@coc_options
+@distance_plane_option
+def chart_marks(ctx: click.Context, focal_length, lenses, f_number, distance, paper, sensor, crop, coc, coc_rule,
+                pixel_pitch, distance_from, units, preset_files) -> Any:
+    """A printable focus-pull sheet: near and far around each focus mark, one column per lens of a set.
+
+    Cells in feet and inches with --units imperial, else metres; a T-stop
+    is used as the f-number it stands for (as in camtool dof).
+    """
+    from camtool.cli.equipment import open_presets
+    from camtool.cli.options import param_named
+    from camtool.presets import PresetNotFound
+
+    names = [n.strip() for group in lenses for n in group.split(",") if n.strip()]
+    try:
+        found = [(n, open_presets(ctx, preset_files).lens(n)) for n in names] if names else []
+    except PresetNotFound as error:
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "lenses")) from None
+    sets = [(f"{v:g} mm", v, None) for v in flatten(focal_length)] + [(n, lens.focal_min_mm, None) for n, lens in found]
+    n = single(ctx, required(ctx, f_numbers(f_number, False), "-N"), "-N")
+    typed = flatten(f_number)[0]
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
+    label = f"T{float(typed):g}" if type(typed).__name__ == "TStop" else f"f/{n:g}"
+    data = marks_chart(lenses=sets, f_number=n, coc_mm=c, marks_mm=flatten(distance), units=units,
+                       distance_from=distance_from, aperture_label=label)
+    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    return data
+
+
+for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card, chart_marks):
     chart.add_command(_command, _command.name)
 
 

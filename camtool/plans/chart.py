@@ -29,6 +29,7 @@ from camtool.render.chartdata import (
     card_data,
     dof_data,
     log_space,
+    marks_data,
     raster_pixels,
     trade_data,
 )
@@ -48,6 +49,7 @@ __all__ = [
     "figure_size",
     "image_format",
     "lens_label",
+    "marks_chart",
     "trade_chart",
 ]
 
@@ -254,3 +256,27 @@ def card_chart(*, focal_length_mm: float, coc_mm: float, f_numbers: Sequence[flo
     rows = list(distances_mm) or ([v * 304.8 for v in CARD_DISTANCES_FT] + [math.inf] if units == "imperial"
                                   else [v * 1000.0 for v in CARD_DISTANCES_M])
     return card_data(focal_length_mm, apertures, rows, coc_mm, model, distance_from, lens)
+
+
+MARKS_FT = (3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0, 50.0)
+"""A focus puller's default marks, in feet (with --units imperial)."""
+MARKS_M = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 7.0, 10.0, 15.0)
+"""The default marks in metres."""
+
+
+def marks_chart(*, lenses: Sequence[tuple[str, float, LensData | None]], f_number: float, coc_mm: float,
+                marks_mm: Sequence[float] = (), units: str = "metric", model: str = "auto",
+                distance_from: str = "sensor", aperture_label: str = "") -> ChartData:
+    """A printable focus-pull sheet: near and far around each mark for each lens of a set, at one stop.
+
+    Marks default to 3 ft to 50 ft (imperial) or 1 m to 15 m; each lens is a column, in the order given.
+
+    >>> sheet = marks_chart(lenses=[("50", 50.0, None)], f_number=8.0, coc_mm=0.03, marks_mm=[3000.0], model="thin",
+    ...                     distance_from="lens")
+    >>> round(sheet.extra["far_mm"][0][0], 1)   # 50 mm f/8, c = 0.03 mm at 3 m: far 4185.3 mm (as card_chart)
+    4185.3
+    """
+    if not lenses:
+        raise InputError("focal_length", "give the lenses of the sheet: {focal_length} (a list) or --lenses")
+    marks = list(marks_mm) or ([v * 304.8 for v in MARKS_FT] if units == "imperial" else [v * 1000.0 for v in MARKS_M])
+    return marks_data(lenses, f_number, marks, coc_mm, model, distance_from, aperture_label)

@@ -30,6 +30,7 @@ __all__ = [
     "card_data",
     "dof_data",
     "log_space",
+    "marks_data",
     "raster_pixels",
     "trade_data",
 ]
@@ -76,7 +77,7 @@ class Mark:
 class ChartData:
     """Everything one chart shows, in library units (mm, f-numbers, seconds).
 
-    ``kind`` is the chart (``dof``, ``blur``, ``aperture``, ``trade``, ``card``);
+    ``kind`` is the chart (``dof``, ``blur``, ``aperture``, ``trade``, ``card``, ``marks``);
     ``title`` names the question and ``scene`` the lens, sensor, CoC, model and
     distance plane; ``extra`` holds what a kind needs beyond curves and
     marks (the frame width for blur %, the card's table).
@@ -424,4 +425,30 @@ def card_data(focal_length_mm: float, f_numbers: Sequence[float], distances_mm: 
         "hyperfocal_mm": [float(v) for v in hyper],
         "models": models,
     }
+    return data
+
+
+def marks_data(lenses: Sequence[tuple[str, float, LensData | None]], f_number: float, marks_mm: Sequence[float],
+               coc_mm: float, model: str = "auto", distance_from: str = "sensor", aperture_label: str = "",
+               scene: str = "") -> ChartData:
+    """A focus puller's sheet: near and far limits (mm) around each focus mark (rows) for each lens (columns:
+    ``(label, focal length, lens data)``), at one f-number; ``aperture_label`` is how the stop was given (T2.8).
+
+    >>> sheet = marks_data([("50 mm", 50.0, None)], 8.0, [3000.0], 0.03, model="thin", distance_from="lens")
+    >>> [round(sheet.extra[k][0][0]) for k in ("near_mm", "far_mm")]
+    [2338, 4185]
+    """
+    near: list[list[float]] = [[] for _ in marks_mm]
+    far: list[list[float]] = [[] for _ in marks_mm]
+    models: set[str] = set()
+    for _, focal, lens in lenses:
+        card = card_data(focal, [f_number], marks_mm, coc_mm, model, distance_from, lens)
+        for row, (a, b) in enumerate(zip(card.extra["near_mm"], card.extra["far_mm"])):
+            near[row].append(a[0])
+            far[row].append(b[0])
+        models.update(card.extra["models"])
+    data = ChartData("marks", f"Focus marks · {aperture_label or f'f/{f_number:g}'}", scene)
+    data.extra = {"lenses": [label for label, _, _ in lenses], "focal_lengths_mm": [f for _, f, _ in lenses],
+                  "f_number": f_number, "marks_mm": [float(v) for v in marks_mm], "near_mm": near, "far_mm": far,
+                  "models": sorted(models)}
     return data

@@ -101,7 +101,8 @@ def draw(data: ChartData, width_in: float, height_in: float, units: str = "metri
     with matplotlib.rc_context(RC):
         figure = Figure(figsize=(width_in, height_in), layout="constrained")
         FigureCanvasAgg(figure)
-        drawer = {"dof": _dof, "blur": _blur, "aperture": _aperture, "trade": _trade, "card": _card}[data.kind]
+        drawer = {"dof": _dof, "blur": _blur, "aperture": _aperture, "trade": _trade, "card": _card,
+                  "marks": _marks}[data.kind]
         drawer(figure, data, units)
     return figure
 
@@ -326,6 +327,34 @@ def _card(figure: Figure, data: ChartData, units: str) -> None:
     table = axes.table(cellText=cells, colLabels=header, bbox=Bbox.from_bounds(0.0, 0.0, 1.0, 1.0), cellLoc="center")
     table.auto_set_font_size(False)
     table.set_fontsize(6.5)
+    for (row, col), cell in table.get_celld().items():
+        cell.set_linewidth(0.4)
+        if row == 0 or col == 0:
+            cell.set_text_props(fontweight="bold")
+        if row > 0 and row % 2 == 0:
+            cell.set_facecolor("#f0f0f0")
+
+
+def _marks(figure: Figure, data: ChartData, units: str) -> None:
+    """The focus-pull sheet: one row per mark, one column per lens, each cell near – far in feet and inches or m."""
+    from camtool.render.numfmt import feet_inches
+
+    extra = data.extra
+    axes = figure.add_subplot()
+    axes.axis("off")
+    name = "ft in" if units == "imperial" else "m"
+    axes.set_title(f"{data.title} · near – far ({name})", loc="left", fontweight="bold", fontsize=9)
+    figure.suptitle(data.scene, fontsize=6, x=0.01, ha="left", color="#333333")
+
+    def shown(mm: float) -> str:
+        return feet_inches(mm) if units == "imperial" else _short_m(mm)
+
+    cells = [[shown(mark), *(f"{shown(a)} – {shown(b)}" for a, b in zip(near, far))]
+             for mark, near, far in zip(extra["marks_mm"], extra["near_mm"], extra["far_mm"])]
+    table = axes.table(cellText=cells, colLabels=["mark", *extra["lenses"]], bbox=Bbox.from_bounds(0.0, 0.0, 1.0, 1.0),
+                       cellLoc="center")
+    table.auto_set_font_size(False)
+    table.set_fontsize(7)
     for (row, col), cell in table.get_celld().items():
         cell.set_linewidth(0.4)
         if row == 0 or col == 0:
