@@ -60,7 +60,7 @@ def physical_coc_mm(depth: Any, *, focus_mm: float, focal_length_mm: float, f_nu
     k = focal_length_mm * focal_length_mm / (f_number * (focus_mm - focal_length_mm / pupil_magnification))
     values = np.asarray(depth)
     kx = k * focus_mm / depth_unit_mm  # K·|1 − x_f/x| = |K·x_f/x − K|: three passes over the image
-    result = np.divide(np.float32(kx) if values.dtype == np.float32 else kx, values, out=out)
+    result = np.asarray(np.divide(np.float32(kx) if values.dtype == np.float32 else kx, values, out=out))
     result -= np.float32(k) if result.dtype == np.float32 else k
     return np.abs(result, out=result)
 

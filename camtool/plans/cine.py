@@ -111,3 +111,30 @@ def with_anamorphic(rows: Any, *, squeeze: float, distance_from: str = "sensor")
                       found.hyperfocal_horizontal_mm]
         row.update(zip(ANAMORPHIC_KEYS, values))
     return rows
+
+
+class RotaryShutter(NamedTuple):
+    """A rotary shutter's exposure time (s), its angle (degrees) and the frame rate (frames per second)."""
+
+    shutter_s: Any
+    shutter_angle_deg: Any
+    fps: Any
+
+
+def rotary_shutter(*, fps: Any, shutter_angle_deg: Any = None, shutter_s: Any = None) -> RotaryShutter:
+    """The time of a shutter angle at ``fps``, or the angle of a time: give one of ``shutter_angle_deg`` and
+    ``shutter_s``.
+
+    >>> rotary_shutter(fps=24.0, shutter_angle_deg=180.0).shutter_s == 1 / 48
+    True
+    >>> rotary_shutter(fps=24.0, shutter_s=1 / 50).shutter_angle_deg   # 172.8° (Wikipedia, "Shutter speed")
+    172.8
+    """
+    from camtool.exposure.shutter import shutter_angle_deg as angle_of
+    from camtool.exposure.shutter import shutter_time_s
+
+    if (shutter_angle_deg is None) == (shutter_s is None):
+        raise InputError("shutter_angle_deg", "give one of {shutter_angle_deg} and {shutter_s}", usage=True)
+    if shutter_angle_deg is not None:
+        return RotaryShutter(shutter_time_s(shutter_angle_deg, fps), shutter_angle_deg, fps)
+    return RotaryShutter(shutter_s, angle_of(shutter_s, fps), fps)

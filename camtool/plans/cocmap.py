@@ -340,3 +340,37 @@ def _dask_results(tasks: list[Any], scheduler: str) -> Any:
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+class CocMap(NamedTuple):
+    """A CoC map of depths given as an array: the blur-disc diameters on the sensor, what share of them is within
+    the CoC limit, and the near and far limits of the depth of field (all mm, from the entrance pupil)."""
+
+    coc_mm: Any
+    sharp_fraction: float
+    near_limit_mm: float
+    far_limit_mm: float
+
+
+def coc_map(*, depth_mm: Any, focus_mm: float, focal_length_mm: float, f_number: float, coc_mm: float,
+            pupil_magnification: float = 1.0) -> CocMap:
+    """The physical mode on an array of depths (mm from the entrance pupil, ``inf`` allowed; the focus too).
+
+    >>> m = coc_map(depth_mm=[2500.0, 5000.0], focus_mm=5000.0, focal_length_mm=50.0, f_number=2.0, coc_mm=0.03)
+    >>> [round(float(c), 6) for c in m.coc_mm], m.sharp_fraction   # K·|1 − x_f/x|, K = 50²/(2·4950)
+    ([0.252525, 0.0], 0.5)
+    """
+    import numpy as np
+
+    from camtool.dof import cocmap as formulas
+
+    depth = np.asarray(depth_mm, dtype=float)
+    f, p = focal_length_mm, pupil_magnification
+    if not focus_mm > f / p:
+        raise DomainError("focus_mm", focus_mm, f"> f/P = {f / p:g} mm (the focus beyond the front focal plane)")
+    coc = formulas.physical_coc_mm(depth, focus_mm=focus_mm, focal_length_mm=f, f_number=f_number,
+                                   pupil_magnification=p)
+    k = f_number * coc_mm * (focus_mm - f / p)
+    far = focus_mm * f * f / (f * f - k) if f * f > k else math.inf
+    sharp = float(np.count_nonzero(coc <= coc_mm)) / coc.size if coc.size else 0.0
+    return CocMap(float(coc) if coc.ndim == 0 else coc, sharp, focus_mm * f * f / (f * f + k), far)
