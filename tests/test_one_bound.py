@@ -34,6 +34,8 @@ STANDS_FOR = {
     "rule_constant": ("stars", "rule_constant"),
     "npf_k": ("stars", "npf_k"),
     "iso": ("exposure", "iso"),
+    "fps": ("exposure", "fps"),
+    "shutter_angle_deg": ("exposure", "shutter_angle"),
 }
 
 
