@@ -169,3 +169,48 @@ def test_marks_sheet_is_the_dof_commands_answer(tmp_path) -> None:
     assert _json.loads(data.read_text())["title"] == "Focus marks · T2.8"
     bad = run("chart", "marks", "--lenses", "no-such-lens", "-N", "2", "-o", str(tmp_path / "x.svg"))
     assert bad.exit_code == 2 and "--lenses" in bad.output and len(bad.output.strip().splitlines()) == 1
+
+
+def test_shot_envelope_is_dof_batch_over_the_same_frames(tmp_path) -> None:
+    pytest.importorskip("matplotlib")
+    import json as _json
+
+    from camtool.plans.chart import read_shot
+
+    csv = tmp_path / "shot.csv"  # a camera's per-frame CSV, as dof --batch reads it (T-stops written T2.8)
+    csv.write_text("frame,distance,focal_length,f_number\n1,1.5m,50,T2.8\n2,2m,50,T2.8\n3,10ft,75,T4\n4,inf,75,T4\n")
+    data = tmp_path / "shot.json"
+    result = run("chart", "shot", "--frames", str(csv), "--camera", "arri-alexa-35", "-o", str(tmp_path / "s.svg"),
+                 "--data", str(data))
+    assert result.exit_code == 0, result.output
+    curves = {c["role"]: c for c in _json.loads(data.read_text())["curves"]}
+    batch = run("dof", "--batch", str(csv), "--camera", "arri-alexa-35", "--format", "json")
+    rows = _json.loads(batch.stdout)
+    assert curves["near"]["x"] == [1.0, 2.0, 3.0, 4.0] == [float(r["frame"]) for r in rows]
+    assert curves["near"]["y"] == [r["near_mm"] for r in rows]
+    assert curves["far"]["y"] == [r["far_mm"] for r in rows]  # None (JSON null) for infinity in both
+    assert curves["focus"]["y"][:3] == [r["distance_mm"] for r in rows][:3]
+    assert [r["f_number_from"] for r in rows] == ["t-stop"] * 4
+    shot = read_shot(str(csv))
+    assert [type(a).__name__ for a in shot.apertures] == ["TStop"] * 4
+    bare = tmp_path / "bare.csv"
+    bare.write_text("frame,focus,focal_length,t_stop\n1,1.5m,50,2.8\n")
+    assert [type(a).__name__ for a in read_shot(str(bare)).apertures] == ["TStop"]  # a t_stop column's bare number
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ("frame,focus,focal_length,t_stop\n1,-2m,50,2.8\n", "row 1, column focus"),
+    ("frame,focus,focal_length,t_stop\n1,2m,50,0.1\n", "row 1, column aperture"),
+    ("frame,focus,focal_length,t_stop\n1,2m,50,2.8\n2,2m,nan,2.8\n", "row 2, column focal_length"),
+    ("frame,focus,t_stop\n1,2m,2.8\n", "no focal_length column"),
+    ("frame,focus,focal_length,t_stop\n1,2m,50,2.8,9\n", "row 1"),
+])
+def test_shot_bad_cells_are_one_line(tmp_path, text: str, said: str) -> None:
+    pytest.importorskip("matplotlib")
+    csv = tmp_path / "bad.csv"
+    csv.write_text(text)
+    result = run("chart", "shot", "--frames", str(csv), "-o", str(tmp_path / "s.svg"))
+    assert result.exit_code == 2 and said in result.output and len(result.output.strip().splitlines()) == 1, \
+        result.output
+    missing = run("chart", "shot", "--frames", str(tmp_path / "none.csv"), "-o", str(tmp_path / "s.svg"))
+    assert missing.exit_code == 1 and len(missing.output.strip().splitlines()) == 1

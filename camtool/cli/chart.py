@@ -27,7 +27,7 @@ import click
 
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, footer, required, single
-from camtool.cli.equipment import apply_equipment, resolve_coc, resolve_sensor
+from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import WavelengthType, lens_data, model_options, pupil_mag_option
 from camtool.cli.options import (
     DISTANCE_M,
@@ -54,6 +54,8 @@ from camtool.plans.chart import (
     figure_size,
     image_format,
     marks_chart,
+    read_shot,
+    shot_chart,
     trade_chart,
 )
 
@@ -218,6 +220,7 @@ def chart() -> None:
       camtool chart card -f 35 --units imperial --paper letter-quarter -o card.pdf
       camtool chart dof -f 35 -N 8 -o - --image-format svg > dof.svg
       camtool chart marks -f 25,32,50,75 -N T2.8 --camera arri-alexa-35 --units imperial -o marks.pdf
+      camtool chart shot --frames tests/data/shot.csv --camera arri-alexa-35 -o shot.svg
     """
 
 
@@ -418,7 +421,37 @@ def chart_marks(ctx: click.Context, focal_length, lenses, f_number, distance, pa
     return data
 
 
-for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card, chart_marks):
+@chart_command("shot")
+@click.option("--frames", required=True, metavar="CSV", help="Per-frame camera data: frame, distance (or focus), "
+              "focal_length and f_number (T2.8) or t_stop columns; bare focus in m.")
+@sensor_options
+@coc_options
+@distance_plane_option
+@click.option("--model", type=click.Choice(MODELS), default="auto", show_default=True, help="As for camtool dof.")
+def chart_shot(ctx: click.Context, frames, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, model, units,
+               preset_files) -> Any:
+    """The near/far envelope of a shot over its frames, from the camera's per-frame focus, focal length and stop.
+
+    Each frame is what camtool dof --batch answers for that row (a T-stop
+    stands in for the f-number unless --lens gives the transmittance).
+    """
+    from camtool.core.files import FileProblem
+    from camtool.plans.equipment import apertures
+
+    try:
+        shot = read_shot(frames)
+    except FileProblem as error:
+        raise click.ClickException(str(error)) from None
+    found = apertures(shot.apertures, lens=ctx.meta.get(LENS))
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
+    data = shot_chart(shot=shot, f_numbers=found.f_numbers, coc_mm=c, model=model, distance_from=distance_from,
+                      lens=lens_data(ctx, None, None, None))
+    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    return data
+
+
+for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card, chart_marks, chart_shot):
     chart.add_command(_command, _command.name)
 
 

@@ -32,6 +32,7 @@ __all__ = [
     "log_space",
     "marks_data",
     "raster_pixels",
+    "shot_data",
     "trade_data",
 ]
 
@@ -77,7 +78,7 @@ class Mark:
 class ChartData:
     """Everything one chart shows, in library units (mm, f-numbers, seconds).
 
-    ``kind`` is the chart (``dof``, ``blur``, ``aperture``, ``trade``, ``card``, ``marks``);
+    ``kind`` is the chart (``dof``, ``blur``, ``aperture``, ``trade``, ``card``, ``marks``, ``shot``);
     ``title`` names the question and ``scene`` the lens, sensor, CoC, model and
     distance plane; ``extra`` holds what a kind needs beyond curves and
     marks (the frame width for blur %, the card's table).
@@ -451,4 +452,30 @@ def marks_data(lenses: Sequence[tuple[str, float, LensData | None]], f_number: f
     data.extra = {"lenses": [label for label, _, _ in lenses], "focal_lengths_mm": [f for _, f, _ in lenses],
                   "f_number": f_number, "marks_mm": [float(v) for v in marks_mm], "near_mm": near, "far_mm": far,
                   "models": sorted(models)}
+    return data
+
+
+def shot_data(frames: Sequence[float], focal_lengths_mm: Sequence[float], f_numbers: Sequence[float],
+              distances_mm: Sequence[float], coc_mm: float, model: str = "auto", distance_from: str = "sensor",
+              lens: LensData | None = None, scene: str = "") -> ChartData:
+    """The near and far envelope of a shot: for each frame (its focus, focal length and f-number) the limits, in
+    one :func:`camtool.dof.ladder.depth_of_field` call; curves ``focus``, ``near`` and ``far`` against the frame.
+
+    >>> shot = shot_data([1, 2], [50.0, 50.0], [8.0, 8.0], [3000.0, 20000.0], 0.03, model="thin", distance_from="lens")
+    >>> round(shot.curves[1].y[0], 1), round(shot.curves[2].y[0], 1), shot.curves[2].y[1]
+    (2337.9, 4185.3, inf)
+    """
+    import numpy as np
+
+    result = depth_of_field(model, _array(focal_lengths_mm), _array(f_numbers), coc_mm, _array(distances_mm),
+                            distance_from, lens)
+    count = len(frames)
+    near = np.broadcast_to(result.limits.near_mm, (count,))
+    far = np.broadcast_to(result.limits.far_mm, (count,))
+    x = [float(v) for v in frames]
+    data = ChartData("shot", "Depth of field over the shot", scene)
+    data.curves = [Curve("focus", 0, "focus", x, [float(v) for v in distances_mm]),
+                   Curve("near", 1, "near", x, [float(v) for v in near]),
+                   Curve("far", 1, "far", x, [float(v) for v in far])]
+    data.extra = {"models": sorted({str(v) for v in np.ravel(result.model)})}
     return data

@@ -102,7 +102,7 @@ def draw(data: ChartData, width_in: float, height_in: float, units: str = "metri
         figure = Figure(figsize=(width_in, height_in), layout="constrained")
         FigureCanvasAgg(figure)
         drawer = {"dof": _dof, "blur": _blur, "aperture": _aperture, "trade": _trade, "card": _card,
-                  "marks": _marks}[data.kind]
+                  "marks": _marks, "shot": _shot}[data.kind]
         drawer(figure, data, units)
     return figure
 
@@ -361,3 +361,24 @@ def _marks(figure: Figure, data: ChartData, units: str) -> None:
             cell.set_text_props(fontweight="bold")
         if row > 0 and row % 2 == 0:
             cell.set_facecolor("#f0f0f0")
+
+
+def _shot(figure: Figure, data: ChartData, units: str) -> None:
+    """The envelope of a shot: near and far (a band, ∞ drawn past the top) and the focus, against the frame."""
+    name, size = _length(units)
+    axes = figure.add_subplot()
+    _titles(figure, axes, data)
+    focus, near, far = data.curves
+    finite = [v / size for c in data.curves for v in c.y if math.isfinite(v)]
+    bottom, top = min(finite) / 1.25, max(finite) * 4.0
+    axes.set_yscale("log")
+    axes.set_ylim(bottom, top)
+    y_far = [min(v / size, top * 10.0) for v in far.y]
+    axes.fill_between(far.x, [v / size for v in near.y], y_far, color=colour(1), alpha=0.18, lw=0, label="sharp zone")
+    axes.plot(near.x, [v / size for v in near.y], color=colour(1), lw=0.9, label="near, far")
+    axes.plot(far.x, y_far, color=colour(1), lw=0.9)
+    axes.plot(focus.x, [v / size for v in focus.y], color=colour(0), ls=style(0), lw=1.2, label="focus")
+    axes.set_xlabel("frame")
+    axes.set_ylabel(f"distance ({name})")
+    _log_axis(axes.yaxis)
+    axes.legend(loc="upper right", frameon=False, fontsize=7)
