@@ -236,7 +236,7 @@ def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
                 "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
                 "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt", "rail_stack",
-                "bracket_stack"}
+                "bracket_stack", "rotary_shutter", "coc_map"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)

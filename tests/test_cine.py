@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 from cli_helpers import run, run_json
 
@@ -214,3 +215,17 @@ def test_shot_bad_cells_are_one_line(tmp_path, text: str, said: str) -> None:
         result.output
     missing = run("chart", "shot", "--frames", str(tmp_path / "none.csv"), "-o", str(tmp_path / "s.svg"))
     assert missing.exit_code == 1 and len(missing.output.strip().splitlines()) == 1
+
+
+def test_chart_dof_squeeze_adds_the_horizontal_limits_of_f_over_squeeze() -> None:
+    from camtool.dof.closed import thin_dof
+    from camtool.plans.chart import dof_chart
+
+    data = dof_chart(focal_lengths_mm=[100.0], f_numbers=[2.8], coc_mm=0.025, model="thin", squeeze=2.0)
+    vertical_near, vertical_far, near, far = data.curves
+    assert near.label == "f/2.8 horizontal near" and near.group != vertical_near.group
+    expected = thin_dof(50.0, 2.8, 0.025, np.asarray(near.x), "sensor")
+    assert near.y == [float(v) for v in expected.near_mm] and far.y == [float(v) for v in expected.far_mm]
+    assert vertical_far.y == [float(v) for v in thin_dof(100.0, 2.8, 0.025, np.asarray(near.x), "sensor").far_mm]
+    with pytest.raises(DomainError):
+        dof_chart(focal_lengths_mm=[100.0], f_numbers=[2.8], coc_mm=0.025, squeeze=9.0)

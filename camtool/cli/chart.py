@@ -38,6 +38,7 @@ from camtool.cli.options import (
     focal_option,
     library_errors,
     sensor_options,
+    squeeze_option,
     stack,
 )
 from camtool.cli.params import FNumberType, LengthType, NumberType, flatten
@@ -237,9 +238,10 @@ def chart() -> None:
 @click.option("--model", type=click.Choice(MODELS), default="auto", show_default=True,
               help="Depth-of-field model, as for camtool dof (auto: the cheapest the scene needs within --tolerance).")
 @model_options
+@squeeze_option
 def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high, sensor, crop, coc, coc_rule,
               pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus,
-              prescription_file, units, preset_files) -> Any:
+              prescription_file, squeeze, units, preset_files) -> Any:
     """Near and far limits against focus distance (log axes), one band per f-number or focal length, H marked."""
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
@@ -248,8 +250,9 @@ def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high
     data = dof_chart(focal_lengths_mm=flatten(focal_length), f_numbers=apertures, coc_mm=c,
                      from_mm=single(ctx, low, "--from"), to_mm=single(ctx, high, "--to"), model=model,
                      distance_from=distance_from, lens=lens, diffraction=diffraction, wavelength_nm=wavelength,
-                     tolerance=tolerance)
-    data.scene += " · " + footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+                     tolerance=tolerance, squeeze=squeeze)
+    data.scene += (f" · {squeeze:g}× anamorphic" if squeeze else "") + " · " + footer(
+        " / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
     return data
 
 

@@ -127,8 +127,11 @@ def _range(low: float, high: float) -> None:
 def dof_chart(*, focal_lengths_mm: Sequence[float], f_numbers: Sequence[float], coc_mm: float,
               from_mm: float | None = None, to_mm: float | None = None, model: str = "auto",
               distance_from: str = "sensor", lens: LensData | None = None, diffraction: bool = False,
-              wavelength_nm: float = 550.0, tolerance: float = 0.01) -> ChartData:
+              wavelength_nm: float = 550.0, tolerance: float = 0.01, squeeze: float | None = None) -> ChartData:
     """Near and far limits against focus distance: the focal lengths (the lens's own when not given) and the range.
+
+    An anamorphic ``squeeze`` S adds, for each band, the horizontal limits: the thin lens of f/S at the same
+    f-number and CoC (docs/cine.md §5a); the bands as computed are those of vertical blur.
 
     The range defaults to 10 × the longest focal length (at least 0.3 m) to
     twice the longest thin-lens hyperfocal distance (at least 10 m); the data
@@ -158,8 +161,21 @@ def dof_chart(*, focal_lengths_mm: Sequence[float], f_numbers: Sequence[float], 
     if math.isinf(stop):
         raise DomainError("high", "inf", "a finite distance")
     _range(start, stop)
-    return dof_data(focal, f_numbers, coc_mm, log_space(start, stop, POINTS), model, distance_from, lens, diffraction,
-                    wavelength_nm, tolerance, scene=lens_label(focal))
+    distances = log_space(start, stop, POINTS)
+    data = dof_data(focal, f_numbers, coc_mm, distances, model, distance_from, lens, diffraction, wavelength_nm,
+                    tolerance, scene=lens_label(focal))
+    if squeeze is not None:
+        from camtool.plans.cine import desqueezed_width_mm
+
+        desqueezed_width_mm(1.0, squeeze)  # the bound
+        across = dof_data([f / squeeze for f in focal], f_numbers, coc_mm, distances, "thin", distance_from)
+        groups = len(data.curves) // 2
+        for curve, source in zip(across.curves, data.curves):
+            curve.label = source.label.replace(" near", " horizontal near").replace(" far", " horizontal far")
+            curve.group += groups
+        data.curves += across.curves
+        data.extra["squeeze"] = squeeze
+    return data
 
 
 def blur_chart(*, f_numbers: Sequence[float], sensor_width_mm: float, sensor_height_mm: float, sensor_label: str,
