@@ -45,7 +45,7 @@ ONE: dict[str, Any] = {"callback": one_value}
 @click.option("--math", type=click.Choice(["depth", "far=0", "direct"]), default="depth", help="nuke: ZDefocus math.")
 @click.option("--size", type=NumberType(0, 10000), default="10", **ONE, help="nuke: blur size at infinity, px.")
 @click.option("--maximum", type=NumberType(0, 10000), default="100", **ONE, help="nuke: largest blur, px.")
-@click.option("--jobs", type=click.IntRange(1, 1024), default=os.cpu_count() or 1, help="Frames at once (processes).")
+@click.option("--jobs", type=click.IntRange(1, 1024), help="Frames at once, in processes (default: one per core).")
 @click.option("--scheduler", help="Spread frames over Dask: ADDRESS or local:N (needs camtool[dask]).")
 @sensor_options
 @coc_options
@@ -83,7 +83,7 @@ def cocmap(ctx: click.Context, depth, output, mode, distance, f_number, focal_le
         found = list_frames(depth)
         if not found:
             raise click.BadParameter(f"no depth images match {depth!r}", ctx=ctx, param_hint="'DEPTH'")
-        rows = list(run_frames(frames=found, outputs=output_names(found, output), settings=settings, jobs=jobs,
-                               scheduler=scheduler))
+        rows = list(run_frames(frames=found, outputs=output_names(found, output), settings=settings,
+                               jobs=jobs or os.cpu_count() or 1, scheduler=scheduler))
     return Output(rows, COLUMNS, KEYS, f"{mode} mode · CoC {cocs[0]:.4g} mm · {chosen.label} · depths from the "
                   "entrance pupil" if fmt == "table" else "")
