@@ -45,10 +45,12 @@ from camtool.core.ranges import (
     DISTANCE_MM,
     F_NUMBER,
     FOCAL_LENGTH_MM,
+    FRAME_RATE_FPS,
     MAGNIFICATION,
     PIXEL_PITCH_UM,
     PUPIL_MAGNIFICATION,
     SENSOR_SIDE_MM,
+    SHUTTER_ANGLE_DEG,
     describe,
 )
 from camtool.dof.ladder import LensData
@@ -60,6 +62,8 @@ from camtool.exposure.stars import StarLimits
 from camtool.geometry.compose import Composition
 from camtool.geometry.fov import FieldOfView
 from camtool.geometry.thinlens import FocusGeometry
+from camtool.plans.cine import RotaryShutter
+from camtool.plans.cocmap import CocMap
 from camtool.plans.photo import PhotoAnswer
 from camtool.plans.stack import BracketStack, RailStack
 from camtool.plans.tilt import TiltAnswer
@@ -68,6 +72,7 @@ from camtool.render.chartdata import ChartData
 __all__ = [
     "BracketStack",
     "ChartData",
+    "CocMap",
     "Composition",
     "DepthOfField",
     "DofLimits",
@@ -81,11 +86,13 @@ __all__ = [
     "LensData",
     "PhotoAnswer",
     "RailStack",
+    "RotaryShutter",
     "StarLimits",
     "TiltAnswer",
     "bracket_stack",
     "chart",
     "circle_of_confusion",
+    "coc_map",
     "composition",
     "depth_of_field",
     "equivalent_settings",
@@ -100,6 +107,7 @@ __all__ = [
     "preset",
     "preset_names",
     "rail_stack",
+    "rotary_shutter",
     "save_chart",
     "star_trail_limits",
     "tilt",
@@ -1053,3 +1061,42 @@ def save_chart(data: Annotated[Any, _Kind("chart")], output: Text, *, width_in: 
         write_bytes(output, chartplot.to_bytes(chartplot.draw(data, width_in, height_in, units), fmt, dpi))
     except WriteProblem as problem:
         raise DomainError("output", output, "a file that can be written", problem.problem) from None
+@_checked
+def rotary_shutter(*, fps: Annotated[Any, _Kind("number", bounds=FRAME_RATE_FPS, unit="fps")],
+                   shutter_angle_deg: Annotated[Any, _Kind("number", optional=True, bounds=SHUTTER_ANGLE_DEG,
+                                                           unit="°")] = None,
+                   shutter_s: Annotated[Any, _Kind("number", optional=True, bounds=SHUTTER_RANGE_S, unit="s")] = None,
+                   ) -> RotaryShutter:
+    """A rotary shutter, as ``camtool exposure --shutter-angle --fps``: t = angle/(360·fps), or the angle of a time.
+
+    Give ``fps`` and one of ``shutter_angle_deg`` and ``shutter_s`` (docs/cine.md §3).
+
+    Examples
+    --------
+    >>> rotary_shutter(fps=24, shutter_angle_deg=180).shutter_s == 1 / 48   # Wikipedia, "Shutter speed"
+    True
+    """
+    from camtool.plans.cine import rotary_shutter as run
+
+    return run(fps=fps, shutter_angle_deg=shutter_angle_deg, shutter_s=shutter_s)
+
+
+@_checked
+def coc_map(depth_mm: DistanceOrInf, *, focus_mm: RealDistance, focal_length_mm: Annotated[
+        float, _Kind("number", scalar=True, bounds=FOCAL_LENGTH_MM, unit="mm")], f_number: RealFNumber,
+            coc_mm: RealCoC = 0.025, pupil_magnification: RealPupilMagnification = 1.0) -> CocMap:
+    """The blur disc on the sensor (mm) of every depth of an array, as ``camtool cocmap``'s physical mode.
+
+    Depths and the focus are distances from the entrance pupil (docs/cine.md §6): c = f²·|x − x_f|/(N·x·(x_f − f/P)).
+    The result also has the share of depths within ``coc_mm`` and the depth of field's near and far limits.
+
+    Examples
+    --------
+    >>> m = coc_map([2500.0, 5000.0, float("inf")], focus_mm=5000.0, focal_length_mm=50, f_number=2.0)
+    >>> [round(float(c), 4) for c in m.coc_mm], round(m.near_limit_mm), round(m.far_limit_mm)
+    ([0.2525, 0.0, 0.2525], 4550, 5549)
+    """
+    from camtool.plans.cocmap import coc_map as run
+
+    return run(depth_mm=depth_mm, focus_mm=focus_mm, focal_length_mm=focal_length_mm, f_number=f_number,
+               coc_mm=coc_mm, pupil_magnification=pupil_magnification)

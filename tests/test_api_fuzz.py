@@ -102,6 +102,8 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
                             + ["/nonexistent.jpg", "/dev/null", str(Path(__file__))]),
     "coc_rule": st.sampled_from([None, "d/1500", "d/1440", "px:2", "nonsense"]),
     "lens": st.sampled_from([None, "nikon-z-24mm-f1.8-s", "sony-fe-85mm-f1.8", "nikon-z-24-70mm-f4-s", "no-such-lens"]),
+    "fps": st.floats(1.0, 1000.0),
+    "shutter_angle_deg": st.one_of(st.none(), st.floats(1.0, 360.0)),
     "name": st.sampled_from(["full-frame", "nikon-z-8", "nikon-z-24mm-f1.8-s", "dgauss100", "hp5", "Full Frame",
                              "no-such-preset"]),
     "sensor_label": st.sampled_from(["36 × 24 mm", "APS-C", ""]),
@@ -159,7 +161,8 @@ INFINITE_OK = {"front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hype
                "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
                "radius_mm",  # a prescription's flat surface
                "step_mm", "extension_step_mm", "covered_mm",  # a rail frame sharp to infinity: one frame covers all
-               "focus_distance_mm", "focus_distance_max_mm", "far_max_mm", "far_min_mm"}  # a photo focused at infinity
+               "focus_distance_mm", "focus_distance_max_mm", "far_max_mm", "far_min_mm",  # a photo focused at infinity
+               "far_limit_mm"}  # a CoC map focused beyond the hyperfocal distance
 
 
 def hostile_arrays() -> st.SearchStrategy[Any]:
@@ -258,7 +261,7 @@ def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
                 "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
                 "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt", "rail_stack",
-                "bracket_stack", "chart", "save_chart"}
+                "bracket_stack", "chart", "save_chart", "rotary_shutter", "coc_map"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)

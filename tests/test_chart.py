@@ -13,6 +13,7 @@ import math
 import os
 import re
 import shlex
+import shutil
 import struct
 import subprocess
 import sys
@@ -455,9 +456,11 @@ def test_help_examples_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> N
     from camtool.cli.chart import chart as group
 
     monkeypatch.chdir(tmp_path)
+    (tmp_path / "tests" / "data").mkdir(parents=True)  # the shot example's per-frame data
+    shutil.copy(Path(__file__).parent / "data" / "shot.csv", tmp_path / "tests" / "data" / "shot.csv")
     _no_drawing(monkeypatch)  # the command lines parse and compute; the drawing is tested above
     examples = [line.strip() for line in (group.help or "").split("Examples:")[1].splitlines() if line.strip()]
-    assert len(examples) == 6
+    assert len(examples) == 8
     for line in examples:
         words = shlex.split(line.split(">")[0])
         result = chart(*words[2:], *SMALL)

@@ -105,10 +105,10 @@ def test_table_snapshot() -> None:
          "home-interior, floodlit-buildings, distant-city-lights, moonlight"),
         (["--ev100", "3", "-N", "8", "--nd", "ND-8"],
          "Error: Invalid value for '--nd': ND-8 is outside the valid range: a factor (ND1000, 1000x), "
-         "stops (10stops, 10ev) or an optical density (3.0D, OD3)"),
+         "stops (10stops, 10ev) or an optical density (3.0D, OD3, ND.6, ND0.9)"),
         (["-N", "8", "-t", "1/60", "--nd", "1000"],  # issue 15: a bare number is refused, naming --nd
          "Error: Invalid value for '--nd': 1000 is outside the valid range: a factor (ND1000, 1000x), "
-         "stops (10stops, 10ev) or an optical density (3.0D, OD3) (a bare number could be any of the three)"),
+         "stops (10stops, 10ev) or an optical density (3.0D, OD3, ND.6, ND0.9) (a bare number could be any of the three)"),
         (["-N", "8", "-t", "2h30"],  # 2h30 was 7230 s
          "Error: Invalid value for '-t' / '--shutter': '2h30' is ambiguous: give every number its unit "
          "(2h30m or 2h30s) or a clock (2:30:00 is h:mm:ss)"),

@@ -114,6 +114,8 @@ def scratch(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, s
     shutil.copy(REPO / "lens_db" / "prescriptions" / "dgauss100.yaml", root / "dgauss100.yaml")
     # photos: the README names them from the repository root, the help of `exif` from a folder of photos
     shutil.copytree(REPO / "tests" / "data" / "exif", root / "tests" / "data" / "exif")
+    shutil.copytree(REPO / "tests" / "data" / "depth", root / "tests" / "data" / "depth")
+    shutil.copy(REPO / "tests" / "data" / "shot.csv", root / "tests" / "data" / "shot.csv")
     (root / "docs" / "charts").mkdir(parents=True)  # where the README's chart examples write
     photos = root / "photos"
     photos.mkdir()

@@ -273,14 +273,21 @@ def test_equivalents_drop_rows_outside_the_domain() -> None:
         ("1.5 stops", 1.5),
         ("0.6D", 1.99),
         ("6ev", 6.0),
+        # the cinema's density notation: Kodak Wratten 2 #96 (B&H listing): ND .30 = 1 stop, .60 = 2, .90 = 3,
+        # ND 3.0 = 10 stops (density / log10 2: 0.9 -> 2.99)
+        ("ND.3", 1.0),
+        ("ND.6", 1.99),
+        ("ND0.9", 2.99),
+        ("ND1.2", 3.99),
+        ("nd 3.0", 9.97),
     ],
 )
 def test_nd_spellings(text: str, stops: float) -> None:
     assert round(parse_nd(text).stops, 2) == stops
 
 
-@pytest.mark.parametrize("text", ["", "ND", "three", "-3", "ND-8", "3 stop 2", "0.5x", "3", "3.0", "1000", "ND0.9",
-                                  "ND3.0", "0.9ND"])
+@pytest.mark.parametrize("text", ["", "ND", "three", "-3", "ND-8", "3 stop 2", "0.5x", "3", "3.0", "1000", "ND.",
+                                  "ND0.9.1", "0.9ND"])
 def test_nd_bad_spellings(text: str) -> None:
     with pytest.raises(DomainError) as info:
         parse_nd(text)

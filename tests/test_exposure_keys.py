@@ -26,6 +26,7 @@ MODES = [
     ["-N", "16", "-t", "1/125"],  # the settings' EV
     ["--ev100", "12", "--iso", "100", "--equivalents"],  # equivalents
     ["--lens", "cooke-s4i-50mm-t2", "--ev100", "12", "-t", "1/50"],  # a T-stop
+    ["--ev100", "12", "-N", "T2.8", "--shutter-angle", "180", "--fps", "24"],  # a shutter angle
 ]
 
 

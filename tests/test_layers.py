@@ -19,7 +19,7 @@ LAYERS = [
     {"optics"},
     {"dof"},
     {"presets", "render"},
-    {"exif"},
+    {"exif", "depthmap"},
     {"plans"},
     {"api"},
     {"cli", "__main__"},

@@ -173,3 +173,33 @@ def test_the_chart_api_gives_the_card_and_curves_the_command_draws(model: str, t
     assert dof.exit_code == 0, dof.output
     curves = camtool.chart("dof", coc_mm=0.03, focal_length_mm=50, f_number=8, model=model).to_json()["curves"]
     assert json.loads(data.read_text())["curves"] == curves
+@settings(max_examples=30, deadline=None)
+@given(angle=st.floats(1.0, 360.0), fps=st.sampled_from([23.976, 24.0, 25.0, 48.0, 120.0]))
+def test_one_shutter_time_per_angle_command_line_and_api(angle, fps):
+    import camtool
+
+    by_angle = run_json("exposure", "--ev100", "12", "-N", "4", "--shutter-angle", repr(angle), "--fps", repr(fps))[0]
+    api = camtool.rotary_shutter(fps=fps, shutter_angle_deg=angle)
+    assert by_angle["shutter_s"] == api.shutter_s == angle / (360.0 * fps)
+    assert by_angle["shutter_angle_deg"] == pytest.approx(angle, rel=1e-14)
+
+
+def test_one_coc_map_command_line_and_api(tmp_path):
+    import json
+
+    import numpy as np
+
+    import camtool
+
+    openexr = pytest.importorskip("OpenEXR")
+    z = np.geomspace(0.5, 50.0, 32, dtype=np.float32)[None, :].repeat(2, axis=0)
+    depth = str(tmp_path / "d.exr")
+    openexr.File({"compression": openexr.NO_COMPRESSION, "type": openexr.scanlineimage}, {"Z": z}).write(depth)
+    out = tmp_path / "m.npy"
+    row = json.loads(run("cocmap", depth, "-o", str(out), "-f", "50", "-N", "2.8", "-s", "3m", "--pupil-offset",
+                         "90mm", "--coc", "0.03", "--format", "json").stdout)[0]
+    api = camtool.coc_map(z.astype(float) * 1000.0, focus_mm=3000.0 - 90.0, focal_length_mm=50, f_number=2.8,
+                          coc_mm=0.03)
+    assert (row["near_limit_mm"], row["far_limit_mm"]) == (api.near_limit_mm, api.far_limit_mm)
+    assert row["sharp_fraction"] == api.sharp_fraction
+    assert np.allclose(np.load(out)[0], api.coc_mm, rtol=1e-6, atol=1e-6 * float(api.coc_mm.max()))

@@ -35,6 +35,8 @@ STANDS_FOR = {
     "npf_k": ("stars", "npf_k"),
     "iso": ("exposure", "iso"),
     "pupil_magnification": ("dof", "pupil_mag"),
+    "fps": ("exposure", "fps"),
+    "shutter_angle_deg": ("exposure", "shutter_angle"),
 }
 
 

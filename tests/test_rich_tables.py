@@ -220,8 +220,10 @@ def test_ctrl_c_during_progress_ends_in_one_line_and_restores_the_cursor(tmp_pat
     assert "\x1b[?25h" in drawn.split("camtool: interrupted")[0][-40:]
 
 
-def test_footers_of_many_chunks_are_said_once() -> None:
+def test_footers_of_many_chunks_are_said_once(monkeypatch) -> None:
     from camtool.render.output import LATER_NOTES, RowWriter
+
+    monkeypatch.delenv("COLUMNS", raising=False)
 
     out = io.StringIO()
     writer = RowWriter("table", stream=out)

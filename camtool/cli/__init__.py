@@ -36,6 +36,7 @@ COMMANDS = {
     "exif": "camtool.cli.exif",
     "chart": "camtool.cli.chart",
     "stack": "camtool.cli.stack",
+    "cocmap": "camtool.cli.cocmap",
 }
 
 

@@ -27,7 +27,7 @@ import click
 
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, footer, required, single
-from camtool.cli.equipment import apply_equipment, resolve_coc, resolve_sensor
+from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import WavelengthType, lens_data, model_options, pupil_mag_option
 from camtool.cli.options import (
     DISTANCE_M,
@@ -38,9 +38,10 @@ from camtool.cli.options import (
     focal_option,
     library_errors,
     sensor_options,
+    squeeze_option,
     stack,
 )
-from camtool.cli.params import LengthType, NumberType, flatten
+from camtool.cli.params import FNumberType, LengthType, NumberType, flatten
 from camtool.core import ranges
 from camtool.core.errors import InputError
 from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
@@ -54,6 +55,9 @@ from camtool.plans.chart import (
     dof_chart,
     figure_size,
     image_format,
+    marks_chart,
+    read_shot,
+    shot_chart,
     trade_chart,
 )
 
@@ -218,6 +222,8 @@ def chart() -> None:
       camtool chart trade -N 8 -s 3m --lens dgauss100-lens -o trade.svg
       camtool chart card -f 35 --units imperial --paper letter-quarter -o card.pdf
       camtool chart dof -f 35 -N 8 -o - --image-format svg > dof.svg
+      camtool chart marks -f 25,32,50,75 -N T2.8 --camera arri-alexa-35 --units imperial -o marks.pdf
+      camtool chart shot --frames tests/data/shot.csv --camera arri-alexa-35 -o shot.svg
     """
 
 
@@ -234,9 +240,10 @@ def chart() -> None:
 @click.option("--model", type=click.Choice(MODELS), default="auto", show_default=True,
               help="Depth-of-field model, as for camtool dof (auto: the cheapest the scene needs within --tolerance).")
 @model_options
+@squeeze_option
 def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high, sensor, crop, coc, coc_rule,
               pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus,
-              prescription_file, units, preset_files) -> Any:
+              prescription_file, squeeze, units, preset_files) -> Any:
     """Near and far limits against focus distance (log axes), one band per f-number or focal length, H marked."""
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
@@ -245,8 +252,9 @@ def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high
     data = dof_chart(focal_lengths_mm=flatten(focal_length), f_numbers=apertures, coc_mm=c,
                      from_mm=single(ctx, low, "--from"), to_mm=single(ctx, high, "--to"), model=model,
                      distance_from=distance_from, lens=lens, diffraction=diffraction, wavelength_nm=wavelength,
-                     tolerance=tolerance)
-    data.scene += " · " + footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+                     tolerance=tolerance, squeeze=squeeze)
+    data.scene += (f" · {squeeze:g}× anamorphic" if squeeze else "") + " · " + footer(
+        " / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
     return data
 
 
@@ -381,7 +389,74 @@ def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance
     return data
 
 
-for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card):
+@chart_command("marks", card=True)
+@click.option("-f", "--focal-length", "focal_length", type=LengthType("mm"), multiple=True, help="Focal lengths of a set.")
+@click.option("--lenses", multiple=True, metavar="NAME,...", help="Lens presets of a set, one column each.")
+@click.option("-N", "--f-number", "f_number", type=FNumberType(t_stops=True), multiple=True, help="The stop (T2.8).")
+@click.option("-s", "--distance", type=DISTANCE_M, multiple=True, help="The marks (default 3–50 ft or 1–15 m).")
+@click.option("--paper", type=click.Choice(["a6", "letter-quarter"]), default="a6", show_default=True, help=PAPER_HELP)
+@sensor_options
+@coc_options
+@distance_plane_option
+def chart_marks(ctx: click.Context, focal_length, lenses, f_number, distance, paper, sensor, crop, coc, coc_rule,
+                pixel_pitch, distance_from, units, preset_files) -> Any:
+    """A printable focus-pull sheet: near and far around each focus mark, one column per lens of a set.
+
+    Cells in feet and inches with --units imperial, else metres; a T-stop
+    is used as the f-number it stands for (as in camtool dof).
+    """
+    from camtool.cli.equipment import open_presets
+    from camtool.cli.options import param_named
+    from camtool.presets import PresetNotFound
+
+    names = [n.strip() for group in lenses for n in group.split(",") if n.strip()]
+    try:
+        found = [(n, open_presets(ctx, preset_files).lens(n)) for n in names] if names else []
+    except PresetNotFound as error:
+        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "lenses")) from None
+    sets = [(f"{v:g} mm", v, None) for v in flatten(focal_length)] + [(n, lens.focal_min_mm, None) for n, lens in found]
+    n = single(ctx, required(ctx, f_numbers(f_number, False), "-N"), "-N")
+    typed = flatten(f_number)[0]
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
+    label = f"T{float(typed):g}" if type(typed).__name__ == "TStop" else f"f/{n:g}"
+    data = marks_chart(lenses=sets, f_number=n, coc_mm=c, marks_mm=flatten(distance), units=units,
+                       distance_from=distance_from, aperture_label=label)
+    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    return data
+
+
+@chart_command("shot")
+@click.option("--frames", required=True, metavar="CSV", help="Per-frame camera data: frame, distance (or focus), "
+              "focal_length and f_number (T2.8) or t_stop columns; bare focus in m.")
+@sensor_options
+@coc_options
+@distance_plane_option
+@click.option("--model", type=click.Choice(MODELS), default="auto", show_default=True, help="As for camtool dof.")
+def chart_shot(ctx: click.Context, frames, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, model, units,
+               preset_files) -> Any:
+    """The near/far envelope of a shot over its frames, from the camera's per-frame focus, focal length and stop.
+
+    Each frame is what camtool dof --batch answers for that row (a T-stop
+    stands in for the f-number unless --lens gives the transmittance).
+    """
+    from camtool.core.files import FileProblem
+    from camtool.plans.equipment import apertures
+
+    try:
+        shot = read_shot(frames)
+    except FileProblem as error:
+        raise click.ClickException(str(error)) from None
+    found = apertures(shot.apertures, lens=ctx.meta.get(LENS))
+    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
+    data = shot_chart(shot=shot, f_numbers=found.f_numbers, coc_mm=c, model=model, distance_from=distance_from,
+                      lens=lens_data(ctx, None, None, None))
+    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    return data
+
+
+for _command in (chart_dof, chart_blur, chart_aperture, chart_trade, chart_card, chart_marks, chart_shot):
     chart.add_command(_command, _command.name)
 
 

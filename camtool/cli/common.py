@@ -58,8 +58,9 @@ def t_stop_output(ctx: click.Context, out: Any) -> Any:
         row["t_stop"] = choice.t_stop if choice is not None else None
         row["f_number_from"] = choice.source if choice is not None else None
     keys = [*out.keys, *(k for k in ("t_stop", "f_number_from") if k not in out.keys)]
+    columns = t_stop_columns(out.rows, out.columns)
     if not out.footer:
-        return type(out)(out.rows, out.columns, keys, out.footer)
+        return type(out)(out.rows, columns, keys, out.footer)
     note = t_stop_note(choices, lens=lens)
     if note.transmittance is not None:
         text = (f"T-stops: f-number N = T·√τ, τ = {note.transmittance:.3g} from --lens {note.lens_id} "
@@ -68,7 +69,22 @@ def t_stop_output(ctx: click.Context, out: Any) -> Any:
         text = (f"T-stops stand in for the f-number (lens transmittance τ unknown): for τ 0.9–0.7 the f-number is "
                 f"{note.below_low:.0%}–{note.below_high:.0%} below T, so N and the depth of field may be overstated "
                 f"by up to {note.overstated_low:.0%}–{note.overstated_high:.0%}")
-    return type(out)(out.rows, out.columns, keys, f"{out.footer} · {text}")
+    return type(out)(out.rows, columns, keys, f"{out.footer} · {text}")
+
+
+def t_stop_columns(rows: Any, columns: Sequence[Any]) -> list[Any]:
+    """The table's columns with a ``T`` column (``T2.8``, the T-stop typed) before the f-number's, which is then
+    headed ``N used``: a typed T-stop is shown as a T-stop (the JSON keys are ``t_stop`` and ``f_number``)."""
+    from camtool.render.columns import TEXT, Column
+
+    for row in rows:
+        t = row.get("t_stop")
+        row["t_stop_label"] = f"T{t:.3g}" if isinstance(t, float) else ""
+    found = [i for i, c in enumerate(columns) if c.key == "f_number"]
+    if not found:
+        return list(columns)
+    at = found[0]
+    return [*columns[:at], Column("t_stop_label", "T", TEXT), columns[at]._replace(header="N used"), *columns[at + 1:]]
 
 
 def rows_from(count: int, columns: dict[str, Any]) -> ColumnRows:

@@ -18,9 +18,11 @@ from camtool.cli.options import (
     focal_option,
     library_errors,
     sensor_options,
+    squeeze_option,
 )
 from camtool.cli.params import LengthType, NumberType, flatten
 from camtool.plans import compose as plans
+from camtool.plans.cine import desqueezed_width_mm
 from camtool.plans.compose import lenses
 from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, Column
 
@@ -68,11 +70,12 @@ def _plane_columns(name: str, short: str) -> list[Column]:
               help="Distance of a foreground plane in front of the subject (bare numbers are metres).")
 @sensor_options
 @coc_options
+@squeeze_option
 @distance_plane_option
 @teleconverter_option
 def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, magnification, f_number, exact_stops,
-            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, teleconverter, fmt, units,
-            preset_files) -> Output:
+            background, foreground, sensor, crop, coc, coc_rule, pixel_pitch, squeeze, distance_from, teleconverter, fmt,
+            units, preset_files) -> Output:
     """Perspective composition: where to stand with each focal length to frame the subject the same.
 
     For each focal length (default 24, 35, 50, 85, 135, 200 mm): the camera
@@ -86,6 +89,7 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     Examples:
       camtool compose --subject-size 1.8m --fill 0.8
       camtool compose --subject-size 1.8m --fill 0.8 -N 2.8 --background 20m -f 35,85,200
+      camtool compose --subject-size 4m --fill 0.9 --fill-axis width --camera arri-alexa-35 --squeeze 2 -f 40,75
     """
     focal, apertures = lenses(focal_lengths_mm=flatten(focal_length), f_numbers=f_numbers(f_number, exact_stops),
                               teleconverter=teleconverter)
@@ -103,10 +107,11 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
     count, columns = combine_params(ctx, focal, given_ms or [0.0], *optical)
     f, m, n, c = ((*columns, None, None))[:4]
     with library_errors(ctx):
-        values = plans.compose(focal_length_mm=f, sensor_width_mm=chosen.width_mm, sensor_height_mm=chosen.height_mm,
+        width = desqueezed_width_mm(chosen.width_mm, squeeze)  # an anamorphic's frame is its de-squeezed width
+        values = plans.compose(focal_length_mm=f, sensor_width_mm=width, sensor_height_mm=chosen.height_mm,
                                reference_focal_length_mm=focal[0], magnification=m if given_m is not None else None,
                                subject_size_mm=size, fill=share,
-                               frame_mm=chosen.height_mm if fill_axis == "height" else chosen.width_mm,
+                               frame_mm=chosen.height_mm if fill_axis == "height" else width,
                                f_number=n, coc_mm=c, distance_from=distance_from, background_mm=behind,
                                foreground_mm=before)
     rows = rows_from(count, values)
@@ -120,5 +125,6 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
                    else f"subject {size / 1000:g} m fills {share:g} of the {fill_axis}")
         scale = f"scale vs {focal[0]:g} mm" if behind is not None or before is not None else ""
         note = footer("thin" if apertures else None, cocs, coc_origin, chosen.label, distance_from,
-                      " · ".join(part for part in (subject, scale) if part))
+                      " · ".join(part for part in (subject, scale, squeeze and f"{squeeze:g}× anamorphic: widths "
+                                                   "de-squeezed, blur discs vertical") if part))
     return Output(rows, shown, KEYS, note)

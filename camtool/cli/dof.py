@@ -29,9 +29,11 @@ from camtool.cli.options import (
     focal_option,
     library_errors,
     sensor_options,
+    squeeze_option,
 )
 from camtool.cli.rows import ZIP
 from camtool.dof.ladder import focal_lengths, model_choices, model_help
+from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
 from camtool.plans.dof import DofTable, dof_table, lens_behind_converter
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
 
@@ -64,10 +66,11 @@ ALL_COLUMNS = [
     Column("estimate_shown", "est. error", TEXT),
     Column("time_shown", "time/eval", TEXT),
 ]
+ANAMORPHIC_COLUMNS = [Column("near_horizontal_mm", "near horiz."), Column("far_horizontal_mm", "far horiz.")]
 MODEL_HELP = model_help()
 
 
-@camtool_command("dof", keys=ALL_KEYS)
+@camtool_command("dof", keys=[*ALL_KEYS, *ANAMORPHIC_KEYS])
 @focal_option
 @aperture_options
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
@@ -77,17 +80,19 @@ MODEL_HELP = model_help()
 @closeup_options
 @sensor_options
 @coc_options
+@squeeze_option
 @distance_plane_option
 @click.option("--model", type=click.Choice(model_choices()), default="auto", show_default=True, help=MODEL_HELP)
 @model_options
 def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magnification, extension, teleconverter,
-        sensor, crop, coc, coc_rule, pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag,
+        sensor, crop, coc, coc_rule, pixel_pitch, squeeze, distance_from, model, tolerance, diffraction, wavelength, pupil_mag,
         hiatus, prescription_file, fmt, units, preset_files) -> Output:
     """Depth of field: near and far limits, total depth, front/rear split and hyperfocal distance.
 
     \b
     Examples:
       camtool dof -f 50 -N 8 -s 3m
+      camtool dof --camera arri-alexa-35 -f 100 -N T2.8 -s 10ft --squeeze 2
       camtool dof -f 85 -N 1.8,2.8,4 -s 2 --sensor aps-c --format json
       camtool dof -N 2 -s 1m --prescription dgauss100 --model all
       camtool dof -f 100 -N 11,22 -s 0.5 --pupil-mag 0.8 --diffraction
@@ -127,6 +132,10 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
                           wavelength_nm=wavelength, tolerance=tolerance)
     rows = table.rows
     where = footer(None, cocs, coc_origin, chosen.label, distance_from)
+    if squeeze and model != "all":
+        with library_errors(ctx):
+            rows = with_anamorphic(rows, squeeze=squeeze, distance_from=distance_from)
+        where += f" · {squeeze:g}× anamorphic: near/far for vertical blur (f as marked), horizontal of f/{squeeze:g}"
     if model == "all":
         columns = list(ALL_COLUMNS)
         if table.path == "closeup":
@@ -136,8 +145,9 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
         timed = ", focus planning included" if table.path == "closeup" else ""
         note = _comparison_note(rows, table.reference_model, timed, where) if fmt == "table" else ""
         return Output(rows, columns, ALL_KEYS if table.path == "closeup" else FAR_KEYS, note)
-    keys = [*KEYS, *CLOSEUP_KEYS, *(DIFFRACTION_KEYS if table.path == "closeup" and diffraction else [])]
-    columns = list(COLUMNS)
+    keys = [*KEYS, *CLOSEUP_KEYS, *(DIFFRACTION_KEYS if table.path == "closeup" and diffraction else []),
+            *(ANAMORPHIC_KEYS if squeeze else [])]
+    columns = list(COLUMNS) + (ANAMORPHIC_COLUMNS if squeeze else [])
     if table.close:
         columns[3:3] = CLOSEUP_COLUMNS
     if table.focus_column:

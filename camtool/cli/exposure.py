@@ -12,8 +12,10 @@ from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
 from camtool.cli.options import completion, library_errors, preset_names
 from camtool.cli.params import FNumberType, NumberType, PupilMagnificationType, TimeType, _ListType, flatten
+from camtool.core import ranges
 from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
+from camtool.render.columns import ANGLE as ANGLE_KIND
 from camtool.render.columns import NUMBER, TEXT, Column
 
 LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
@@ -47,6 +49,7 @@ METERED_COLUMNS = [
     Column("corrected", "time to set", TEXT),
 ]
 LOSS_COLUMNS = [Column("nd_stops", "ND stops", NUMBER), Column("bellows_stops", "bellows stops", NUMBER)]
+ANGLE = [Column("shutter_angle_deg", "shutter angle", ANGLE_KIND)]
 KEYS = [*ROW_KEYS, *(key for key in EQUIVALENT_KEYS if key not in ROW_KEYS)]
 """Every key a row of the command can carry: a worked-out exposure's, then what --equivalents adds."""
 RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
@@ -125,7 +128,7 @@ def _film_names() -> list[str]:
     return shipped + preset_names("film")
 
 
-@camtool_command("exposure", keys=KEYS, batch=False)
+@camtool_command("exposure", keys=[*KEYS, "shutter_angle_deg"], batch=False)
 @click.option("-N", "--f-number", "f_number", type=ApertureType(), multiple=True,
               help="f-number (8, f/8, f8) or T-stop (T2; exposure uses it as is); a list 2.8,4 gives a row each. "
                    "Without a light level: the metered f-number. Left out with --lens of a cinema lens: its "
@@ -135,6 +138,10 @@ def _film_names() -> list[str]:
 @click.option("-t", "--shutter", "shutter_s", type=TimeType(), multiple=True,
               help="Time: 1/250, 0.5, 2s, 90s, 1m30s, 1:30, 2h5m (every number with its unit; 2h30 is refused). "
                    "Without a light level: the metered time.")
+@click.option("--shutter-angle", type=NumberType(*ranges.SHUTTER_ANGLE_DEG), multiple=True,
+              help="Shutter angle in degrees (with --fps): the time is angle/(360·fps), 180 at 24 fps is 1/48 s.")
+@click.option("--fps", type=NumberType(*ranges.FRAME_RATE_FPS), help="Frame rate: with it every row gets the "
+              "shutter_angle_deg of its time to set (360·fps·t; above 360 no shutter gives it).")
 @click.option("--iso", type=NumberType(1, 1e7), multiple=True,
               help="ISO speed (1 to 10000000); default 100. Without a light level: the metered ISO.")
 @click.option("--ev100", type=NumberType(-10, 25), multiple=True,
@@ -175,8 +182,8 @@ def _film_names() -> list[str]:
               help="Stops the nearest standard values (and --equivalents) use; bulb times (> 30 s) are not snapped.")
 @click.option("--equivalents", is_flag=True,
               help="List equivalent f-number and time pairs for the exposure (over --step stops).")
-def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, ev, light, luminance, illuminance,
-             meter_k, meter_c, nd, magnification, pupil_magnification, film, reciprocity_p, new_iso, new_f_number,
+def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, shutter_angle, fps, iso, ev100, ev, light, luminance,
+             illuminance, meter_k, meter_c, nd, magnification, pupil_magnification, film, reciprocity_p, new_iso, new_f_number,
              solve, step, equivalents, fmt, units, preset_files) -> Output:
     """Exposure: correct a metered exposure, solve a scene, list equivalents, meter readings.
 
@@ -204,21 +211,26 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
       camtool exposure --ev100 12 --iso 100 --equivalents
       camtool exposure --illuminance 37fc -N 4 --iso 400
       camtool exposure --lens cooke-s4i-50mm-t2 --ev100 12
+      camtool exposure --light sunny --shutter-angle 180 --fps 24 --iso 800 --nd ND1.2
+      camtool exposure --ev100 10 -N T2.8 --iso 800 --fps 24
     """
     from camtool.cli.equipment import LENS
     from camtool.exposure.calculator import KEYS, work_out
     from camtool.exposure.timefmt import format_time
+    from camtool.plans.cine import shutter_angles, shutter_times
     from camtool.plans.equipment import exposure_apertures
 
     light_given = any((ev100, ev, light, luminance, illuminance))
     with library_errors(ctx):
+        shutter_s = shutter_times(shutter_angle_deg=flatten(shutter_angle), fps=fps[0] if fps else None,
+                                  shutter_s=flatten(shutter_s))
         chosen = exposure_apertures(flatten(f_number), lens=ctx.meta.get(LENS), exact_stops=exact_stops,
                                     solving=bool(light_given and shutter_s and iso), equivalents=equivalents)
     apertures, t_stop = chosen.f_numbers, chosen.t_stop
     lens_note = "" if chosen.widest_t_stop is None else \
         f" · T{chosen.widest_t_stop:g}: the widest T-stop of --lens {ctx.meta[LENS].id}"
     film_data = _film(ctx, film, preset_files) if film else None
-    lists = {"f_number": apertures, "shutter_s": flatten(shutter_s), "iso": flatten(iso), "ev100": flatten(ev100),
+    lists = {"f_number": apertures, "shutter_s": shutter_s, "iso": flatten(iso), "ev100": flatten(ev100),
              "ev": flatten(ev), "luminance": flatten(luminance), "illuminance": flatten(illuminance)}
     given = {name: values for name, values in lists.items() if values}
     count, columns = combine_params(ctx, *given.values()) if given else (1, ())
@@ -232,14 +244,17 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
             new_iso=new_iso[0] if new_iso else None,
             new_f_number=float(new_f_number[0]) if new_f_number else None,
             solve=solve.replace("-", "_"), t_stop=t_stop, step=step, equivalents=equivalents, count=count)
-    rows = rows_from(answer.rows, answer.values)
+    time_key = "shutter_exact_s" if answer.mode == "equivalents" else "corrected_shutter_s"
+    angles = {"shutter_angle_deg": shutter_angles(answer.values[time_key], fps=fps[0])} if fps else {}
+    rows = rows_from(answer.rows, {**answer.values, **angles})
     mark = "T" if t_stop else "f/"
     if answer.mode == "equivalents":
         for row in rows:
             row["aperture"] = f"{mark}{row['f_number_nominal']:g}"
             row["time"], row["exact"] = format_time(row["shutter_nominal_s"]), format_time(row["shutter_exact_s"])
         note = f"{answer.notes[0]} · {step} stops · exact time before snapping"
-        return Output(rows, EQUIVALENT_COLUMNS, EQUIVALENT_KEYS, note if fmt == "table" else "")
+        return Output(rows, EQUIVALENT_COLUMNS + ANGLE[:len(angles)], [*EQUIVALENT_KEYS, *angles],
+                      note if fmt == "table" else "")
     for row in rows:
         row["aperture"] = f"{mark}{row['f_number']:.3g}"
         row["time"] = format_time(row["shutter_s"])
@@ -251,7 +266,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, iso, ev100, e
             row["metered"] = (f"{mark}{row['metered_f_number']:.3g} {format_time(row['metered_shutter_s'])} "
                               f"ISO {row['metered_iso']:.4g}")
     footer = _footer(answer, step, film_data, t_stop) + lens_note
-    return Output(rows, _columns(answer, rows), KEYS, footer if fmt == "table" else "")
+    return Output(rows, _columns(answer, rows) + ANGLE[:len(angles)], [*KEYS, *angles], footer if fmt == "table" else "")
 
 
 def _columns(answer: Any, rows: Sequence[dict[str, Any]]) -> list[Column]:

@@ -6,7 +6,7 @@ import click
 
 from camtool.cli.closeup import FOCUS_COLUMN, branch_note, closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, footer, required, rows_from
+from camtool.cli.common import f_numbers, footer, required, rows_from, t_stop_columns
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
@@ -22,6 +22,7 @@ from camtool.cli.options import (
 from camtool.cli.params import NumberType, WavelengthType, flatten
 from camtool.core import ranges
 from camtool.plans import focus as plans
+from camtool.plans.equipment import solved_t_stops
 from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
 
 FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
@@ -67,7 +68,8 @@ INVERSE_COLUMNS = [
 ]
 
 
-@camtool_command("focus", keys=list(dict.fromkeys(FORWARD_KEYS + INVERSE_KEYS + FIXED_KEYS + OPTIMUM_KEYS + DEPTH_KEYS)))
+@camtool_command("focus", keys=list(dict.fromkeys([*FORWARD_KEYS, *INVERSE_KEYS, *FIXED_KEYS, *OPTIMUM_KEYS, *DEPTH_KEYS,
+                                                   "t_stop"])))
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres).")
@@ -212,7 +214,10 @@ def _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, di
     with library_errors(ctx):
         found = plans.inverse(focal_length_mm=f, near_mm=a, far_mm=b, coc_mm=c, f_number=n[0] if n else None,
                               distance_from=distance_from)
-    note = footer("thin", cocs, coc_origin, chosen.label, distance_from,
-                  "near/far: the limits at this f-number" if found.fixed else "") if fmt == "table" else ""
-    return Output(rows_from(count, found.values), INVERSE_COLUMNS,
-                  INVERSE_KEYS + FIXED_KEYS if found.fixed else INVERSE_KEYS, note)
+    cine = solved_t_stops(found.values["f_number"], lens=ctx.meta.get(LENS)) if not found.fixed else None
+    t_key = ["t_stop"] if cine and cine.note else []
+    note = footer("thin", cocs, coc_origin, chosen.label, distance_from, "near/far: the limits at this f-number"
+                  if found.fixed else (cine.note if cine else "")) if fmt == "table" else ""
+    rows = rows_from(count, {**found.values, **({"t_stop": cine.t_stops} if cine and t_key else {})})
+    return Output(rows, t_stop_columns(rows, INVERSE_COLUMNS) if t_key else INVERSE_COLUMNS,
+                  INVERSE_KEYS + FIXED_KEYS if found.fixed else INVERSE_KEYS + t_key, note)

@@ -15,6 +15,7 @@ from camtool.cli.options import (
     focal_option,
     library_errors,
     sensor_options,
+    squeeze_option,
 )
 from camtool.cli.params import flatten
 from camtool.plans.fov import field_of_view
@@ -38,7 +39,7 @@ DISTANCE_COLUMNS = [
 ]
 
 
-@camtool_command("fov", keys=KEYS + DISTANCE_KEYS)
+@camtool_command("fov", keys=[*KEYS, "squeeze", *DISTANCE_KEYS])
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres): angles then include focus breathing, "
@@ -46,10 +47,11 @@ DISTANCE_COLUMNS = [
 @magnification_option
 @closeup_options
 @sensor_options
+@squeeze_option
 @distance_plane_option
 @lens_geometry_options
-def fov(ctx: click.Context, focal_length, distance, magnification, extension, teleconverter, sensor, crop, distance_from,
-        pupil_mag, hiatus, fmt, units, preset_files) -> Output:
+def fov(ctx: click.Context, focal_length, distance, magnification, extension, teleconverter, sensor, crop, squeeze,
+        distance_from, pupil_mag, hiatus, fmt, units, preset_files) -> Output:
     """Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.
 
     Without -s the angles are for infinity focus, 2·atan(size / 2f). With -s the
@@ -62,6 +64,7 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
       camtool fov -f 24,50,85 --sensor aps-c
       camtool fov -f 100 -s 0.5m --format json
       camtool fov -f 100 -m 0.5,1,2
+      camtool fov -f 50 --camera arri-alexa-35 --squeeze 2
 
     With -m the focus is set by the magnification (any m > 0): the lens sits
     f(1 + 1/m) from the subject, and the distance shown is that one (from the
@@ -83,11 +86,12 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
                              crop_factor=chosen.crop_factor, wanted=s if wanted else None,
                              by_magnification=bool(wanted_m), distance_from=distance_from, pupil_magnification=p,
                              hiatus_mm=delta, lens_preset=ctx.meta.get(LENS), extension_mm=extension,
-                             teleconverter=teleconverter)
-    keys, columns = list(KEYS), list(COLUMNS)
+                             teleconverter=teleconverter, squeeze=squeeze)
+    keys, columns = list(KEYS) + ["squeeze"] * (squeeze is not None), list(COLUMNS)
     if seen.at_distance:
         keys += DISTANCE_KEYS
         columns += DISTANCE_COLUMNS
-    note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})",
+    note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})" + (
+                  f" · {squeeze:g}× anamorphic: angles of the de-squeezed frame" if squeeze else ""),
                   distance_from if seen.at_distance else None, lens_note) if fmt == "table" else ""
     return Output(rows_from(count, seen.values), columns, keys, note)

@@ -90,6 +90,11 @@ aperture_options = stack(
                  help="Read nominal f-numbers as the exact 2^(k/6) stops they label (5.6 -> 5.657, 22 -> 22.627)."),
 )
 
+squeeze_option = click.option(
+    "--squeeze", type=NumberType(*ranges.SQUEEZE), callback=one_value,
+    help="Anamorphic squeeze (1.3, 1.5, 1.8, 2): the horizontal angle is that of the de-squeezed width; dof adds "
+    "the horizontal limits, of f/squeeze (docs/cine.md).")
+
 distance_plane_option = click.option(
     "--distance-from", "distance_from", type=click.Choice(FOCUS_PLANES), default="sensor", show_default=True,
     help="Reference plane of all distances: the sensor (focal-plane mark, as lens scales and specs) or the lens.")
@@ -150,7 +155,8 @@ coc_options = stack(
     click.option("--coc", type=COC_MM, multiple=True,
                  help="Circle of confusion, e.g. 0.03 or 0.03mm (overrides --coc-rule)."),
     click.option("--coc-rule", default=None, metavar="RULE", shell_complete=completion(_coc_rules),
-                 help="CoC from the sensor: d/1500 (default), d/1730, d/1442, px:2 (pixel pitches), print:8x10in@25cm."),
+                 help="CoC from the sensor: d/1500 (default), cine (0.025 mm, the default for cine cameras), d/1730, "
+                 "d/1442, px:2 (pixel pitches), print:8x10in@25cm."),
     click.option("--pixel-pitch", type=PIXEL_PITCH_UM,
                  help="Pixel pitch for --coc-rule px:K, e.g. 4.3 or 4.3um (bare numbers are µm, as spec sheets give it)."),
 )

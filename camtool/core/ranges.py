@@ -54,6 +54,15 @@ PUPIL_MAGNIFICATION = (0.05, 20.0)
 EXTENSION_MM = (0.0, 10_000.0)
 """Extension tubes or bellows behind a lens: up to 10 m, beyond any bellows made (and any magnification above)."""
 
+SHUTTER_ANGLE_DEG = (0.1, 360.0)
+"""A rotary (or electronic) shutter's open angle in degrees: up to the whole turn, 360°."""
+
+FRAME_RATE_FPS = (0.01, 100_000.0)
+"""Frames per second: from time-lapse to high-speed cameras."""
+
+SQUEEZE = (1.0, 4.0)
+"""An anamorphic lens's horizontal squeeze factor (1.3, 1.5, 1.8 and 2 are the usual ones; 1 is spherical)."""
+
 
 def in_range(value: float, bounds: tuple[float, float], allow_inf: bool = False) -> bool:
     """Whether ``value`` lies in the closed interval ``bounds`` (infinity only if ``allow_inf``; NaN never)."""

@@ -73,8 +73,9 @@ _ND_SPELLINGS = (
     (re.compile(r"^(?:x\s*(\d+(?:\.\d+)?)|(\d+(?:\.\d+)?)\s*x)$"), nd_from_factor),
     (re.compile(rf"^{_ND_NUMBER}\s*d$"), nd_from_density),
     (re.compile(rf"^od\s*{_ND_NUMBER}$"), nd_from_density),
+    (re.compile(r"^nd\s*(\d*\.\d+)$"), nd_from_density),
 )
-ND_SPELLINGS = "a factor (ND1000, 1000x), stops (10stops, 10ev) or an optical density (3.0D, OD3)"
+ND_SPELLINGS = "a factor (ND1000, 1000x), stops (10stops, 10ev) or an optical density (3.0D, OD3, ND.6, ND0.9)"
 """The three spellings :func:`parse_nd` reads, for messages."""
 
 
@@ -93,16 +94,23 @@ def parse_nd(text: str) -> NdFilter:
     ``10ev``
     ``3.0D``, ``0.9d``,       optical      D after the number or OD before it
     ``OD3``, ``OD0.9``        density      (Lee, Kodak Wratten "0.9 ND")
+    ``ND.3``, ``ND.6``,       optical      the cinema's notation: ND and a number
+    ``ND0.9``, ``ND1.2``      density      with a decimal point (Tiffen, Kodak
+                                           Wratten 2 #96 "ND .30 = 1 stop",
+                                           "ND 3.0 = 10 stops")
     ========================  ===========  =====================================
 
-    A bare number (``3``, ``3.0``, ``1000``) and ``ND`` with a decimal point
-    (``ND0.9``, ``ND3.0``: a density in some catalogues, a factor in others)
-    are refused with the three spellings. Case and spaces are ignored.
+    ``ND`` and a whole number is a factor (``ND8``), ``ND`` and a number with a
+    decimal point a density (``ND.9``, ``ND3.0``), so the decimal point is what
+    tells them apart. A bare number (``3``, ``3.0``, ``1000``) is refused with
+    the spellings. Case and spaces are ignored.
 
     Examples
     --------
     >>> [round(parse_nd(s).stops, 2) for s in ("ND1000", "1000x", "10stops", "3.0D", "OD3", "x8", "1.5stops")]
     [9.97, 9.97, 10.0, 9.97, 9.97, 3.0, 1.5]
+    >>> [round(parse_nd(s).stops, 2) for s in ("ND.3", "ND.6", "ND0.9", "ND1.2")]
+    [1.0, 1.99, 2.99, 3.99]
     >>> parse_nd("1000")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -117,8 +125,6 @@ def parse_nd(text: str) -> NdFilter:
     detail = ""
     if re.match(rf"^{_ND_NUMBER}$", key):
         detail = "a bare number could be any of the three"
-    elif re.match(r"^nd\s*\d*\.\d*$", key):
-        detail = "ND with a decimal point is a density in some catalogues and a factor in others"
     raise DomainError("nd", text, ND_SPELLINGS, detail)
 
 

@@ -5,6 +5,12 @@ Rules (the text after ``--coc-rule``):
 ``d/1500`` (default), ``d/1730``, ``d/1442``, any ``d/K``
     the sensor diagonal divided by K. d/1442 gives the classic 0.030 mm on a
     36 × 24 mm frame, d/1500 0.0288 mm, d/1730 (Zeiss) 0.025 mm.
+``cine``
+    0.025 mm (0.001 in) whatever the sensor, the convention of 35 mm motion
+    picture depth-of-field tables (Wikipedia, "Depth of field", circle of
+    confusion criterion: "generally 35 mm productions set it at 0.025 mm
+    (0.001 in)", after Ray 2000). The default for a camera preset of the
+    ``cine`` category.
 ``px:K``
     K pixel pitches (needs the pixel pitch, from a camera preset or
     ``--pixel-pitch``): for pixel-level sharpness.
@@ -25,8 +31,11 @@ from typing import NamedTuple
 from camtool.core.units import UnitError, parse_length
 
 DEFAULT_RULE = "d/1500"
-RULES_TO_COMPLETE = ("d/1500", "d/1730", "d/1442", "px:1", "px:2", "print:8x10in@25cm")
+RULES_TO_COMPLETE = ("d/1500", "cine", "d/1730", "d/1442", "px:1", "px:2", "print:8x10in@25cm")
 """The rules a shell completes for ``--coc-rule`` (any ``d/K``, ``px:K`` or ``print:WxH@DIST`` is accepted)."""
+CINE_RULE = "cine"
+CINE_COC_MM = 0.025
+"""The cinema convention, 0.001 in (Wikipedia, "Depth of field": 35 mm productions set it at 0.025 mm)."""
 EYE_ACUITY_MM_AT_250 = 0.25
 """Blur diameter an eye just resolves on a print viewed from 25 cm (the traditional figure)."""
 
@@ -60,7 +69,7 @@ def coc_from_rule(
     References
     ----------
     Wikipedia, "Circle of confusion" (d/1500, d/1730 and the 8×10 print at
-    25 cm); Zeiss's d/1730 criterion.
+    25 cm); Zeiss's d/1730 criterion; Wikipedia, "Depth of field" (cine, 0.025 mm).
 
     Examples
     --------
@@ -70,7 +79,11 @@ def coc_from_rule(
     0.009
     >>> round(coc_from_rule("print:8x10in@25cm", 36, 24).coc_mm, 4)
     0.0295
+    >>> coc_from_rule("cine", 27.99, 19.22)
+    CocChoice(coc_mm=0.025, origin='cine: 0.001 in')
     """
+    if rule.strip().lower() == CINE_RULE:
+        return CocChoice(CINE_COC_MM, "cine: 0.001 in")
     diagonal = math.hypot(width_mm, height_mm)
     match = _DIAGONAL.match(rule)
     if match:
@@ -87,7 +100,7 @@ def coc_from_rule(
     match = _PRINT.match(rule)
     if match:
         return _print_coc(rule, match.groups(), width_mm, height_mm)
-    raise UnitError(f"{rule!r} is not a CoC rule (d/1500, d/1730, d/1442, d/K, px:K, print:WxH@DIST)")
+    raise UnitError(f"{rule!r} is not a CoC rule (d/1500, cine, d/1730, d/1442, d/K, px:K, print:WxH@DIST)")
 
 
 def _print_coc(rule: str, parts: tuple[str, ...], width_mm: float, height_mm: float) -> CocChoice:

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
+from typing import NamedTuple
 
 from camtool.core.errors import DomainError, InputError, braced
 from camtool.dof.ladder import LensData, focal_lengths, hyperfocal
@@ -29,7 +30,9 @@ from camtool.render.chartdata import (
     card_data,
     dof_data,
     log_space,
+    marks_data,
     raster_pixels,
+    shot_data,
     trade_data,
 )
 
@@ -48,6 +51,9 @@ __all__ = [
     "figure_size",
     "image_format",
     "lens_label",
+    "marks_chart",
+    "read_shot",
+    "shot_chart",
     "trade_chart",
 ]
 
@@ -121,8 +127,11 @@ def _range(low: float, high: float) -> None:
 def dof_chart(*, focal_lengths_mm: Sequence[float], f_numbers: Sequence[float], coc_mm: float,
               from_mm: float | None = None, to_mm: float | None = None, model: str = "auto",
               distance_from: str = "sensor", lens: LensData | None = None, diffraction: bool = False,
-              wavelength_nm: float = 550.0, tolerance: float = 0.01) -> ChartData:
+              wavelength_nm: float = 550.0, tolerance: float = 0.01, squeeze: float | None = None) -> ChartData:
     """Near and far limits against focus distance: the focal lengths (the lens's own when not given) and the range.
+
+    An anamorphic ``squeeze`` S adds, for each band, the horizontal limits: the thin lens of f/S at the same
+    f-number and CoC (docs/cine.md §5a); the bands as computed are those of vertical blur.
 
     The range defaults to 10 × the longest focal length (at least 0.3 m) to
     twice the longest thin-lens hyperfocal distance (at least 10 m); the data
@@ -152,8 +161,21 @@ def dof_chart(*, focal_lengths_mm: Sequence[float], f_numbers: Sequence[float], 
     if math.isinf(stop):
         raise DomainError("high", "inf", "a finite distance")
     _range(start, stop)
-    return dof_data(focal, f_numbers, coc_mm, log_space(start, stop, POINTS), model, distance_from, lens, diffraction,
-                    wavelength_nm, tolerance, scene=lens_label(focal))
+    distances = log_space(start, stop, POINTS)
+    data = dof_data(focal, f_numbers, coc_mm, distances, model, distance_from, lens, diffraction, wavelength_nm,
+                    tolerance, scene=lens_label(focal))
+    if squeeze is not None:
+        from camtool.plans.cine import desqueezed_width_mm
+
+        desqueezed_width_mm(1.0, squeeze)  # the bound
+        across = dof_data([f / squeeze for f in focal], f_numbers, coc_mm, distances, "thin", distance_from)
+        groups = len(data.curves) // 2
+        for curve, source in zip(across.curves, data.curves):
+            curve.label = source.label.replace(" near", " horizontal near").replace(" far", " horizontal far")
+            curve.group += groups
+        data.curves += across.curves
+        data.extra["squeeze"] = squeeze
+    return data
 
 
 def blur_chart(*, f_numbers: Sequence[float], sensor_width_mm: float, sensor_height_mm: float, sensor_label: str,
@@ -254,3 +276,124 @@ def card_chart(*, focal_length_mm: float, coc_mm: float, f_numbers: Sequence[flo
     rows = list(distances_mm) or ([v * 304.8 for v in CARD_DISTANCES_FT] + [math.inf] if units == "imperial"
                                   else [v * 1000.0 for v in CARD_DISTANCES_M])
     return card_data(focal_length_mm, apertures, rows, coc_mm, model, distance_from, lens)
+
+
+MARKS_FT = (3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0, 50.0)
+"""A focus puller's default marks, in feet (with --units imperial)."""
+MARKS_M = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 7.0, 10.0, 15.0)
+"""The default marks in metres."""
+
+
+def marks_chart(*, lenses: Sequence[tuple[str, float, LensData | None]], f_number: float, coc_mm: float,
+                marks_mm: Sequence[float] = (), units: str = "metric", model: str = "auto",
+                distance_from: str = "sensor", aperture_label: str = "") -> ChartData:
+    """A printable focus-pull sheet: near and far around each mark for each lens of a set, at one stop.
+
+    Marks default to 3 ft to 50 ft (imperial) or 1 m to 15 m; each lens is a column, in the order given.
+
+    >>> sheet = marks_chart(lenses=[("50", 50.0, None)], f_number=8.0, coc_mm=0.03, marks_mm=[3000.0], model="thin",
+    ...                     distance_from="lens")
+    >>> round(sheet.extra["far_mm"][0][0], 1)   # 50 mm f/8, c = 0.03 mm at 3 m: far 4185.3 mm (as card_chart)
+    4185.3
+    """
+    if not lenses:
+        raise InputError("focal_length", "give the lenses of the sheet: {focal_length} (a list) or --lenses")
+    marks = list(marks_mm) or ([v * 304.8 for v in MARKS_FT] if units == "imperial" else [v * 1000.0 for v in MARKS_M])
+    return marks_data(lenses, f_number, marks, coc_mm, model, distance_from, aperture_label)
+
+
+SHOT_COLUMNS = {
+    "frame": ("frame",),
+    "focus": ("focus", "distance", "focus_distance", "focus_mm", "distance_mm", "focus_distance_mm"),
+    "focal_length": ("focal_length", "focal_length_mm", "f"),
+    "aperture": ("t_stop", "f_number", "n", "aperture", "tstop", "fstop", "iris"),
+}
+"""The columns of a camera's per-frame CSV and the names each may carry (case, dashes and spaces ignored)."""
+MAX_SHOT_FRAMES = 1_000_000
+"""The most frames a shot chart reads (some 11 hours at 24 fps)."""
+
+
+class Shot(NamedTuple):
+    """A camera's per-frame data: frame numbers, focus distances (mm), focal lengths (mm) and apertures (a
+    :class:`~camtool.core.units.TStop` when the column is ``t_stop`` or the cell says ``T2.8``)."""
+
+    frames: list[float]
+    distances_mm: list[float]
+    focal_lengths_mm: list[float]
+    apertures: list[float]
+
+
+def read_shot(path: str) -> Shot:
+    """The rows of a per-frame camera CSV (``frame``, ``focus``, ``focal_length``, ``t_stop`` or ``f_number``;
+    :data:`SHOT_COLUMNS`), each cell through the one parser of its quantity and its one bound: a bare focus is in
+    metres (in mm in a ``*_mm`` column), a bare focal length in mm. A bad cell is an error naming its row (1 = the
+    first data row) and column; an unreadable file a :class:`~camtool.core.files.FileProblem`."""
+    from camtool.core.ranges import DISTANCE_MM, F_NUMBER, FOCAL_LENGTH_MM, describe
+    from camtool.core.records import open_source, records
+    from camtool.core.units import TStop, UnitError, parse_f_number, parse_length, parse_t_stop
+
+    stream, name = open_source(path)
+    columns: dict[str, int] = {}
+    units: dict[str, str] = {}
+    out = Shot([], [], [], [])
+    with stream:
+        for row, cells, problem in records(stream, name):
+            if problem is not None:
+                raise InputError("frames", f"{{frames}} row {row}: {braced(problem)}")
+            if row == 0:
+                keys = [str(c).strip().lower().replace("-", "_").replace(" ", "_") for c in cells]
+                for quantity, names in SHOT_COLUMNS.items():
+                    where = next((i for i, k in enumerate(keys) if k in names), None)
+                    if where is not None:
+                        columns[quantity], units[quantity] = where, "mm" if keys[where].endswith("_mm") else ""
+                        if quantity == "aperture" and keys[where] in ("t_stop", "tstop"):
+                            units[quantity] = "T"  # a bare number in a T-stop column is a T-stop
+                missing = [q for q in ("focus", "focal_length", "aperture") if q not in columns]
+                if missing:
+                    raise InputError("frames", f"{{frames}} has no {', '.join(missing)} column (its header: "
+                                               f"{braced(', '.join(keys)[:120])})")
+                continue
+            if isinstance(cells, dict):
+                raise InputError("frames", "{frames} is CSV with a header row, not JSON lines")
+            if len(out.frames) >= MAX_SHOT_FRAMES:
+                raise InputError("frames", f"{{frames}} has more than {MAX_SHOT_FRAMES:,} frames")
+
+            def cell(quantity: str, cells: list[str] = cells) -> str:
+                index = columns[quantity]
+                return str(cells[index]).strip() if index < len(cells) else ""
+
+            try:
+                shown = "focus"
+                focus = parse_length(cell("focus"), units["focus"] or "m")
+                if not DISTANCE_MM[0] < focus <= DISTANCE_MM[1] and focus != math.inf:
+                    raise UnitError(f"{cell('focus')!r} is outside {describe(DISTANCE_MM, 'mm', allow_inf=True)}")
+                shown = "focal_length"
+                focal = parse_length(cell("focal_length"), "mm")
+                if not FOCAL_LENGTH_MM[0] <= focal <= FOCAL_LENGTH_MM[1]:
+                    raise UnitError(f"{cell('focal_length')!r} is outside {describe(FOCAL_LENGTH_MM, 'mm')}")
+                shown = "aperture"
+                text = cell("aperture")
+                t = parse_t_stop(text)
+                value = t if t is not None else parse_f_number(text)
+                if not F_NUMBER[0] <= value <= F_NUMBER[1]:
+                    raise UnitError(f"{text!r} is outside {describe(F_NUMBER)}")
+                shown = "frame"
+                frame = float(cell("frame")) if "frame" in columns else float(len(out.frames) + 1)
+                if not math.isfinite(frame):
+                    raise UnitError(f"{cell('frame')!r} is not a frame number")
+            except (UnitError, ValueError) as error:
+                raise InputError("frames", f"{{frames}} row {row}, column {shown}: {braced(str(error))}") from None
+            out.frames.append(frame)
+            out.distances_mm.append(focus)
+            out.focal_lengths_mm.append(focal)
+            out.apertures.append(TStop(value) if t is not None or units["aperture"] == "T" else value)
+    if not out.frames:
+        raise InputError("frames", "{frames} has no frames")
+    return out
+
+
+def shot_chart(*, shot: Shot, f_numbers: Sequence[float], coc_mm: float, model: str = "auto",
+               distance_from: str = "sensor", lens: LensData | None = None) -> ChartData:
+    """The near/far envelope of a shot over its frames (``f_numbers``: the f-number of each frame's aperture)."""
+    return shot_data(shot.frames, shot.focal_lengths_mm, f_numbers, shot.distances_mm, coc_mm, model, distance_from,
+                     lens)

@@ -7,7 +7,8 @@ API) asks these functions; the precedence rules live here and nowhere else:
 - **sensor**: ``sensor`` (a preset name or an inline ``WxH``) or ``crop`` >
   a fixed or phone lens's own format > the camera's sensor > an
   interchangeable lens's own format > full frame 36 × 24 mm;
-- **CoC**: ``coc`` > ``coc_rule`` > the sensor preset's own CoC > d/1500,
+- **CoC**: ``coc`` > ``coc_rule`` > the sensor preset's own CoC > ``cine`` (0.025 mm) for a
+  camera preset of the ``cine`` category > d/1500,
   with the pixel pitch from ``pixel_pitch`` or else the camera's;
 - **scene**: a scene preset fills every input left empty (what is given wins),
   and brings its camera (unless a sensor is given) and lens;
@@ -31,7 +32,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.errors import DomainError, InputError, braced
 from camtool.core.units import TStop, UnitError
-from camtool.geometry.coc import DEFAULT_RULE, coc_from_rule
+from camtool.geometry.coc import CINE_RULE, DEFAULT_RULE, coc_from_rule
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 _SIDE = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)\s*([a-zA-Zµ\"]*)"
@@ -181,6 +182,8 @@ def resolve_coc(*, coc: Sequence[float] = (), coc_rule: str | None = None, senso
         return CocChoice(list(coc), "--coc")
     if coc_rule is None and sensor.coc_mm is not None:
         return CocChoice([sensor.coc_mm], f"{sensor.label} preset")
+    if coc_rule is None and getattr(camera, "category", None) == "cine":
+        coc_rule = CINE_RULE
     pitch = pixel_pitch_mm[0] if pixel_pitch_mm else sensor.pixel_pitch_mm
     try:
         choice = coc_from_rule(coc_rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
@@ -552,3 +555,35 @@ def exposure_apertures(values: Sequence[float], *, lens: Any = None, exact_stops
         raise InputError("f_number", "give all f-numbers or all T-stops, not a mix")
     numbers = [float(n) for n in flat]
     return ExposureApertures([exact_f_number(n) for n in numbers] if exact_stops else numbers, t_stop, widest)
+
+
+class SolvedTStops(NamedTuple):
+    """The T-stop to set for each solved f-number on a cine lens, and how it was found."""
+
+    t_stops: Any
+    """T = N/√τ (float or array, as the f-numbers), or None when the lens is not a cine lens."""
+    note: str
+    """What the footer says: the transmittance used, or that T stands in for N."""
+
+
+def solved_t_stops(f_numbers: Any, *, lens: Any = None) -> SolvedTStops:
+    """The T-stops a focus puller sets for f-numbers solved for a depth of field, on a cine lens (one whose preset
+    gives its widest T-stop): T = N/√τ with the lens's transmittance τ = (f_number_min/t_number_min)², else T = N
+    (an understatement of up to 1/√τ, as a T-stop standing in for N overstates it).
+
+    >>> from types import SimpleNamespace
+    >>> lens = SimpleNamespace(id="x", t_number_min=2.3, transmittance=0.75)
+    >>> round(solved_t_stops(2.0, lens=lens).t_stops, 1)  # Wikipedia, F-number: f/2.0 at 75 % is T2.3
+    2.3
+    >>> solved_t_stops(2.0).t_stops is None
+    True
+    """
+    if lens is None or getattr(lens, "t_number_min", None) is None:
+        return SolvedTStops(None, "")
+    tau = getattr(lens, "transmittance", None)
+    if tau is None:
+        return SolvedTStops(f_numbers, f"T-stop: N stands in (lens transmittance τ unknown; T is up to "
+                                       f"{1 / math.sqrt(0.7) - 1:.0%} above N for τ ≥ 0.7)")
+    from camtool.exposure.ev import t_stop
+
+    return SolvedTStops(t_stop(f_numbers, tau), f"T-stop: T = N/√τ, τ = {tau:.3g} from --lens {lens.id}")

@@ -24,13 +24,16 @@ class FieldOfView(NamedTuple):
 def field_of_view(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: float, crop_factor: float,
                   wanted: Any = None, by_magnification: bool = False, distance_from: str = "sensor",
                   pupil_magnification: float = 1.0, hiatus_mm: float = 0.0, lens_preset: Any = None,
-                  extension_mm: float | None = None, teleconverter: float | None = None) -> FieldOfView:
+                  extension_mm: float | None = None, teleconverter: float | None = None,
+                  squeeze: float | None = None) -> FieldOfView:
     """Angles of view, 35 mm equivalent focal length and, for a focus, the field covered at the subject.
 
     ``wanted`` is a focus distance in ``distance_from``'s plane (None: infinity)
     or, with ``by_magnification``, a magnification. The keys are those of
     ``camtool fov``; ``focal_length_mm`` is the lens's nominal one (× a
-    teleconverter).
+    teleconverter). An anamorphic ``squeeze`` S widens the horizontal angle to that of the de-squeezed width
+    S·w (the diagonal angle and the 35 mm equivalent follow the de-squeezed frame); ``sensor_width_mm`` stays the
+    sensor's.
 
     36 × 24 mm, 50 mm at infinity: horizontal 2·atan(18/50) = 39.598°:
 
@@ -38,10 +41,14 @@ def field_of_view(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height
     >>> round(v.values["horizontal_deg"], 3), v.at_distance
     (39.598, False)
     """
+    import math
+
     from camtool.geometry.fov import view
+    from camtool.plans.cine import desqueezed_width_mm
     from camtool.plans.closeup import has_focus_model
 
-    w, h, crop = sensor_width_mm, sensor_height_mm, crop_factor
+    w, h = desqueezed_width_mm(sensor_width_mm, squeeze), sensor_height_mm
+    crop = crop_factor * math.hypot(sensor_width_mm, h) / math.hypot(w, h)
     f, p, delta = focal_length_mm, pupil_magnification, hiatus_mm
     given = wanted is not None
     if by_magnification or extension_mm or teleconverter or (given and has_focus_model(lens_preset)):
@@ -67,7 +74,9 @@ def field_of_view(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height
     angles = seen.angles
     values = {"focal_length_mm": focal, "horizontal_deg": angles.horizontal_deg, "vertical_deg": angles.vertical_deg,
               "diagonal_deg": angles.diagonal_deg, "equivalent_focal_length_mm": seen.equivalent_focal_length_mm,
-              "crop_factor": crop, "sensor_width_mm": w, "sensor_height_mm": h}
+              "crop_factor": crop, "sensor_width_mm": sensor_width_mm, "sensor_height_mm": h}
+    if squeeze is not None:
+        values["squeeze"] = squeeze
     if given:
         values.update({"distance_mm": s, "magnification": m, "field_width_mm": seen.field_width_mm,
                        "field_height_mm": seen.field_height_mm, "distance_from": distance_from})

@@ -30,7 +30,9 @@ __all__ = [
     "card_data",
     "dof_data",
     "log_space",
+    "marks_data",
     "raster_pixels",
+    "shot_data",
     "trade_data",
 ]
 
@@ -76,7 +78,7 @@ class Mark:
 class ChartData:
     """Everything one chart shows, in library units (mm, f-numbers, seconds).
 
-    ``kind`` is the chart (``dof``, ``blur``, ``aperture``, ``trade``, ``card``);
+    ``kind`` is the chart (``dof``, ``blur``, ``aperture``, ``trade``, ``card``, ``marks``, ``shot``);
     ``title`` names the question and ``scene`` the lens, sensor, CoC, model and
     distance plane; ``extra`` holds what a kind needs beyond curves and
     marks (the frame width for blur %, the card's table).
@@ -424,4 +426,56 @@ def card_data(focal_length_mm: float, f_numbers: Sequence[float], distances_mm: 
         "hyperfocal_mm": [float(v) for v in hyper],
         "models": models,
     }
+    return data
+
+
+def marks_data(lenses: Sequence[tuple[str, float, LensData | None]], f_number: float, marks_mm: Sequence[float],
+               coc_mm: float, model: str = "auto", distance_from: str = "sensor", aperture_label: str = "",
+               scene: str = "") -> ChartData:
+    """A focus puller's sheet: near and far limits (mm) around each focus mark (rows) for each lens (columns:
+    ``(label, focal length, lens data)``), at one f-number; ``aperture_label`` is how the stop was given (T2.8).
+
+    >>> sheet = marks_data([("50 mm", 50.0, None)], 8.0, [3000.0], 0.03, model="thin", distance_from="lens")
+    >>> [round(sheet.extra[k][0][0]) for k in ("near_mm", "far_mm")]
+    [2338, 4185]
+    """
+    near: list[list[float]] = [[] for _ in marks_mm]
+    far: list[list[float]] = [[] for _ in marks_mm]
+    models: set[str] = set()
+    for _, focal, lens in lenses:
+        card = card_data(focal, [f_number], marks_mm, coc_mm, model, distance_from, lens)
+        for row, (a, b) in enumerate(zip(card.extra["near_mm"], card.extra["far_mm"])):
+            near[row].append(a[0])
+            far[row].append(b[0])
+        models.update(card.extra["models"])
+    data = ChartData("marks", f"Focus marks · {aperture_label or f'f/{f_number:g}'}", scene)
+    data.extra = {"lenses": [label for label, _, _ in lenses], "focal_lengths_mm": [f for _, f, _ in lenses],
+                  "f_number": f_number, "marks_mm": [float(v) for v in marks_mm], "near_mm": near, "far_mm": far,
+                  "models": sorted(models)}
+    return data
+
+
+def shot_data(frames: Sequence[float], focal_lengths_mm: Sequence[float], f_numbers: Sequence[float],
+              distances_mm: Sequence[float], coc_mm: float, model: str = "auto", distance_from: str = "sensor",
+              lens: LensData | None = None, scene: str = "") -> ChartData:
+    """The near and far envelope of a shot: for each frame (its focus, focal length and f-number) the limits, in
+    one :func:`camtool.dof.ladder.depth_of_field` call; curves ``focus``, ``near`` and ``far`` against the frame.
+
+    >>> shot = shot_data([1, 2], [50.0, 50.0], [8.0, 8.0], [3000.0, 20000.0], 0.03, model="thin", distance_from="lens")
+    >>> round(shot.curves[1].y[0], 1), round(shot.curves[2].y[0], 1), shot.curves[2].y[1]
+    (2337.9, 4185.3, inf)
+    """
+    import numpy as np
+
+    result = depth_of_field(model, _array(focal_lengths_mm), _array(f_numbers), coc_mm, _array(distances_mm),
+                            distance_from, lens)
+    count = len(frames)
+    near = np.broadcast_to(result.limits.near_mm, (count,))
+    far = np.broadcast_to(result.limits.far_mm, (count,))
+    x = [float(v) for v in frames]
+    data = ChartData("shot", "Depth of field over the shot", scene)
+    data.curves = [Curve("focus", 0, "focus", x, [float(v) for v in distances_mm]),
+                   Curve("near", 1, "near", x, [float(v) for v in near]),
+                   Curve("far", 1, "far", x, [float(v) for v in far])]
+    data.extra = {"models": sorted({str(v) for v in np.ravel(result.model)})}
     return data

@@ -101,7 +101,8 @@ def draw(data: ChartData, width_in: float, height_in: float, units: str = "metri
     with matplotlib.rc_context(RC):
         figure = Figure(figsize=(width_in, height_in), layout="constrained")
         FigureCanvasAgg(figure)
-        drawer = {"dof": _dof, "blur": _blur, "aperture": _aperture, "trade": _trade, "card": _card}[data.kind]
+        drawer = {"dof": _dof, "blur": _blur, "aperture": _aperture, "trade": _trade, "card": _card,
+                  "marks": _marks, "shot": _shot}[data.kind]
         drawer(figure, data, units)
     return figure
 
@@ -332,3 +333,52 @@ def _card(figure: Figure, data: ChartData, units: str) -> None:
             cell.set_text_props(fontweight="bold")
         if row > 0 and row % 2 == 0:
             cell.set_facecolor("#f0f0f0")
+
+
+def _marks(figure: Figure, data: ChartData, units: str) -> None:
+    """The focus-pull sheet: one row per mark, one column per lens, each cell near – far in feet and inches or m."""
+    from camtool.render.numfmt import feet_inches
+
+    extra = data.extra
+    axes = figure.add_subplot()
+    axes.axis("off")
+    name = "ft in" if units == "imperial" else "m"
+    axes.set_title(f"{data.title} · near – far ({name})", loc="left", fontweight="bold", fontsize=9)
+    figure.suptitle(data.scene, fontsize=6, x=0.01, ha="left", color="#333333")
+
+    def shown(mm: float) -> str:
+        return feet_inches(mm) if units == "imperial" else _short_m(mm)
+
+    cells = [[shown(mark), *(f"{shown(a)} – {shown(b)}" for a, b in zip(near, far))]
+             for mark, near, far in zip(extra["marks_mm"], extra["near_mm"], extra["far_mm"])]
+    table = axes.table(cellText=cells, colLabels=["mark", *extra["lenses"]], bbox=Bbox.from_bounds(0.0, 0.0, 1.0, 1.0),
+                       cellLoc="center")
+    table.auto_set_font_size(False)
+    table.set_fontsize(7)
+    for (row, col), cell in table.get_celld().items():
+        cell.set_linewidth(0.4)
+        if row == 0 or col == 0:
+            cell.set_text_props(fontweight="bold")
+        if row > 0 and row % 2 == 0:
+            cell.set_facecolor("#f0f0f0")
+
+
+def _shot(figure: Figure, data: ChartData, units: str) -> None:
+    """The envelope of a shot: near and far (a band, ∞ drawn past the top) and the focus, against the frame."""
+    name, size = _length(units)
+    axes = figure.add_subplot()
+    _titles(figure, axes, data)
+    focus, near, far = data.curves
+    finite = [v / size for c in data.curves for v in c.y if math.isfinite(v)]
+    bottom, top = min(finite) / 1.25, max(finite) * 4.0
+    axes.set_yscale("log")
+    axes.set_ylim(bottom, top)
+    y_far = [min(v / size, top * 10.0) for v in far.y]
+    axes.fill_between(far.x, [v / size for v in near.y], y_far, color=colour(1), alpha=0.18, lw=0, label="sharp zone")
+    axes.plot(near.x, [v / size for v in near.y], color=colour(1), lw=0.9, label="near, far")
+    axes.plot(far.x, y_far, color=colour(1), lw=0.9)
+    axes.plot(focus.x, [v / size for v in focus.y], color=colour(0), ls=style(0), lw=1.2, label="focus")
+    axes.set_xlabel("frame")
+    axes.set_ylabel(f"distance ({name})")
+    _log_axis(axes.yaxis)
+    axes.legend(loc="upper right", frameon=False, fontsize=7)

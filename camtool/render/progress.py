@@ -50,8 +50,12 @@ class Progress:
             self._bar = Bar(*columns, console=console, transient=True, redirect_stdout=False,
                             redirect_stderr=False, auto_refresh=False)
             self._task = self._bar.add_task(self.label, total=self.total)
-            self._bar.start()
-            _ACTIVE.append(self._bar)
+            _ACTIVE.append(self._bar)  # first: Ctrl-C during the first drawing still clears it
+            try:
+                self._bar.start()
+            except BaseException:
+                stop_all()
+                raise
         return self
 
     def advance(self, steps: float = 1) -> None:
