@@ -40,9 +40,13 @@ COLUMNS = [Column("file", "file", TEXT), Column("focal_length_mm", "f", SMALL), 
 @click.option("--model", type=click.Choice([m for m in model_choices() if m != "all"]), default="auto", show_default=True,
               help="Depth-of-field model (see camtool dof --help); --model thin --distance-from lens "
                    "--coc-rule d/1440 gives ExifTool's Composite:DOF.")
+@click.option("--exiftool", is_flag=True,
+              help="Answer as ExifTool 12.57's composite tags (ScaleFactor35efl, CircleOfConfusion, "
+                   "HyperfocalDistance, DOF, FOV, LightValue): its sensor rules, CoC d/1440, thin lens from the lens "
+                   "(not with --model, --distance-from, --coc-rule).")
 @model_options
 def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_rule, pixel_pitch, distance_from,
-         model, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file, fmt, units,
+         model, exiftool, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file, fmt, units,
          preset_files) -> Output:
     """Depth of field, angle of view and exposure of photos, from the metadata the camera wrote.
 
@@ -65,6 +69,7 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
       camtool exif canon_bracket.jpg nikon.jpg
       camtool exif --format json --field near_mm --field far_mm nikon.jpg
       camtool exif canon_bracket.jpg --model thin --distance-from lens --coc-rule d/1440
+      camtool exif --exiftool --format json nikon.jpg
       camtool exif -r . --format csv
     """
     from camtool.exif.reader import ExifUnavailable, UnreadableFile, read_file, require_exiv2
@@ -77,6 +82,8 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     if not paths:
         raise click.UsageError("give at least one FILE (or - to read paths from standard input)", ctx)
     distance, coc = _single(ctx, distance, "distance"), _single(ctx, coc, "coc") if coc else None
+    if exiftool:
+        _only_exiftool(ctx)
     names = [name for path in paths for name in (_stdin_names() if path == "-" else [path])]
     found = photo.photo_files(names, recursive=recursive)
     answers = [photo.unreadable_answer(path, reason) for path, reason in found.failed]
@@ -96,7 +103,8 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
                 pixel_pitch_mm=pixel_pitch[0] if isinstance(pixel_pitch, list) else pixel_pitch,
                 distance_from=distance_from, model=model, tolerance=tolerance, diffraction=diffraction,
                 wavelength_nm=wavelength, pupil_magnification=pupil_mag, hiatus_mm=hiatus,
-                lens_preset=ctx.meta.get(LENS), presets=index, **settings)
+                lens_preset=ctx.meta.get(LENS), presets=index, convention="exiftool" if exiftool else "camtool",
+                **settings)
         _warn(answer)
         answers.append(answer)
     if not all(answer.ok for answer in answers):
@@ -149,6 +157,16 @@ def _single(ctx: click.Context, value: Any, name: str) -> float | None:
     if len(values) > 1:
         raise click.BadParameter(f"one value per run here, not {len(values)}", ctx=ctx, param=param_named(ctx, name))
     return values[0] if values else None
+
+
+def _only_exiftool(ctx: click.Context) -> None:
+    """Refuse the options --exiftool fixes (its model, plane and CoC rule), when given too."""
+    from click.core import ParameterSource
+
+    for name in ("model", "distance_from", "coc_rule", "pixel_pitch"):
+        if ctx.get_parameter_source(name) not in (ParameterSource.DEFAULT, None):
+            param = param_named(ctx, name)
+            raise click.UsageError(f"--exiftool fixes what {param.opts[-1] if param else name} sets: give one", ctx)
 
 
 def _exit_one() -> None:
