@@ -9,7 +9,8 @@ Two references, both independent of camtool:
 - ``exiftool -j -n -Composite:all`` run now on those files and on the test
   images of tests/data/exif (made by make_images.py there); skipped when
   ``exiftool`` is not installed (``.ci/run`` installs Debian's
-  libimage-exiftool-perl).
+  libimage-exiftool-perl), and on the maker-note files of
+  tests/test_exif_makers.py (Canon ShotInfo, Nikon, Olympus, Minolta, Casio).
 
 A composite ExifTool gives and camtool does not is a disagreement; one camtool
 gives and ExifTool does not is not counted (camtool's own mode goes further on
@@ -126,8 +127,10 @@ def test_recorded_exiftool_composites_of_real_camera_files() -> None:
 
 
 @pytest.mark.skipif(shutil.which("exiftool") is None, reason="exiftool is not installed")
-def test_live_exiftool_on_camera_files_and_test_images() -> None:
-    paths = [*CAMERA, *OURS]
+def test_live_exiftool_on_camera_files_and_test_images(tmp_path: Path) -> None:
+    from tests.test_exif_makers import maker_files
+
+    paths = [*CAMERA, *OURS, *maker_files(tmp_path)]
     output = subprocess.run(["exiftool", "-j", "-n", "-Composite:all", *map(str, paths)], capture_output=True,
                             text=True, timeout=300, check=False).stdout
     composites = {entry["SourceFile"]: entry for entry in json.loads(output)}

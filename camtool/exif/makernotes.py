@@ -173,6 +173,21 @@ def casio_object_distance_mm(raw: int, type2: bool) -> float | None:
     return float(value)
 
 
+def minolta_iso(code: float) -> float:
+    """Minolta camera-settings ISO (MinoltaCsNew/MinoltaCsOld, index 8): 2^((code − 48)/8) · 100.
+
+    References
+    ----------
+    ExifTool Minolta tags, CameraSettings ISO: ``2 ** (($val-48)/8) * 100``.
+
+    Examples
+    --------
+    >>> minolta_iso(48), minolta_iso(56)
+    (100.0, 200.0)
+    """
+    return 2.0 ** ((max(min(float(code), 4096.0), -4096.0) - 48.0) / 8.0) * 100.0
+
+
 CANON_CAMERA_ISO = {16: 50.0, 17: 100.0, 18: 200.0, 19: 400.0, 20: 800.0}
 """Canon CameraSettings CameraISO codes (ExifTool Canon ``CameraISO``; 15 is Auto, 0 n/a)."""
 

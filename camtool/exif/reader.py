@@ -195,7 +195,8 @@ _WANTED = frozenset({
     "Exif.NikonLd2.FocusDistance", "Exif.NikonLd3.FocusDistance", "Exif.NikonLd4.FocusDistance",
     "Exif.OlympusFi.FocusDistance", "Exif.CanonCs.Lens", "Exif.Canon.LensModel", "Exif.Nikon3.Lens",
     "Exif.Photo.ExposureIndex", "Exif.CanonCs.ISOSpeed", "Exif.CanonSi.ISOSpeed", "Exif.CanonSi.AutoISO",
-    "Exif.Nikon3.ISOSpeed", "Exif.Casio2.ISO", "Exif.Samsung2.ISO", "Exif.CanonSi.0x0014",
+    "Exif.Nikon3.ISOSpeed", "Exif.Casio2.ISO", "Exif.Samsung2.ISO",
+    "Exif.MinoltaCsNew.ISO", "Exif.MinoltaCsOld.ISO", "Exif.CanonSi.0x0014",
     "Exif.CanonPi.ImageWidth", "Exif.CanonPi.ImageHeight", "Exif.Canon.FocalLength", "Exif.CanonCs.FocalUnits",
     "Exif.CanonCs.DigitalZoom", "Exif.CanonCs.ZoomSourceWidth", "Exif.CanonCs.ZoomTargetWidth",
     "Exif.Olympus.FocalPlaneDiagonal", "Exif.OlympusEq.FocalPlaneDiagonal", "Exif.Nikon3.SensorPixelSize",
@@ -291,7 +292,11 @@ def read_file(path: str) -> Reading:
     except UnreadableFile:
         raise
     except exiv2.Exiv2Error as error:
-        raise UnreadableFile(_reason(error)) from None
+        reason = _reason(error)
+        suffix = os.path.splitext(path)[1].lower()
+        if reason == NOT_READ or suffix == ".x3f":
+            reason += _FORMAT_NOTES.get(suffix, "")
+        raise UnreadableFile(reason) from None
     except OSError as error:
         raise UnreadableFile(error.strerror or str(error)) from None
     except (ValueError, OverflowError, MemoryError, RuntimeError, UnicodeError) as error:
@@ -326,9 +331,9 @@ class _Tags:
         # ISOSpeedRatings is a 16-bit field: cameras write 65535 for ISO 65535 and above and put the value in
         # StandardOutputSensitivity or RecommendedExposureIndex (Exif 2.3, SensitivityType)
         self.number("iso", "iso", "Exif.Photo.ISOSpeedRatings", skip=lambda iso: iso >= 65535)
-        self.number("iso", "iso", "Exif.Photo.StandardOutputSensitivity", "Exif.Photo.RecommendedExposureIndex",
-                    "Exif.Photo.ExposureIndex")
+        self.number("iso", "iso", "Exif.Photo.StandardOutputSensitivity", "Exif.Photo.RecommendedExposureIndex")
         self.maker_iso()
+        self.number("iso", "iso", "Exif.Photo.ExposureIndex")
         iso_tag = self.integer("iso", "Exif.Photo.ISOSpeedRatings")
         if iso_tag and outside("iso", iso_tag) is None:
             self.fields["iso_speed_ratings"] = float(iso_tag)
@@ -440,7 +445,7 @@ class _Tags:
         return True
 
     def maker_iso(self) -> None:
-        """ISO from the maker note when Exif records none: Canon, Nikon, Casio, Samsung (ExifTool's ISO tags)."""
+        """ISO from the maker note when Exif records none: Canon, Nikon, Casio, Samsung, Minolta (ExifTool's ISO tags)."""
         if "iso" in self.fields:
             return
         camera = self.integer("iso", "Exif.CanonCs.ISOSpeed")
@@ -461,6 +466,10 @@ class _Tags:
         for key in ("Exif.Casio2.ISO", "Exif.Samsung2.ISO"):
             iso = self.value("iso", key)
             if iso and self.accept("iso", "iso", key, iso):
+                return
+        for key in ("Exif.MinoltaCsNew.ISO", "Exif.MinoltaCsOld.ISO"):
+            code = self.value("iso", key)
+            if code and self.accept("iso", "iso", key, makernotes.minolta_iso(code)):
                 return
 
     def canon_focal_length(self) -> None:
@@ -734,12 +743,20 @@ def _short(key: str) -> str:
     return key[5:] if key.startswith("Exif.") else key
 
 
+NOT_READ = "not an image libexiv2 can read"
+_BMFF = ": an ISO BMFF file, which libexiv2 reads only when built with BMFF support"
+_FORMAT_NOTES = {".x3f": " (Sigma X3F is not among libexiv2's formats)", ".cr3": f" (Canon CR3{_BMFF})",
+                 ".heic": f" (HEIF{_BMFF})", ".heif": f" (HEIF{_BMFF})", ".avif": f" (AVIF{_BMFF})",
+                 ".jxl": f" (JPEG XL{_BMFF})"}
+"""Why a file of a known photo format may not be read, added to :data:`NOT_READ` by its suffix."""
+
+
 def _reason(error: Exception) -> str:
     text = printable(str(getattr(error, "message", "") or error).strip())
     message = text.split("\\n")[0] if text else type(error).__name__
     lowered = message.lower()
     if "unknown image type" in lowered or "not an image" in lowered or "supported" in lowered:
-        return "not an image libexiv2 can read"
+        return NOT_READ
     if "failed to open" in lowered or "no such file" in lowered:
         return "cannot be opened"
     if any(word in lowered for word in ("corrupt", "eof", "truncat", "exceeds", "failed to read")):
