@@ -50,19 +50,24 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
          preset_files) -> Output:
     """Depth of field, angle of view and exposure of photos, from the metadata the camera wrote.
 
-    One row per FILE (JPEG, TIFF, HEIC and raw files: whatever libexiv2 reads);
+    One row per FILE (JPEG, TIFF, HEIC, AVIF, CR3 and raw files: whatever
+    libexiv2 reads; a file it cannot read gets one line saying why);
     - reads a list of paths from stdin, one per line. Focal length, f-number,
-    shutter time and ISO come from Exif; the sensor size from the focal-plane
-    resolution, else the 35 mm-equivalent focal length, else a camera preset
-    matching Make and Model; the focus distance from the maker note (Canon,
-    Nikon, Olympus) or Exif SubjectDistance. Each *_source key names the tag
-    used; a value the file lacks is null and named on stderr. --lens, --camera,
-    --sensor/--crop and -s override what the file says. A file that cannot be
-    read, or is not a regular file, gives a row of nulls and a line on stderr,
-    and the exit status is 1; so does a value outside the range of its option
-    (f/65288), named with its tag on that line, the rest of the row computed.
-    Control characters in file names and tags are escaped (\\x1b, \\n).
-    Needs the exif extra: pip install 'camtool[exif]'. See docs/exif.md.
+    shutter time and ISO come from Exif or the maker note; the sensor size from
+    the focal-plane resolution, else the maker note (Canon, Olympus, Nikon),
+    else the 35 mm-equivalent focal length, else a camera preset matching Make
+    and Model; the focus distance from the maker note (Canon, Nikon, Olympus,
+    Minolta, Casio) or Exif SubjectDistance. Each *_source key names the tag
+    used; a value the file lacks is null and named on stderr; where an answer
+    rests on a guess (a resized or cropped file, an inferred sensor) the
+    warnings key and the stderr line say what was assumed. --exiftool answers
+    as ExifTool's composite tags do. --lens, --camera, --sensor/--crop and -s
+    override what the file says. A file that cannot be read, or is not a
+    regular file, gives a row of nulls and a line on stderr, and the exit
+    status is 1; so does a value outside the range of its option (f/65288),
+    named with its tag on that line, the rest of the row computed. Control
+    characters in file names and tags are escaped (\\x1b, \\n). Needs the
+    exif extra: pip install 'camtool[exif]'. See docs/exif.md.
 
     \b
     Examples:

@@ -468,7 +468,7 @@ class _Tags:
             if iso and self.accept("iso", "iso", key, iso):
                 return
         for key in ("Exif.MinoltaCsNew.ISO", "Exif.MinoltaCsOld.ISO"):
-            code = self.value("iso", key)
+            code = self.integer("iso", key)
             if code and self.accept("iso", "iso", key, makernotes.minolta_iso(code)):
                 return
 
