@@ -207,7 +207,7 @@ _SUBIMAGE = re.compile(r"Exif\.SubImage\d+\.(ImageWidth|ImageLength|NewSubfileTy
 
 
 def _wanted(key: str) -> bool:
-    return key in _WANTED or _SUBIMAGE.fullmatch(key) is not None
+    return key in _WANTED or (key.startswith("Exif.SubImage") and _SUBIMAGE.fullmatch(key) is not None)
 
 MAX_BUFFER_BYTES = 1 << 30
 """Largest file read into memory (only for a name libexiv2 cannot be given: one that is not UTF-8)."""
@@ -219,6 +219,17 @@ def _exiv2() -> Any:
     except ImportError:
         raise ExifUnavailable("camtool exif needs python-exiv2: pip install 'camtool[exif]' (or pip install exiv2)") \
             from None
+    if id(exiv2) not in _READY:
+        _setup(exiv2)
+        _READY.add(id(exiv2))
+    return exiv2
+
+
+_READY: set[int] = set()
+"""The python-exiv2 modules already set up (once per process: the setup costs more than reading a small file)."""
+
+
+def _setup(exiv2: Any) -> None:
     # our own one-line messages replace libexiv2's warnings on stderr
     exiv2.LogMsg.setLevel(exiv2.LogMsg.Level.mute)
     # CR3, HEIF and AVIF are ISO BMFF files, which libexiv2 0.27.4 to 0.27.x reads only once told to; from
@@ -228,7 +239,6 @@ def _exiv2() -> Any:
         with warnings.catch_warnings(), contextlib.suppress(Exception):
             warnings.simplefilter("ignore")
             enable(True)
-    return exiv2
 
 
 def require_exiv2() -> None:

@@ -526,14 +526,19 @@ def _hyperfocal(row: dict[str, Any], f: float, n: float, c: float, model: str, d
     """
     from camtool.core.errors import DomainError
     from camtool.dof.closed import hyperfocal_mm
-    from camtool.dof.ladder import ModelUnavailable, hyperfocal, hyperfocal_choices
+    from camtool.dof.ladder import LensData, ModelUnavailable, depth_of_field, hyperfocal_choices, hyperfocal_rung
 
     try:
         if exiftool:
             row["hyperfocal_mm"] = hyperfocal_mm(f, n, c, plus_f=False)
         elif row["hyperfocal_mm"] is None:
-            rung = model if model in hyperfocal_choices() else "auto"
-            row["hyperfocal_mm"] = hyperfocal(rung, f, n, c, distance_from, lens).hyperfocal_mm
+            # camtool.dof.ladder.hyperfocal's H: the limits of a focus at infinity by the closed-form rung, with
+            # the lens's pupil magnification and hiatus only (its near limit at H is not needed here)
+            rung = model if model in hyperfocal_choices() and model != "auto" else hyperfocal_rung(lens)
+            known = None if lens is None else lens.thick_parameters()
+            p, delta = known if known is not None else (1.0, 0.0)
+            data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
+            row["hyperfocal_mm"] = depth_of_field(rung, f, n, c, math.inf, distance_from, lens=data).limits.hyperfocal_mm
     except (DomainError, ModelUnavailable, ValueError) as error:
         missing.append(Problem(f"no hyperfocal distance ({_one_line(error)})"))
 
