@@ -11,7 +11,8 @@
    ``camtool exif --exiftool -r DIR --format json`` (ExifTool's composites),
    and by ExifTool itself computing the same composites,
    ``exiftool -j -n -Composite:all -r DIR`` and its fastest form with
-   ``-fast2`` (no maker notes: an upper bound on ExifTool's speed). Runs are
+   ``-fast2`` (no maker notes: an upper bound on ExifTool's speed), and the
+   camtool of ``--before`` for the change. Runs are
    interleaved, best of ``--exiftool-repeat``; the ratios are to the fastest
    ExifTool run, wall-clock and CPU time (the machine may be shared).
 3. Start-up: ``camtool dof -f 50 -N 8 -s 3m --format json`` of this tree
@@ -71,26 +72,31 @@ def throughput(files: int) -> None:
     print(f"| reading alone (`read_file`, in-process) | {reading:.2f} s | {files / reading:.0f} files/s |")
 
 
-def _timed(argv: list[str]) -> tuple[float, float]:
+def _timed(argv: list[str], cwd: Path = ROOT) -> tuple[float, float]:
     """Wall-clock and CPU seconds (this child's user + system) of one run, output discarded."""
     before = os.times()
     start = time.perf_counter()
-    subprocess.run(argv, check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT)
+    subprocess.run(argv, check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=cwd)
     wall = time.perf_counter() - start
     after = os.times()
     return wall, (after.children_user - before.children_user) + (after.children_system - before.children_system)
 
 
-def against_exiftool(files: int, repeat: int) -> None:
+def against_exiftool(files: int, repeat: int, before: str | None) -> None:
     exiftool = shutil.which("exiftool")
     if exiftool is None:
         print("\nexiftool is not installed: the comparison with ExifTool is skipped")
         return
     version = subprocess.run([exiftool, "-ver"], capture_output=True, text=True, check=True).stdout.strip()
-    with tempfile.TemporaryDirectory() as tmp:
+    with tempfile.TemporaryDirectory() as tmp, tempfile.TemporaryDirectory() as old:
         for i in range(files):
             shutil.copyfile(DATA / IMAGES[i % len(IMAGES)], Path(tmp) / f"img{i:05d}.jpg")
-        cases = {
+        cases: dict[str, tuple[list[str], Path]] = {}
+        if before:
+            export(before, Path(old))
+            cases[f"camtool exif -r DIR --format json ({before})"] = (
+                [PY, "-m", "camtool", "exif", "-r", tmp, "--format", "json"], Path(old))
+        commands = {
             "camtool exif -r DIR --format json": [PY, "-m", "camtool", "exif", "-r", tmp, "--format", "json"],
             "camtool exif --exiftool -r DIR --format json": [PY, "-m", "camtool", "exif", "--exiftool", "-r", tmp,
                                                              "--format", "json"],
@@ -98,12 +104,13 @@ def against_exiftool(files: int, repeat: int) -> None:
             f"exiftool {version} -fast2 -j -n -Composite:all -r DIR": [exiftool, "-fast2", "-j", "-n",
                                                                        "-Composite:all", "-r", tmp],
         }
-        for argv in cases.values():  # warm-up: byte-code, caches, the page cache
-            _timed(argv)
+        cases.update({name: (argv, ROOT) for name, argv in commands.items()})
+        for argv, cwd in cases.values():  # warm-up: byte-code, caches, the page cache
+            _timed(argv, cwd)
         best: dict[str, tuple[float, float]] = dict.fromkeys(cases, (math.inf, math.inf))
         for _ in range(repeat):
-            for name, argv in cases.items():
-                wall, cpu = _timed(argv)
+            for name, (argv, cwd) in cases.items():
+                wall, cpu = _timed(argv, cwd)
                 best[name] = (min(best[name][0], wall), min(best[name][1], cpu))
     fastest = min((value for name, value in best.items() if name.startswith("exiftool")), key=lambda v: v[0])
     print(f"\n{files} files, best of {repeat} (interleaved)\n")
@@ -159,7 +166,7 @@ def main() -> None:
     print("| run | time | rate |\n|---|---:|---:|")
     throughput(args.files)
     if args.against_exiftool:
-        against_exiftool(args.against_exiftool, args.exiftool_repeat)
+        against_exiftool(args.against_exiftool, args.exiftool_repeat, args.before)
     if not args.skip_startup:
         startup(args.repeat, args.before)
 

@@ -117,3 +117,11 @@ def test_warnings_name_what_was_assumed() -> None:
     # a sensor given by the caller is no guess
     given = photo_answer(_reading(), path="a.jpg", sensor_mm=(36.0, 24.0))
     assert given.warnings == () and given.values["warnings"] is None
+
+
+def test_a_raw_file_is_not_called_resized() -> None:
+    # libexiv2's pixel size of a raw file may be its embedded preview's: no resize warning for one
+    reading = _reading(pixels_w=6000, pixels_h=4000, stored_w=160, stored_h=120,
+                       sources={"pixels": "Photo.PixelXDimension/PixelYDimension"})
+    assert any("resized" in w for w in photo_answer(reading, path="a.JPG").warnings)
+    assert not any("resized" in w for w in photo_answer(reading, path="a.CR2").warnings)

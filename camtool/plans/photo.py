@@ -53,6 +53,9 @@ IMAGE_SUFFIXES = frozenset({
     ".x3f", ".mrw", ".3fr", ".erf", ".kdc", ".mef", ".mos", ".iiq", ".rwl", ".exv",
 })
 """The file name suffixes (lower case) a directory walk reads: images and raw files."""
+RAW_SUFFIXES = IMAGE_SUFFIXES - {".jpg", ".jpeg", ".jpe", ".tif", ".tiff", ".heic", ".heif", ".avif", ".png", ".webp",
+                                 ".jxl", ".exv"}
+"""The raw files among them (a DNG too): their pixel size as libexiv2 reports it may be a preview's."""
 
 
 class PhotoFiles(NamedTuple):
@@ -270,7 +273,7 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
         row["sensor_width_mm"], row["sensor_height_mm"] = size.width_mm, size.height_mm
         row["crop_factor"], row["sensor_source"] = size.crop_factor, size.source
     if sensor_mm is None:
-        warnings.extend(_size_warnings(reading, size))
+        warnings.extend(_size_warnings(reading, size, os.path.splitext(path)[1].lower() in RAW_SUFFIXES))
 
     c = _coc(row, coc_mm, given.get("coc_mm", "coc_mm"), coc_rule, pixel_pitch_mm, size, reading, missing, unusable)
     if f is None and "focal_length_mm" not in named:
@@ -358,14 +361,18 @@ def _exiftool_distances(reading: Reading) -> tuple[float | None, float | None, s
     return None, None, None
 
 
-def _size_warnings(reading: Reading, size: SensorSize | None) -> list[str]:
-    """What a file's sizes say was assumed: a resized or cropped image, a sensor inferred rather than recorded."""
+def _size_warnings(reading: Reading, size: SensorSize | None, raw: bool) -> list[str]:
+    """What a file's sizes say was assumed: a resized or cropped image, a sensor inferred rather than recorded.
+
+    A raw file is not taken as resized: the pixel size libexiv2 reports for
+    one may be that of an embedded preview.
+    """
     from camtool.exif.reader import show
 
     warnings: list[str] = []
     w, h, stored_w, stored_h = reading.pixels_w, reading.pixels_h, reading.stored_w, reading.stored_h
     pixels_source = reading.sources.get("pixels", "")
-    if w and h and stored_w and stored_h and pixels_source != "image size" and \
+    if not raw and w and h and stored_w and stored_h and pixels_source != "image size" and \
             max(stored_w, stored_h) < 0.95 * max(w, h):
         warnings.append(f"the file holds {stored_w}×{stored_h} px where its metadata ({pixels_source}) give {w}×{h}: "
                         f"a resized copy or a preview; the sensor, CoC and angles are for the camera's {w}×{h} frame")
