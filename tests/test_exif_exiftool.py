@@ -122,7 +122,7 @@ def test_recorded_exiftool_composites_of_real_camera_files() -> None:
     composites = {str(SAMPLES / entry["SourceFile"]): entry for entry in recorded}
     rows = camtool_rows([Path(path) for path in composites])
     total, wrong = agreement(rows, composites)
-    assert total >= 80  # the README's 20 files give 87 comparisons
+    assert total >= 80  # the 20 files give 80 comparisons
     assert not wrong, f"{total - len(wrong)} of {total} agree:\n" + "\n".join(wrong)
 
 
