@@ -306,7 +306,7 @@ def test_readme_examples_run() -> None:
     section = text.split("## Photos: what depth of field did I have?", 1)[1].split("\n## ", 1)[0]
     block = section.split("```sh\n", 1)[1].split("```", 1)[0]
     lines = [line for line in block.splitlines() if line.strip()]
-    assert len(lines) == 4
+    assert len(lines) == 5
     for line in lines:
         done = subprocess.run(["bash", "-c", line.replace("camtool ", f"{sys.executable} -m camtool ")], cwd=root,
                               capture_output=True, text=True)

@@ -282,6 +282,7 @@ CHECKS = {
     "focus_distance_min_mm": ranges.DISTANCE_MM, "focus_distance_max_mm": ranges.DISTANCE_MM,
     "near_mm": ranges.DISTANCE_MM, "far_mm": ranges.DISTANCE_MM, "hyperfocal_mm": ranges.DISTANCE_MM,
     "horizontal_deg": (0.0, 180.0), "vertical_deg": (0.0, 180.0), "diagonal_deg": (0.0, 180.0),
+    "field_width_mm": ranges.DISTANCE_MM, "ev100": (-100.0, 100.0),
 }
 
 
@@ -325,8 +326,85 @@ def test_every_hostile_file_gives_one_line(path: Path) -> None:
 
 @pytest.mark.skipif(not HOSTILE, reason="../shared/reference/exif-samples is not there")
 def test_the_hostile_files_together_in_every_format() -> None:
-    for args in (("--format", "json"), ("--format", "csv"), ("--format", "table"), ("--field", "file", "--field", "lens")):
+    for args in (("--format", "json"), ("--format", "csv"), ("--format", "table"), ("--field", "file", "--field", "lens"),
+                 ("--exiftool", "--format", "json")):
         assert defects(HOSTILE, args) == [], args
+
+
+# Maker-note values at their edges, for every maker-note tag the reader takes: each file must still be
+# answered on one line, every number in its range (or left out and named).
+U16, U32 = 0xFFFF, 0xFFFFFFFF
+MAKER_EDGES: dict[str, list[tuple[str, Any]]] = {
+    "canon_units0": [("Exif.Canon.FocalLength", exiv2.UShortValue([2, U16, U16, 1])),
+                     ("Exif.CanonCs.Lens", exiv2.UShortValue([0, 0, 0]))],
+    "canon_iso_edges": [("Exif.Photo.ISOSpeedRatings", IMAGES.ushort(0)), ("Exif.CanonCs.ISOSpeed", IMAGES.ushort(0x7FFF)),
+                        ("Exif.CanonSi.ISOSpeed", IMAGES.ushort(U16)), ("Exif.CanonSi.AutoISO", IMAGES.ushort(0x7FFF))],
+    "canon_iso_flag": [("Exif.Photo.ISOSpeedRatings", IMAGES.ushort(0)), ("Exif.CanonCs.ISOSpeed", IMAGES.ushort(0x4000))],
+    "canon_brackets": [("Exif.Photo.SubjectDistance", IMAGES.rational(0)),
+                       ("Exif.CanonSi.SubjectDistance", IMAGES.ushort(1)), ("Exif.CanonSi.0x0014", IMAGES.ushort(U16)),
+                       ("Exif.CanonCs.DigitalZoom", IMAGES.ushort(3)), ("Exif.CanonCs.ZoomSourceWidth", IMAGES.ushort(1)),
+                       ("Exif.CanonCs.ZoomTargetWidth", IMAGES.ushort(U16))],
+    "canon_plane_rule": [("Exif.Photo.FocalPlaneXResolution", IMAGES.rational(9999000, 1499)),
+                         ("Exif.Photo.FocalPlaneYResolution", IMAGES.rational(480000, 61)),
+                         ("Exif.Photo.PixelXDimension", exiv2.ULongValue([U32])),
+                         ("Exif.Photo.PixelYDimension", exiv2.ULongValue([1])),
+                         ("Exif.CanonPi.ImageWidth", IMAGES.ushort(U16)), ("Exif.CanonPi.ImageHeight", IMAGES.ushort(0))],
+    "nikon_edges": [("Exif.Image.Make", "NIKON CORPORATION"), ("Exif.Photo.ISOSpeedRatings", IMAGES.ushort(0)),
+                    ("Exif.Photo.FocalLengthIn35mmFilm", IMAGES.ushort(0)),
+                    ("Exif.Nikon3.ISOSpeed", exiv2.UShortValue([U16, U16])),
+                    ("Exif.Nikon3.SensorPixelSize", exiv2.URationalValue([(U32, 1), (0, 0)]))],
+    "olympus_edges": [("Exif.Image.Make", "OLYMPUS CORPORATION"), ("Exif.Photo.FocalLengthIn35mmFilm", IMAGES.ushort(0)),
+                      ("Exif.Olympus.FocalPlaneDiagonal", IMAGES.rational(U32, 1)),
+                      ("Exif.Photo.SubjectDistance", IMAGES.rational(U32, 1))],
+    "olympus_zero": [("Exif.Image.Make", "OLYMPUS CORPORATION"), ("Exif.Photo.FocalLengthIn35mmFilm", IMAGES.ushort(0)),
+                     ("Exif.Olympus.FocalPlaneDiagonal", IMAGES.rational(0, 0))],
+    "minolta_edges": [("Exif.Image.Make", "Minolta Co., Ltd."), ("Exif.Photo.SubjectDistance", IMAGES.rational(0)),
+                      ("Exif.Photo.ISOSpeedRatings", IMAGES.ushort(0)),
+                      ("Exif.MinoltaCsNew.ISO", exiv2.ULongValue([U32])),
+                      ("Exif.MinoltaCsNew.FocusDistance", exiv2.ULongValue([U32]))],
+    "casio_edges": [("Exif.Image.Make", "CASIO COMPUTER CO.,LTD."), ("Exif.Photo.SubjectDistance", IMAGES.rational(0)),
+                    ("Exif.Photo.ISOSpeedRatings", IMAGES.ushort(0)), ("Exif.Casio2.ISO", IMAGES.ushort(U16)),
+                    ("Exif.Casio2.ObjectDistance", exiv2.ULongValue([0x1FFFFFFF]))],
+    "exposure_index_zero": [("Exif.Photo.ISOSpeedRatings", IMAGES.ushort(0)), ("Exif.Photo.ExposureIndex", IMAGES.rational(0, 0))],
+}
+
+
+def maker_edge_files(folder: Path) -> list[Path]:
+    return [image(folder / f"{name}.jpg", tags) for name, tags in MAKER_EDGES.items()]
+
+
+def test_maker_note_edges(tmp_path: Path) -> None:
+    paths = maker_edge_files(tmp_path)
+    for args in (("--format", "json"), ("--exiftool", "--format", "json")):
+        assert defects(paths, args) == [], args
+
+
+BOUND_SECONDS, BOUND_BYTES = 30, 1 << 31
+
+
+def _bounded() -> None:
+    """In the child, before exec: at most 2 GiB of address space and 30 s of CPU."""
+    import resource
+
+    resource.setrlimit(resource.RLIMIT_AS, (BOUND_BYTES, BOUND_BYTES))
+    resource.setrlimit(resource.RLIMIT_CPU, (BOUND_SECONDS, BOUND_SECONDS))
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs resource limits in a child process")
+def test_each_hostile_file_alone_within_time_and_memory_bounds(tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    paths = [*HOSTILE, *maker_edge_files(tmp_path)]
+    for path in paths:
+        for mode in ((), ("--exiftool",)):
+            done = subprocess.run([sys.executable, "-m", "camtool", "exif", *mode, "--format", "json", str(path)],
+                                  capture_output=True, text=True, timeout=BOUND_SECONDS * 2, preexec_fn=_bounded,
+                                  env={**os.environ, "XDG_CACHE_HOME": str(tmp_path / "cache")}, check=False)
+            assert done.returncode in (0, 1), (path.name, mode, done.stderr[-500:])
+            assert "Traceback" not in done.stderr and len(done.stderr.splitlines()) <= 1, (path.name, done.stderr)
+            (row,) = json.loads(done.stdout)
+            assert row["file"] == str(path)
 
 
 @pytest.mark.skipif(not CAMERA, reason="../shared/reference/exif-samples is not there")

@@ -113,3 +113,39 @@ def test_exif_subject_distance() -> None:
     assert makernotes.exif_subject_distance_mm(35, 10) == 3500.0
     assert makernotes.exif_subject_distance_mm(0xFFFFFFFF, 1) == math.inf
     assert makernotes.exif_subject_distance_mm(0, 1) is None
+
+
+# ExifTool Casio ObjectDistance (0x0006; type 2 0x2022): ValueConv '$val / 1000' (m); type 2 >= 0x20000000: inf
+@pytest.mark.parametrize(("key", "raw"), [("Exif.Casio.ObjectDistance", 1850), ("Exif.Casio2.ObjectDistance", 1850),
+                                          ("Exif.Casio2.ObjectDistance", 12345)])
+def test_casio_agrees_with_exiv2(key: str, raw: int, tmp_path: Path) -> None:
+    make = "CASIO COMPUTER CO.,LTD." if "Casio2" in key else "CASIO"
+    printed = _printed([("Exif.Image.Make", make), (key, exiv2.ULongValue([raw]))], key, tmp_path)
+    value = makernotes.casio_object_distance_mm(raw, "Casio2" in key)
+    assert printed == f"{value / 1000:.2f} m"
+    assert makernotes.casio_object_distance_mm(0x20000000, True) == math.inf
+    assert makernotes.casio_object_distance_mm(0x20000000, False) == 0x20000000
+
+
+# ExifTool Canon CameraISO: 16..20 are 50..800, bit 14 set carries the ISO in the low 14 bits; ShotInfo BaseISO
+# exp(val/32·ln 2)·100/32 (and AutoISO exp(val/32·ln 2)·100, so 0 is ×1)
+@pytest.mark.parametrize(("key", "raw", "camera", "base"),
+                         [("Exif.CanonCs.ISOSpeed", 17, 17, None), ("Exif.CanonCs.ISOSpeed", 0x4000 | 3200, 0x4000 | 3200,
+                                                                      None),
+                          ("Exif.CanonSi.ISOSpeed", 128, None, 128), ("Exif.CanonSi.ISOSpeed", 160, None, 160)])
+def test_canon_iso_agrees_with_exiv2(key: str, raw: int, camera: int | None, base: int | None, tmp_path: Path) -> None:
+    printed = _printed([("Exif.Image.Make", "Canon"), (key, exiv2.UShortValue([raw]))], key, tmp_path)
+    assert makernotes.canon_iso(camera, base, 0) == pytest.approx(float(printed), rel=1e-12)
+
+
+def test_canon_auto_iso_and_minolta_iso_by_exiftools_formulas() -> None:
+    # BaseISO 160 -> 2^5·100/32 = 100; AutoISO 32 -> 2^1·100 = 200 %: ISO 200
+    assert makernotes.canon_iso(15, 160, 32) == pytest.approx(200.0, rel=1e-15)
+    # Minolta CameraSettings ISO: 2^((val − 48)/8)·100; 72 is 800
+    assert makernotes.minolta_iso(72) == pytest.approx(800.0, rel=1e-15)
+
+
+def test_nikon_z_code_is_the_f_mount_code_times_256() -> None:
+    # ExifTool LensData0800 0x4e FocusDistance: int16u, RawConv $val/256, then 0.01·10^(val/40) m
+    assert makernotes.nikon_focus_distance_mm(100 * 256 / 256) == makernotes.nikon_focus_distance_mm(100)
+    assert makernotes.nikon_focus_distance_mm(20480 / 256) == pytest.approx(1000.0, rel=1e-12)  # 80: 1 m

@@ -88,7 +88,7 @@ class _Columns:
             for opt in param.opts:
                 self.aliases[_loose(opt)] = (param.name, None)
             self.aliases[_loose(param.name)] = (param.name, None)
-        for key, target in _KEY_ALIASES.items():
+        for key, target in {**_KEY_ALIASES, **EXIFTOOL_COLUMNS}.items():
             if target[0] in self.params:
                 self.aliases.setdefault(_loose(key), target)
         self.ignored = {_loose(key) for key in getattr(command, "output_keys", frozenset())}
@@ -123,6 +123,12 @@ class _Columns:
 # Output keys that feed back in as inputs (camtool's CSV is a valid batch file).
 _KEY_ALIASES = {"focal_length_mm": ("focal_length", "mm"), "distance_mm": ("distance", "mm"),
                 "near_mm": ("near", "mm"), "far_mm": ("far", "mm"), "coc_mm": ("coc", "mm")}
+# exiftool's own column names (`exiftool -n -csv`: distances in metres, the CoC in mm); FocalLength and FNumber
+# already name options, SourceFile and the others pass through (docs/exif.md, "exiftool's CSV as a batch file").
+EXIFTOOL_COLUMNS = {"FocusDistance": ("distance", None), "SubjectDistance": ("distance", None),
+                    "ObjectDistance": ("distance", None), "ApproximateFocusDistance": ("distance", None),
+                    "ScaleFactor35efl": ("crop", None), "Aperture": ("f_number", None),
+                    "CircleOfConfusion": ("coc", "mm")}
 
 
 def _convert(ctx: click.Context, param: click.Parameter, cell: str, unit: str | None, number: int,

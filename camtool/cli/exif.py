@@ -40,31 +40,41 @@ COLUMNS = [Column("file", "file", TEXT), Column("focal_length_mm", "f", SMALL), 
 @click.option("--model", type=click.Choice([m for m in model_choices() if m != "all"]), default="auto", show_default=True,
               help="Depth-of-field model (see camtool dof --help); --model thin --distance-from lens "
                    "--coc-rule d/1440 gives ExifTool's Composite:DOF.")
+@click.option("--exiftool", is_flag=True,
+              help="Answer as ExifTool 12.57's composite tags (ScaleFactor35efl, CircleOfConfusion, "
+                   "HyperfocalDistance, DOF, FOV, LightValue): its sensor rules, CoC d/1440, thin lens from the lens "
+                   "(not with --model, --distance-from, --coc-rule).")
 @model_options
 def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_rule, pixel_pitch, distance_from,
-         model, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file, fmt, units,
+         model, exiftool, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file, fmt, units,
          preset_files) -> Output:
     """Depth of field, angle of view and exposure of photos, from the metadata the camera wrote.
 
-    One row per FILE (JPEG, TIFF, HEIC and raw files: whatever libexiv2 reads);
+    One row per FILE (JPEG, TIFF, HEIC, AVIF, CR3 and raw files: whatever
+    libexiv2 reads; a file it cannot read gets one line saying why);
     - reads a list of paths from stdin, one per line. Focal length, f-number,
-    shutter time and ISO come from Exif; the sensor size from the focal-plane
-    resolution, else the 35 mm-equivalent focal length, else a camera preset
-    matching Make and Model; the focus distance from the maker note (Canon,
-    Nikon, Olympus) or Exif SubjectDistance. Each *_source key names the tag
-    used; a value the file lacks is null and named on stderr. --lens, --camera,
-    --sensor/--crop and -s override what the file says. A file that cannot be
-    read, or is not a regular file, gives a row of nulls and a line on stderr,
-    and the exit status is 1; so does a value outside the range of its option
-    (f/65288), named with its tag on that line, the rest of the row computed.
-    Control characters in file names and tags are escaped (\\x1b, \\n).
-    Needs the exif extra: pip install 'camtool[exif]'. See docs/exif.md.
+    shutter time and ISO come from Exif or the maker note; the sensor size from
+    the focal-plane resolution, else the maker note (Canon, Olympus, Nikon),
+    else the 35 mm-equivalent focal length, else a camera preset matching Make
+    and Model; the focus distance from the maker note (Canon, Nikon, Olympus,
+    Minolta, Casio) or Exif SubjectDistance. Each *_source key names the tag
+    used; a value the file lacks is null and named on stderr; where an answer
+    rests on a guess (a resized or cropped file, an inferred sensor) the
+    warnings key and the stderr line say what was assumed. --exiftool answers
+    as ExifTool's composite tags do. --lens, --camera, --sensor/--crop and -s
+    override what the file says. A file that cannot be read, or is not a
+    regular file, gives a row of nulls and a line on stderr, and the exit
+    status is 1; so does a value outside the range of its option (f/65288),
+    named with its tag on that line, the rest of the row computed. Control
+    characters in file names and tags are escaped (\\x1b, \\n). Needs the
+    exif extra: pip install 'camtool[exif]'. See docs/exif.md.
 
     \b
     Examples:
       camtool exif canon_bracket.jpg nikon.jpg
       camtool exif --format json --field near_mm --field far_mm nikon.jpg
       camtool exif canon_bracket.jpg --model thin --distance-from lens --coc-rule d/1440
+      camtool exif --exiftool --format json nikon.jpg
       camtool exif -r . --format csv
     """
     from camtool.exif.reader import ExifUnavailable, UnreadableFile, read_file, require_exiv2
@@ -77,6 +87,8 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     if not paths:
         raise click.UsageError("give at least one FILE (or - to read paths from standard input)", ctx)
     distance, coc = _single(ctx, distance, "distance"), _single(ctx, coc, "coc") if coc else None
+    if exiftool:
+        _only_exiftool(ctx)
     names = [name for path in paths for name in (_stdin_names() if path == "-" else [path])]
     found = photo.photo_files(names, recursive=recursive)
     answers = [photo.unreadable_answer(path, reason) for path, reason in found.failed]
@@ -96,7 +108,8 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
                 pixel_pitch_mm=pixel_pitch[0] if isinstance(pixel_pitch, list) else pixel_pitch,
                 distance_from=distance_from, model=model, tolerance=tolerance, diffraction=diffraction,
                 wavelength_nm=wavelength, pupil_magnification=pupil_mag, hiatus_mm=hiatus,
-                lens_preset=ctx.meta.get(LENS), presets=index, **settings)
+                lens_preset=ctx.meta.get(LENS), presets=index, convention="exiftool" if exiftool else "camtool",
+                **settings)
         _warn(answer)
         answers.append(answer)
     if not all(answer.ok for answer in answers):
@@ -149,6 +162,16 @@ def _single(ctx: click.Context, value: Any, name: str) -> float | None:
     if len(values) > 1:
         raise click.BadParameter(f"one value per run here, not {len(values)}", ctx=ctx, param=param_named(ctx, name))
     return values[0] if values else None
+
+
+def _only_exiftool(ctx: click.Context) -> None:
+    """Refuse the options --exiftool fixes (its model, plane and CoC rule), when given too."""
+    from click.core import ParameterSource
+
+    for name in ("model", "distance_from", "coc_rule", "pixel_pitch"):
+        if ctx.get_parameter_source(name) not in (ParameterSource.DEFAULT, None):
+            param = param_named(ctx, name)
+            raise click.UsageError(f"--exiftool fixes what {param.opts[-1] if param else name} sets: give one", ctx)
 
 
 def _exit_one() -> None:

@@ -53,7 +53,7 @@ def canon_focus_distance_mm(raw: int) -> float | None:
     return 10.0 * value
 
 
-def nikon_focus_distance_mm(raw: int) -> float:
+def nikon_focus_distance_mm(raw: float) -> float:
     """Nikon lens-data FocusDistance (NikonLd2/NikonLd3 FocusDistance, one byte) in mm.
 
     Formula: d = 0.01 m · 10^(raw/40) = 10 mm · 10^(raw/40): a logarithmic
@@ -63,8 +63,10 @@ def nikon_focus_distance_mm(raw: int) -> float:
 
     Parameters
     ----------
-    raw : int
-        The byte, 0 to 255.
+    raw : float
+        The byte, 0 to 255 (taken modulo 256 if an integer); a fraction for
+        the Z-mount code (its 16-bit value over 256, ExifTool LensData0800
+        0x4e) or for the ends of a byte's quantisation step (raw ± 0.5).
 
     References
     ----------
@@ -79,7 +81,7 @@ def nikon_focus_distance_mm(raw: int) -> float:
     >>> round(nikon_focus_distance_mm(100), 1)
     3162.3
     """
-    value = int(raw) & 0xFF
+    value = float(int(raw) & 0xFF) if isinstance(raw, int) else min(max(float(raw), -1.0), 256.5)
     return 10.0 * 10.0 ** (value / 40.0)
 
 
@@ -132,3 +134,95 @@ def exif_subject_distance_mm(numerator: int, denominator: int) -> float | None:
     if num <= 0 or den <= 0:
         return None
     return 1000.0 * num / den
+
+
+def minolta_focus_distance_mm(raw: int) -> float:
+    """Minolta camera-settings FocusDistance (MinoltaCsNew/MinoltaCsOld, index 19) in mm.
+
+    Formula: d = raw mm (ExifTool: ``$val / 1000`` metres); 0 is infinity
+    (ExifTool prints 0 as "inf").
+
+    Examples
+    --------
+    >>> minolta_focus_distance_mm(2500), minolta_focus_distance_mm(0)
+    (2500.0, inf)
+    """
+    value = int(raw) & 0xFFFFFFFF
+    return INFINITY if value == 0 else float(value)
+
+
+def casio_object_distance_mm(raw: int, type2: bool) -> float | None:
+    """Casio ObjectDistance (Casio 0x0006; Casio2 0x2022) in mm.
+
+    Formula: d = raw mm (ExifTool: ``$val / 1000`` metres); in the type-2
+    maker note a value of 0x20000000 or more is infinity. 0 is "not
+    recorded".
+
+    Examples
+    --------
+    >>> casio_object_distance_mm(1850, True), casio_object_distance_mm(0x20000000, True)
+    (1850.0, inf)
+    >>> casio_object_distance_mm(0, False) is None
+    True
+    """
+    value = int(raw) & 0xFFFFFFFF
+    if value == 0:
+        return None
+    if type2 and value >= 0x20000000:
+        return INFINITY
+    return float(value)
+
+
+def minolta_iso(code: float) -> float:
+    """Minolta camera-settings ISO (MinoltaCsNew/MinoltaCsOld, index 8): 2^((code − 48)/8) · 100.
+
+    References
+    ----------
+    ExifTool Minolta tags, CameraSettings ISO: ``2 ** (($val-48)/8) * 100``.
+
+    Examples
+    --------
+    >>> minolta_iso(48), minolta_iso(56)
+    (100.0, 200.0)
+    """
+    return 2.0 ** ((max(min(float(code), 4096.0), -4096.0) - 48.0) / 8.0) * 100.0
+
+
+CANON_CAMERA_ISO = {16: 50.0, 17: 100.0, 18: 200.0, 19: 400.0, 20: 800.0}
+"""Canon CameraSettings CameraISO codes (ExifTool Canon ``CameraISO``; 15 is Auto, 0 n/a)."""
+
+
+def canon_iso(camera_iso: int | None, base_iso: int | None, auto_iso: int | None) -> float | None:
+    """The ISO of a Canon shot from its maker note, as ExifTool's Composite:ISO takes it.
+
+    Formula: CameraISO (CanonCs 0x10) when it is a number: the codes 16 to
+    20 (50 to 800), or the value's low 14 bits when bit 14 is set; else
+    BaseISO × AutoISO / 100 with BaseISO = 2^(b/32)·100/32 and AutoISO =
+    2^(a/32)·100 from ShotInfo (CanonSi ISOSpeed b and AutoISO a). 0x7FFF
+    and b = 0 are "not recorded".
+
+    References
+    ----------
+    ExifTool Canon tags: CameraSettings CameraISO, ShotInfo AutoISO and
+    BaseISO (``exp($val/32*log(2))*100/32``), Composite ISO ("use CameraISO
+    if numerical, otherwise calculate as BaseISO * AutoISO / 100").
+
+    Examples
+    --------
+    >>> canon_iso(17, 160, 0), canon_iso(15, 128, 0), canon_iso(0x4000 | 3200, None, None)
+    (100.0, 50.0, 3200.0)
+    >>> canon_iso(15, 0, 0) is None
+    True
+    """
+    if camera_iso is not None:
+        code = int(camera_iso) & 0xFFFF
+        if code != 0x7FFF:
+            if code & 0x4000 and code & 0x3FFF:
+                return float(code & 0x3FFF)
+            if code in CANON_CAMERA_ISO:
+                return CANON_CAMERA_ISO[code]
+    if not base_iso or auto_iso is None:
+        return None
+    base = max(min(int(base_iso), 4096), -4096)  # a signed short; clamped so 2^(b/32) stays finite
+    auto = max(min(int(auto_iso), 4096), -4096)
+    return 2.0 ** (base / 32.0) * 100.0 / 32.0 * 2.0 ** (auto / 32.0)

@@ -4,13 +4,17 @@ Order of trust for the sensor (docs/exif.md):
 
 1. FocalPlaneX/YResolution with the image size: the camera's own statement
    of how many pixels it puts on a unit of the focal plane;
-2. the 35 mm-equivalent focal length (FocalLengthIn35mmFilm) over the focal
-   length: a crop factor, the diagonal 43.27 mm over it, and the aspect
-   ratio of the image (3:2 when the file gives no size);
-3. a camera preset whose name (or alias) matches the file's Make and Model.
+2. (the crop factor form: a diagonal 43.27 mm over the factor, with the
+   aspect ratio of the image, 3:2 when the file gives no size);
+3. the maker note's sensor data libexiv2 decodes: Canon's focal-plane
+   size (FocalPlaneX/YSize), Olympus's focal-plane diagonal with the image's
+   aspect ratio, Nikon's pixel size times the image size;
+4. the 35 mm-equivalent focal length (FocalLengthIn35mmFilm) over the focal
+   length, as in 2;
+5. a camera preset whose name (or alias) matches the file's Make and Model.
 
-(libexiv2 decodes no maker-note sensor size for the major makers, so there
-is no maker-note rung between 2 and 3.)
+:func:`exiftool_scale_factor` is ExifTool's own order (its
+Composite:ScaleFactor35efl), for the ExifTool-compatible mode.
 """
 
 from __future__ import annotations
@@ -123,3 +127,70 @@ def match_preset(index: dict[str, list[Any]], names: list[str]) -> Any:
     """
     found = {id(p): p for name in names for p in index.get(name, ())}
     return next(iter(found.values())) if len(found) == 1 else None
+
+
+def canon_plane_ok(width_mm: float, height_mm: float) -> bool:
+    """Whether Canon's FocalPlaneX/YSize pair is a sensor: a 4:3 or 3:2 aspect ratio within 0.1 (ExifTool's check).
+
+    >>> canon_plane_ok(23.2156, 15.494), canon_plane_ok(770.7, 1046.3)
+    (True, False)
+    """
+    ratio = width_mm / height_mm
+    return abs(ratio - 1.3333) < 0.1 or abs(ratio - 1.5) < 0.1
+
+
+class ScaleFactor(NamedTuple):
+    """ExifTool's ScaleFactor35efl and the rule that gave it (named as in ExifTool's tags)."""
+
+    factor: float
+    source: str
+
+
+def exiftool_scale_factor(*, focal_length_mm: float | None, focal_length_35mm: float | None,
+                          digital_zoom: float | None = None, diagonal_mm: float | None = None,
+                          canon_sensor_mm: tuple[float, float] | None = None,
+                          plane_size_mm: tuple[float, float] | None = None,
+                          px_per_mm: tuple[float, float] | None = None,
+                          sizes: tuple[tuple[int, int, str], ...] = ()) -> ScaleFactor | None:
+    """ExifTool's Composite:ScaleFactor35efl: the 35 mm equivalent over the focal length, else 43.27 mm · zoom / diagonal.
+
+    The order is ExifTool 12.57's (``Image::ExifTool::Exif::CalcScaleFactor35efl``):
+    FocalLengthIn35mmFormat / FocalLength when both are known; else the
+    diagonal of the focal plane times Canon's digital zoom ratio, the
+    diagonal being Canon's sensor (from the focal-plane resolution's
+    denominators), else Olympus's FocalPlaneDiagonal, else Canon's
+    FocalPlaneX/YSize when their aspect ratio is 4:3 or 3:2, else the first
+    image size (Exif, Canon's maker note, the file's own) with an aspect
+    ratio between 1:2 and 2:1 over the focal-plane resolution, kept only for
+    a diagonal between 1 and 100 mm.
+
+    Examples
+    --------
+    >>> exiftool_scale_factor(focal_length_mm=28.0, focal_length_35mm=42.0).factor
+    1.5
+    >>> round(exiftool_scale_factor(focal_length_mm=23.4, focal_length_35mm=None, diagonal_mm=9.04).factor, 5)
+    4.78613
+    """
+    if focal_length_mm and focal_length_35mm:
+        return ScaleFactor(focal_length_35mm / focal_length_mm, "FocalLengthIn35mmFilm / FocalLength")
+    zoom = digital_zoom or 1.0
+    diagonal, source = None, ""
+    if canon_sensor_mm is not None:
+        diagonal, source = math.hypot(*canon_sensor_mm), "Canon sensor (FocalPlaneX/YResolution denominators)"
+    elif diagonal_mm:
+        diagonal, source = diagonal_mm, "Olympus FocalPlaneDiagonal"
+    elif plane_size_mm is not None and canon_plane_ok(*plane_size_mm):
+        diagonal, source = math.hypot(*plane_size_mm), "Canon FocalPlaneX/YSize"
+    if diagonal is None and px_per_mm is not None:
+        for w, h, tag in sizes:
+            if w and h and 0.5 < w / h < 2:
+                candidate = math.hypot(w / px_per_mm[0], h / px_per_mm[1])
+                if not 1.0 < candidate < 100.0:
+                    return None
+                diagonal, source = candidate, f"FocalPlaneX/YResolution with {tag}"
+                break
+    if not diagonal:
+        return None
+    if zoom != 1.0:
+        source += f" × Canon digital zoom {zoom:g}"
+    return ScaleFactor(FULL_FRAME_DIAGONAL_MM * zoom / diagonal, source)

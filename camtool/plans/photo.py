@@ -34,7 +34,7 @@ if TYPE_CHECKING:
     from camtool.exif.reader import Reading
     from camtool.exif.sensor import SensorSize
 
-__all__ = ["BRACKET_KEYS", "IMAGE_SUFFIXES", "KEYS", "PhotoAnswer", "PhotoFiles", "PresetIndex", "Problem",
+__all__ = ["BRACKET_KEYS", "CONVENTIONS", "IMAGE_SUFFIXES", "KEYS", "PhotoAnswer", "PhotoFiles", "PresetIndex", "Problem",
            "check_coc_rule", "names_from_lines", "photo_answer", "photo_files", "unreadable_answer"]
 
 BRACKET_KEYS = ["near_min_mm", "near_max_mm", "far_min_mm", "far_max_mm"]
@@ -42,9 +42,9 @@ KEYS = [
     "file", "camera", "lens", "focal_length_mm", "f_number", "shutter_s", "iso", "crop_factor",
     "sensor_width_mm", "sensor_height_mm", "coc_mm", "focus_distance_mm", "focus_distance_min_mm",
     "focus_distance_max_mm", "near_mm", "far_mm", "total_mm", "hyperfocal_mm", *BRACKET_KEYS,
-    "horizontal_deg", "vertical_deg", "diagonal_deg", "ev", "ev100", "model", "distance_from",
-    "focal_length_source", "f_number_source", "shutter_source", "iso_source", "sensor_source", "coc_source",
-    "focus_distance_source", "lens_source",
+    "horizontal_deg", "vertical_deg", "diagonal_deg", "field_width_mm", "ev", "ev100", "model", "distance_from",
+    "convention", "focal_length_source", "f_number_source", "shutter_source", "iso_source", "sensor_source",
+    "coc_source", "focus_distance_source", "lens_source", "warnings",
 ]
 """Every key of a photo's row (JSON and CSV), in order."""
 IMAGE_SUFFIXES = frozenset({
@@ -53,6 +53,9 @@ IMAGE_SUFFIXES = frozenset({
     ".x3f", ".mrw", ".3fr", ".erf", ".kdc", ".mef", ".mos", ".iiq", ".rwl", ".exv",
 })
 """The file name suffixes (lower case) a directory walk reads: images and raw files."""
+RAW_SUFFIXES = IMAGE_SUFFIXES - {".jpg", ".jpeg", ".jpe", ".tif", ".tiff", ".heic", ".heif", ".avif", ".png", ".webp",
+                                 ".jxl", ".exv"}
+"""The raw files among them (a DNG too): their pixel size as libexiv2 reports it may be a preview's."""
 
 
 class PhotoFiles(NamedTuple):
@@ -119,15 +122,19 @@ class Problem(NamedTuple):
 
 
 class PhotoAnswer(NamedTuple):
-    """One file's row (every key of :data:`KEYS`), its unusable values and what it lacks.
+    """One file's row (every key of :data:`KEYS`), its unusable values, what it lacks, and what was assumed.
 
-    ``unusable`` come first on the file's one message line; a file with an
-    unusable value (or that cannot be read) is not ``ok``.
+    ``unusable`` come first on the file's one message line, then what is
+    missing, then each warning (``warning: ...``); a file with an unusable
+    value (or that cannot be read) is not ``ok``; warnings say where an
+    answer rests on a guess (a resized file, an inferred sensor) and do not
+    make it fail.
     """
 
     values: dict[str, Any]
     unusable: tuple[Problem, ...]
     missing: tuple[Problem, ...]
+    warnings: tuple[str, ...] = ()
 
     @property
     def ok(self) -> bool:
@@ -135,7 +142,8 @@ class PhotoAnswer(NamedTuple):
 
     def message(self, shown: Mapping[str, str] | None = None) -> str:
         """The file's problems on one line ("" when none), parameters shown as ``shown`` names them."""
-        return "; ".join(p.text(shown) for p in (*self.unusable, *self.missing))
+        return "; ".join([*(p.text(shown) for p in (*self.unusable, *self.missing)),
+                          *(f"warning: {w}" for w in self.warnings)])
 
 
 def unreadable_answer(path: str, reason: str) -> PhotoAnswer:
@@ -178,7 +186,8 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
                  model: str = "auto", tolerance: float = 0.01, diffraction: bool = False,
                  wavelength_nm: float = 550.0, pupil_magnification: float | None = None,
                  hiatus_mm: float | None = None, prescription: Any = None, lens_preset: Any = None,
-                 presets: PresetIndex | None = None, given_as: Mapping[str, str] | None = None) -> PhotoAnswer:
+                 presets: PresetIndex | None = None, given_as: Mapping[str, str] | None = None,
+                 convention: str = "camtool") -> PhotoAnswer:
     """The row of one photo: what its metadata and the caller's values say, and the answers they give.
 
     What the caller gives wins over what the file says: ``lens_preset`` (else
@@ -194,6 +203,13 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
     ``*_source`` key names the tag a value came from, or ``given_as[name]``
     for a value given as parameter ``name`` (``lens_preset``, ``sensor_mm``,
     ``coc_mm``, ``distance_mm``; the name itself by default).
+
+    ``convention="exiftool"`` answers as ExifTool 12.57's composite tags do
+    (:func:`exiftool_answer`'s rules: its ScaleFactor35efl and the 3:2
+    frame of that diagonal, CoC d/1440, H = f²/(N·c), the thin-lens DOF from
+    the lens at its choice of distance, its FOV); ``model``,
+    ``distance_from``, ``coc_rule`` and ``pixel_pitch_mm`` are then not
+    used. Either way ``warnings`` say what had to be assumed.
 
     A file's CoC by ExifTool's rule d/1440 (its Composite:CircleOfConfusion)
     on a full-frame sensor is √(36² + 24²)/1440 = 0.03005 mm:
@@ -237,14 +253,27 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
     row["focal_length_mm"], row["f_number"] = f, n
     row["shutter_s"], row["iso"] = reading.shutter_s, reading.iso
 
-    size = _sensor(reading, f, sensor_mm, given.get("sensor_mm", "sensor_mm"), presets, unusable, named)
+    if convention not in CONVENTIONS:
+        raise ValueError(f"unknown convention {convention!r}; choose one of {', '.join(CONVENTIONS)}")
+    exiftool = convention == "exiftool"
+    row["convention"] = convention
+    warnings: list[str] = []
+    given_sensor = given.get("sensor_mm", "sensor_mm")
+    if exiftool:
+        size = _exiftool_frame(reading, f, sensor_mm, given_sensor)
+        coc_rule, pixel_pitch_mm, model, distance_from = "d/1440", None, "thin", "lens"
+    else:
+        size = _sensor(reading, f, sensor_mm, given_sensor, presets, unusable, named, warnings)
     if size is None:
         if "sensor" not in named:
-            missing.append(Problem("no sensor size (FocalPlaneResolution, FocalLengthIn35mmFilm or a camera preset): "
-                                   "give {sensor} or {crop}", ("sensor", "crop")))
+            missing.append(Problem("no sensor size (FocalPlaneResolution, a maker note's sensor data, "
+                                   "FocalLengthIn35mmFilm or a camera preset): give {sensor} or {crop}",
+                                   ("sensor", "crop")))
     else:
         row["sensor_width_mm"], row["sensor_height_mm"] = size.width_mm, size.height_mm
         row["crop_factor"], row["sensor_source"] = size.crop_factor, size.source
+    if sensor_mm is None:
+        warnings.extend(_size_warnings(reading, size, os.path.splitext(path)[1].lower() in RAW_SUFFIXES))
 
     c = _coc(row, coc_mm, given.get("coc_mm", "coc_mm"), coc_rule, pixel_pitch_mm, size, reading, missing, unusable)
     if f is None and "focal_length_mm" not in named:
@@ -254,22 +283,119 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
 
     s, s_min, s_max = reading.focus_distance_mm, reading.focus_distance_min_mm, reading.focus_distance_max_mm
     row["focus_distance_source"] = sources.get("focus_distance")
+    s_view = s
+    if exiftool:
+        s, s_view, row["focus_distance_source"] = _exiftool_distances(reading)
+        s_min = s_max = None
     if distance_mm is not None:
         s, s_min, s_max, row["focus_distance_source"] = distance_mm, None, None, given.get("distance_mm", "distance_mm")
+        s_view = s
     if s is None and "focus_distance" not in named:
         missing.append(Problem("no focus distance (maker note or SubjectDistance): give {distance_mm}",
                                ("distance_mm",)))
     row["focus_distance_mm"], row["focus_distance_min_mm"], row["focus_distance_max_mm"] = s, s_min, s_max
     row["distance_from"] = distance_from
 
-    lens = _lens_data(pupil_magnification, hiatus_mm, prescription, lens_preset)
+    lens = None if exiftool else _lens_data(pupil_magnification, hiatus_mm, prescription, lens_preset)
     if f is not None and n is not None and c is not None and s is not None:
-        options = (model, distance_from, diffraction, wavelength_nm, tolerance)
+        options = (model, distance_from, diffraction and not exiftool, wavelength_nm, tolerance)
         _depth(row, f, n, c, s, s_min, s_max, lens, options, missing)
+    if f is not None and n is not None and c is not None:
+        _hyperfocal(row, f, n, c, model, distance_from, lens, exiftool, missing)
     if f is not None and size is not None:
-        _angles(row, f, s, size, lens, distance_from, missing)
-    _exposure(row, n, reading.shutter_s, reading.iso, missing, named)
-    return PhotoAnswer(row, tuple(unusable), tuple(missing))
+        _angles(row, f, s_view, size, lens, distance_from, missing, exiftool)
+    iso = reading.iso
+    if exiftool and reading.iso_speed_ratings is not None:  # ExifTool's ISO is the 16-bit tag, 65535 included
+        iso, row["iso"], row["iso_source"] = reading.iso_speed_ratings, reading.iso_speed_ratings, \
+            "Photo.ISOSpeedRatings (ExifTool's ISO)"
+    _exposure(row, n, reading.shutter_s, iso, missing, named)
+    row["warnings"] = "; ".join(warnings) or None
+    return PhotoAnswer(row, tuple(unusable), tuple(missing), tuple(warnings))
+
+
+CONVENTIONS = ("camtool", "exiftool")
+"""The conventions of :func:`photo_answer`: camtool's own, and ExifTool 12.57's composite tags."""
+
+
+def _exiftool_frame(reading: Reading, f: float | None, given: tuple[float, float] | None,
+                    given_source: str) -> SensorSize | None:
+    """ExifTool's frame: the 3:2 frame 36/k × 24/k of its ScaleFactor35efl k (the sensor given wins).
+
+    ExifTool's CircleOfConfusion is that frame's diagonal over 1440 and its
+    FOV the angle across its 36/k mm width, so the frame carries both.
+    """
+    from camtool.exif.reader import outside
+    from camtool.exif.sensor import SensorSize, exiftool_scale_factor, from_plane
+
+    if given is not None:
+        return from_plane(given[0], given[1], given_source)
+    scale = exiftool_scale_factor(
+        focal_length_mm=f, focal_length_35mm=reading.focal_length_35mm, digital_zoom=reading.digital_zoom,
+        diagonal_mm=reading.plane_diagonal_mm, canon_sensor_mm=reading.canon_sensor_mm,
+        plane_size_mm=reading.maker_plane_mm, px_per_mm=reading.plane_px_per_mm, sizes=reading.sizes)
+    if scale is None or outside("crop", scale.factor) is not None:
+        return None
+    return SensorSize(36.0 / scale.factor, 24.0 / scale.factor, scale.factor,
+                      f"ExifTool ScaleFactor35efl: {scale.source}")
+
+
+def _exiftool_distances(reading: Reading) -> tuple[float | None, float | None, str | None]:
+    """The focus distance of ExifTool's DOF, that of its FOV, and where the first came from.
+
+    DOF: a FocusDistance tag (Nikon, Olympus, Minolta; 0 is infinity), else
+    SubjectDistance or ObjectDistance, else the middle of Canon's
+    FocusDistanceUpper/Lower in ExifTool's metres (raw/100, so Canon's
+    infinity counts as 655.35 m and an unrecorded lower end as 0). FOV: the
+    FocusDistance tag only (ExifTool's Composite:DOF and FOV definitions).
+    """
+    tag = reading.focus_tag_mm
+    if tag is not None:
+        return tag, tag, "FocusDistance (ExifTool's DOF and FOV)"
+    for value, name in ((reading.subject_distance_mm, "SubjectDistance"), (reading.object_distance_mm,
+                                                                         "ObjectDistance")):
+        if value:
+            return value, None, f"{name} (ExifTool's DOF)"
+    if reading.bracket_m is not None:
+        upper, lower = reading.bracket_m
+        return 1000.0 * (upper + lower) / 2.0, None, "Canon FocusDistanceUpper/Lower (ExifTool's mean, m = raw/100)"
+    return None, None, None
+
+
+def _size_warnings(reading: Reading, size: SensorSize | None, raw: bool) -> list[str]:
+    """What a file's sizes say was assumed: a resized or cropped image, a sensor inferred rather than recorded.
+
+    A raw file is not taken as resized: the pixel size libexiv2 reports for
+    one may be that of an embedded preview.
+    """
+    from camtool.exif.reader import show
+
+    warnings: list[str] = []
+    w, h, stored_w, stored_h = reading.pixels_w, reading.pixels_h, reading.stored_w, reading.stored_h
+    pixels_source = reading.sources.get("pixels", "")
+    if not raw and w and h and stored_w and stored_h and pixels_source != "image size" and \
+            max(stored_w, stored_h) < 0.95 * max(w, h):
+        warnings.append(f"the file holds {stored_w}×{stored_h} px where its metadata ({pixels_source}) give {w}×{h}: "
+                        f"a resized copy or a preview; the sensor, CoC and angles are for the camera's {w}×{h} frame")
+    canon = reading.canon_sensor_mm
+    if canon is not None and reading.plane_width_mm is not None and reading.plane_height_mm is not None:
+        width, height = reading.plane_width_mm, reading.plane_height_mm
+        if width < 0.95 * canon[0] or height < 0.95 * canon[1]:
+            warnings.append(f"the image covers {show(round(width, 2))} × {show(round(height, 2))} mm of the "
+                            f"{show(round(canon[0], 2))} × {show(round(canon[1], 2))} mm sensor Canon records "
+                            "(a crop mode or an in-camera crop): the angles and CoC are for the image's part")
+    inferred = {"Photo.FocalLengthIn35mmFilm": "the sensor is inferred from the 35 mm-equivalent focal length, "
+                                                "which the camera rounds to whole millimetres",
+                "Olympus": "the sensor is Olympus's focal-plane diagonal",
+                "Nikon3.SensorPixelSize": "the sensor is Nikon's pixel size times the image size",
+                "camera preset": "the sensor is that of the {} (matched on Make and Model)"}
+    for prefix, what in ([] if size is None else inferred.items()):
+        if size is not None and size.source.startswith(prefix):
+            aspect = "" if prefix in ("camera preset", "Nikon3.SensorPixelSize") else \
+                (f", with the image's aspect ratio {max(w, h) / min(w, h):.4g}:1" if w and h else
+                 ", with a 3:2 aspect ratio assumed (the file gives no image size)")
+            warnings.append(f"{what.format(size.source)}{aspect}: {show(round(size.width_mm, 2))} × "
+                            f"{show(round(size.height_mm, 2))} mm")
+    return warnings
 
 
 def _lens_data(p: float | None, delta: float | None, prescription: Any, preset: Any) -> LensData | None:
@@ -280,22 +406,39 @@ def _lens_data(p: float | None, delta: float | None, prescription: Any, preset: 
 
 
 def _sensor(reading: Reading, f: float | None, given: tuple[float, float] | None, given_source: str,
-            presets: PresetIndex | None, unusable: list[Problem], named: set[str]) -> SensorSize | None:
-    """The sensor: the one given, else the file's focal plane, 35 mm equivalent, camera preset.
+            presets: PresetIndex | None, unusable: list[Problem], named: set[str],
+            warnings: list[str]) -> SensorSize | None:
+    """The sensor: the one given, else the file's focal plane, maker-note sensor data, 35 mm equivalent, camera preset.
 
-    A crop factor from the 35 mm equivalent passes --crop's range and its sensor's sides --sensor's, or it is
-    named in ``unusable`` and the camera preset is tried.
+    The maker-note rung takes Canon's FocalPlaneX/YSize (when its aspect
+    ratio is 4:3 or 3:2), else Olympus's focal-plane diagonal with the
+    image's aspect ratio, else Nikon's pixel size times the image size. A
+    crop factor from the 35 mm equivalent passes --crop's range and its
+    sensor's sides --sensor's, or it is named in ``unusable`` and the camera
+    preset is tried.
     """
     from camtool.exif.reader import outside, show
-    from camtool.exif.sensor import camera_names, from_crop, from_plane, match_preset
+    from camtool.exif.sensor import camera_names, canon_plane_ok, from_crop, from_plane, match_preset
 
     if given is not None:
         return from_plane(given[0], given[1], given_source)
     if reading.plane_width_mm is not None and reading.plane_height_mm is not None:
         return from_plane(reading.plane_width_mm, reading.plane_height_mm, reading.sources["sensor"])
+    w, h = reading.pixels_w, reading.pixels_h
+    if reading.maker_plane_mm is not None and canon_plane_ok(*reading.maker_plane_mm):
+        return from_plane(*reading.maker_plane_mm, "Canon.FocalLength (FocalPlaneX/YSize)")
+    if reading.plane_diagonal_mm is not None:
+        size = from_crop(math.hypot(36.0, 24.0) / reading.plane_diagonal_mm, w, h,
+                         reading.sources.get("plane_diagonal", "Olympus.FocalPlaneDiagonal"))
+        if outside("sensor_side", min(size.width_mm, size.height_mm)) is None:
+            return size
+    if reading.pixel_pitch_mm is not None and w and h:
+        width, height = reading.pixel_pitch_mm * w, reading.pixel_pitch_mm * h
+        if 1.0 < math.hypot(width, height) < 100.0 and outside("sensor_side", min(width, height)) is None:
+            return from_plane(width, height, "Nikon3.SensorPixelSize × image size")
     if reading.focal_length_35mm is not None and f is not None:
         crop = reading.focal_length_35mm / f
-        size = from_crop(crop, reading.pixels_w, reading.pixels_h, "Photo.FocalLengthIn35mmFilm / FocalLength")
+        size = from_crop(crop, w, h, "Photo.FocalLengthIn35mmFilm / FocalLength")
         valid = outside("crop", crop)
         side = outside("sensor_side", min(size.width_mm, size.height_mm)) or \
             outside("sensor_side", max(size.width_mm, size.height_mm))
@@ -379,20 +522,59 @@ def _depth(row: dict[str, Any], f: float, n: float, c: float, s: float, s_min: f
         row.update(near_min_mm=low.near_mm, far_min_mm=low.far_mm, near_max_mm=high.near_mm, far_max_mm=high.far_mm)
 
 
+def _hyperfocal(row: dict[str, Any], f: float, n: float, c: float, model: str, distance_from: str,
+                lens: LensData | None, exiftool: bool, missing: list[Problem]) -> None:
+    """The hyperfocal distance whatever the focus: ExifTool's f²/(N·c), or camtool's model's (when the DOF gave none).
+
+    Under camtool's convention the depth of field's own H stands when there
+    is one; else the model's closed form (``approx``, ``thin``, ``thick``),
+    and for the other rungs the one ``auto`` uses for H
+    (:func:`camtool.dof.ladder.hyperfocal_rung`).
+    """
+    from camtool.core.errors import DomainError
+    from camtool.dof.closed import hyperfocal_mm
+    from camtool.dof.ladder import LensData, ModelUnavailable, depth_of_field, hyperfocal_choices, hyperfocal_rung
+
+    try:
+        if exiftool:
+            row["hyperfocal_mm"] = hyperfocal_mm(f, n, c, plus_f=False)
+        elif row["hyperfocal_mm"] is None:
+            # camtool.dof.ladder.hyperfocal's H: the limits of a focus at infinity by the closed-form rung, with
+            # the lens's pupil magnification and hiatus only (its near limit at H is not needed here)
+            rung = model if model in hyperfocal_choices() and model != "auto" else hyperfocal_rung(lens)
+            known = None if lens is None else lens.thick_parameters()
+            p, delta = known if known is not None else (1.0, 0.0)
+            data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
+            row["hyperfocal_mm"] = depth_of_field(rung, f, n, c, math.inf, distance_from, lens=data).limits.hyperfocal_mm
+    except (DomainError, ModelUnavailable, ValueError) as error:
+        missing.append(Problem(f"no hyperfocal distance ({_one_line(error)})"))
+
+
 def _angles(row: dict[str, Any], f: float, s: float | None, size: SensorSize, lens: LensData | None,
-            distance_from: str, missing: list[Problem]) -> None:
+            distance_from: str, missing: list[Problem], exiftool: bool = False) -> None:
+    """The angles of view across the sensor, and the field width at a finite focus distance.
+
+    ExifTool's FOV corrects the focal length for the focus only when the
+    distance exceeds f and gives the field width only below 10 km; the same
+    limits apply in its convention here.
+    """
     from camtool.core.errors import DomainError
     from camtool.geometry.fov import view
 
     p, delta = (lens.thick_parameters() if lens is not None else None) or (1.0, 0.0)
     distance = s if s is not None and math.isfinite(s) else None
+    if exiftool and distance is not None and distance <= f:
+        distance = None
     try:
-        angles = view(size.width_mm, size.height_mm, f, distance, distance_from, p, delta).angles
+        seen = view(size.width_mm, size.height_mm, f, distance, distance_from, p, delta)
     except (DomainError, ValueError) as error:
         missing.append(Problem(f"no angle of view ({_one_line(error)})"))
         return
+    angles = seen.angles
     row.update(horizontal_deg=angles.horizontal_deg, vertical_deg=angles.vertical_deg,
                diagonal_deg=angles.diagonal_deg)
+    if seen.field_width_mm is not None and (not exiftool or (distance is not None and distance < 1e7)):
+        row["field_width_mm"] = float(seen.field_width_mm)
 
 
 def _exposure(row: dict[str, Any], n: float | None, t: float | None, iso: float | None, missing: list[Problem],
@@ -403,7 +585,7 @@ def _exposure(row: dict[str, Any], n: float | None, t: float | None, iso: float 
     if t is None and "shutter_s" not in named:
         missing.append(Problem("no shutter time (ExposureTime, ShutterSpeedValue)"))
     if iso is None and "iso" not in named:
-        missing.append(Problem("no ISO (ISOSpeedRatings)"))
+        missing.append(Problem("no ISO (ISOSpeedRatings, ExposureIndex, maker note)"))
     if n is None or t is None:
         return
     try:
