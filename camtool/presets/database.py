@@ -328,7 +328,8 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
                           for row in r.get("close_focus", ())), t_number_min=r.get("t_number_min"),
-        tilt_max_deg=r.get("tilt_max_deg"), **_common(entry))
+        tilt_max_deg=r.get("tilt_max_deg"), focus_at_max_magnification_mm=r.get("focus_at_max_magnification_mm"),
+        **_common(entry))
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:

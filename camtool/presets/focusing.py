@@ -29,7 +29,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from camtool.geometry.closeup import InternalFocus, internal_focus, magnification_branches
+from camtool.geometry.closeup import InternalFocus, internal_focus, internal_focus_between, magnification_branches
 
 __all__ = ["focus_model", "row_magnification"]
 
@@ -95,6 +95,10 @@ def focus_model(lens: Any, focal_length_mm: float) -> InternalFocus | None:
         row = _row_at(lens, focal_length_mm, delta)
         assert row is not None
         distance, m = row
+    elif getattr(lens, "focus_at_max_magnification_mm", None) is not None and low > 0.0:
+        # both ends of a lens without infinity focus are published (the MP-E 65: 0.24 m at 1x, 0.313 m at 5x)
+        return internal_focus_between(float(focal_length_mm), low, float(lens.min_focus_mm),
+                                      float(lens.max_magnification), float(lens.focus_at_max_magnification_mm))
     elif getattr(lens, "min_focus_mm", None) is not None and not lens.is_zoom:
         distance, m = lens.min_focus_mm, lens.max_magnification
     else:

@@ -387,6 +387,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "min_focus_mm": positive_mm,
         "max_magnification": positive,
         "min_magnification": positive,
+        "focus_at_max_magnification_mm": positive_mm,
         "close_focus": close_focus_rows,
         "t_number_min": positive,
         "equivalent_focal_length_mm": positive_mm,
@@ -549,6 +550,12 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
     low, high = record.get("min_magnification"), record.get("max_magnification")
     if low is not None and high is not None and low > high:
         return [("min_magnification", f"must be <= max_magnification ({high:g})")]
+    far = record.get("focus_at_max_magnification_mm")
+    if far is not None and (low is None or high is None or record.get("min_focus_mm") is None):
+        return [("focus_at_max_magnification_mm",
+                 "applies only to a lens without infinity focus (min_magnification, max_magnification, min_focus_mm)")]
+    if far is not None and far < record["min_focus_mm"]:
+        return [("focus_at_max_magnification_mm", f"must be >= min_focus_mm ({record['min_focus_mm']:g})")]
     if "close_focus" in record:
         return _check_close_focus(record)
     return []
@@ -783,6 +790,7 @@ class Lens:
     t_number_min: float | None = None  # widest T-stop (cinema lenses)
     tilt_max_deg: float | None = None  # tilt range, ± degrees (tilt-shift lenses)
     f_number_max_tele: float | None = None  # smallest aperture at the long end, where it differs
+    focus_at_max_magnification_mm: float | None = None  # a lens focusing farther at max than at min magnification
 
     kind = "lens"
 
