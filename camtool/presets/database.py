@@ -329,7 +329,7 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
                           for row in r.get("close_focus", ())), t_number_min=r.get("t_number_min"),
         tilt_max_deg=r.get("tilt_max_deg"), focus_at_max_magnification_mm=r.get("focus_at_max_magnification_mm"),
-        **_common(entry))
+        projection=r.get("projection"), field_max_deg=r.get("field_max_deg"), **_common(entry))
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:

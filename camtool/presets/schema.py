@@ -267,6 +267,27 @@ def close_focus_rows(value: Any) -> list[dict[str, float]]:
     return out
 
 
+def projection_name(value: Any) -> str:
+    """A lens's mapping: rectilinear, equidistant, equisolid, orthographic or stereographic.
+
+    >>> projection_name("equisolid")
+    'equisolid'
+    """
+    from camtool.geometry.projection import PROJECTIONS
+
+    if value not in PROJECTIONS:
+        raise Bad(f"expected one of {', '.join(PROJECTIONS)}, got {show(value)}")
+    return str(value)
+
+
+def field_degrees(value: Any) -> float:
+    """A lens's whole field in degrees, more than 0 and at most 360."""
+    number = _real(value)
+    if not 0.0 < number <= 360.0:
+        raise Bad(f"must be more than 0 and at most 360 degrees, got {value!r}")
+    return number
+
+
 def sensor_ref(value: Any) -> str | dict[str, Any]:
     """A sensor: the name of a sensor preset, or an inline ``{width_mm, height_mm[, coc_mm]}``."""
     if isinstance(value, Mapping):
@@ -394,6 +415,8 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "pupil_magnification": positive,
         "hiatus_mm": finite,
         "tilt_max_deg": positive,
+        "projection": projection_name,
+        "field_max_deg": field_degrees,
         "prescription": reference,
         "sensor": reference,
         "mount": text,
@@ -550,6 +573,8 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
     low, high = record.get("min_magnification"), record.get("max_magnification")
     if low is not None and high is not None and low > high:
         return [("min_magnification", f"must be <= max_magnification ({high:g})")]
+    if "field_max_deg" in record and record.get("projection", "rectilinear") == "rectilinear":
+        return [("field_max_deg", "applies only to a fisheye (projection other than rectilinear)")]
     far = record.get("focus_at_max_magnification_mm")
     if far is not None and (low is None or high is None or record.get("min_focus_mm") is None):
         return [("focus_at_max_magnification_mm",
@@ -791,6 +816,8 @@ class Lens:
     tilt_max_deg: float | None = None  # tilt range, ± degrees (tilt-shift lenses)
     f_number_max_tele: float | None = None  # smallest aperture at the long end, where it differs
     focus_at_max_magnification_mm: float | None = None  # a lens focusing farther at max than at min magnification
+    projection: str | None = None  # a fisheye's mapping (camtool.geometry.projection); None: rectilinear
+    field_max_deg: float | None = None  # a fisheye's whole field (its image circle), degrees
 
     kind = "lens"
 
