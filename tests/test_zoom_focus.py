@@ -16,7 +16,8 @@ from camtool.presets.focusing import focus_model, row_magnification
 
 
 def _lenses():
-    return [lens for lens in load_db().all("lens") if lens.prescription is None and
+    every = [member for lens in load_db().all("lens") for member in (lens.members or (lens,))]  # a set's members
+    return [lens for lens in every if lens.prescription is None and
             (lens.close_focus or (lens.min_focus_mm and not lens.is_zoom))]
 
 
