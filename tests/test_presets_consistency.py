@@ -232,6 +232,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sigma-24-70mm-f2.8-dg-dn-art", 70.0), ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70.0),
     # 0.3 m with 1:2.6 and 0.85 m with 1:4.7 imply about 60 mm at 70 mm and 123 mm at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70.0), ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180.0),
+    # one closest focus for the zoom with the magnification at the long end: about 158 mm and 169 mm there
+    ("nikon-af-s-70-200mm-f2.8e-fl-ed-vr", 200.0), ("nikon-af-s-70-200mm-f4g-ed-vr", 200.0),
+    # internal focusing: about 52 mm and 254 mm at the closest focus
+    ("sigma-56mm-f1.4-dc-dn-contemporary", 56.0), ("hasselblad-hc-300mm-f4.5", 292.0),
 }
 
 
@@ -369,6 +373,14 @@ CITED_CLOSE_FOCUS = [
     ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70, 380, 0.217),
     # ScubaPortal (Tamron's figures): 19 cm and 1:5.2 at 17 mm, 26 cm and 1:6 at 28 mm.
     ("tamron-17-28mm-f2.8-di-iii-rxd", 17, 190, 0.192), ("tamron-17-28mm-f2.8-di-iii-rxd", 28, 260, 0.167),
+    # Amateur Photographer: 29 cm, 0.13x.
+    ("sony-fe-28mm-f2", 28, 290, 0.13),
+    # ora.it.com (Nikon's table): 1.1 m, 0.21x; Nikon School Italia: 1 m, 0.274x.
+    ("nikon-af-s-70-200mm-f2.8e-fl-ed-vr", 200, 1100, 0.21), ("nikon-af-s-70-200mm-f4g-ed-vr", 200, 1000, 0.274),
+    # Sigma's page quoted on Canon Rumors: 50 cm, 1:7.4.
+    ("sigma-56mm-f1.4-dc-dn-contemporary", 56, 500, 0.135),
+    # Hasselblad's data sheets: 0.60 m and 1:8,8 (50,7 mm); 2.45 m and 1:7.5 (292 mm).
+    ("hasselblad-hc-50mm-f3.5-ii", 50.7, 600, 0.114), ("hasselblad-hc-300mm-f4.5", 292, 2450, 0.133),
     # Photofocus (Tamron's list): 0.3 m and 1:2.6 at 70 mm, 0.85 m and 1:4.7 at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70, 300, 0.385),
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180, 850, 0.213),
@@ -405,6 +417,8 @@ CITED_F_NUMBER_MAX = [
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 32),
     # Wikipedia infobox, Canon MP-E 65mm f/2.8 1-5x Macro: aperture f/2.8-f/16.
     ("canon-mp-e-65mm-f2.8-1-5x-macro", 16),
+    # Amateur Photographer's FE 28mm F2 review: down to f/22; Hasselblad's HC 50-II and HC 300 data sheets.
+    ("sony-fe-28mm-f2", 22), ("hasselblad-hc-50mm-f3.5-ii", 32), ("hasselblad-hc-300mm-f4.5", 45),
     # Photo Review, AF-S Nikkor 50mm f/1.8G: the minimum aperture is f/16.
     ("nikon-af-s-50mm-f1.8g", 16),
     # PConline's Z 70-200mm f/2.8 VR S review: f/22, the smallest aperture (tested at 70 and 200 mm).
