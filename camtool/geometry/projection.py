@@ -164,7 +164,7 @@ def fisheye_angle_of_view_deg(size_mm: Any, focal_length_mm: Any, projection: st
     angle = 2.0 * half_angle_deg(size_mm / 2.0, effective, projection)
     limit = field_max_deg if field_max_deg is not None else (
         None if projection == "rectilinear" else FISHEYE_FIELD_DEG)
-    return angle if limit is None else xp.minimum(angle, limit)
+    return angle if limit is None else xp.minimum(angle, float(limit))
 
 
 class FisheyeAngles(NamedTuple):
