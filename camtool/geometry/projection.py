@@ -29,6 +29,7 @@ manual ("the equidistant projection formula (y = fθ)", 220°, 23 mm circle).
 
 from __future__ import annotations
 
+import math
 from typing import Any, NamedTuple
 
 from camtool.core.arrays import ops, quiet
@@ -107,7 +108,11 @@ def half_angle_deg(height_mm: Any, focal_length_mm: Any, projection: str) -> Any
     check_projection(projection)
     require_positive("focal_length_mm", focal_length_mm)
     require("image_height_mm", height_mm, height_mm >= 0, ">= 0")
-    xp = ops(height_mm, focal_length_mm)
+    return _half_angle(height_mm, focal_length_mm, projection, ops(height_mm, focal_length_mm))
+
+
+def _half_angle(height_mm: Any, focal_length_mm: Any, projection: str, xp: Any) -> Any:
+    """:func:`half_angle_deg` on inputs already checked."""
     ratio = height_mm / focal_length_mm
     with quiet(xp):
         if projection == "rectilinear":
@@ -124,8 +129,12 @@ def half_angle_deg(height_mm: Any, focal_length_mm: Any, projection: str) -> Any
 
 
 def _asin(xp: Any, x: Any) -> Any:
-    """asin x for 0 ≤ x ≤ 1 as atan2(x, √(1 − x²)), on either path."""
-    return xp.atan2(x, xp.sqrt(xp.maximum(1.0 - x * x, 0.0)))
+    """asin x for 0 ≤ x ≤ 1, on either path."""
+    if xp.name == "numpy":
+        import numpy as np
+
+        return np.arcsin(x)
+    return math.asin(x)
 
 
 def fisheye_angle_of_view_deg(size_mm: Any, focal_length_mm: Any, projection: str, magnification: Any = 0.0,
@@ -153,15 +162,25 @@ def fisheye_angle_of_view_deg(size_mm: Any, focal_length_mm: Any, projection: st
     147.48
     """
     require_positive("sensor_mm", size_mm)
+    _check_view(focal_length_mm, projection, magnification, pupil_magnification, field_max_deg)
+    xp = ops(size_mm, focal_length_mm, magnification, pupil_magnification)
+    effective = focal_length_mm * (1.0 + magnification / pupil_magnification)
+    return _angle(size_mm, effective, projection, field_max_deg, xp)
+
+
+def _check_view(focal_length_mm: Any, projection: str, magnification: Any, pupil_magnification: Any,
+                field_max_deg: float | None) -> None:
     require_positive("focal_length_mm", focal_length_mm)
     require("magnification", magnification, magnification >= 0, ">= 0")
     require_positive("pupil_magnification", pupil_magnification, unit="")
     if field_max_deg is not None:
         require("field_max_deg", field_max_deg, (field_max_deg > 0) & (field_max_deg <= 360), "in (0, 360]")
     check_projection(projection)
-    xp = ops(size_mm, focal_length_mm, magnification, pupil_magnification)
-    effective = focal_length_mm * (1.0 + magnification / pupil_magnification)
-    angle = 2.0 * half_angle_deg(size_mm / 2.0, effective, projection)
+
+
+def _angle(size_mm: Any, effective_mm: Any, projection: str, field_max_deg: float | None, xp: Any) -> Any:
+    """2·θ(h/2) at the effective focal length, at most the field (inputs already checked)."""
+    angle = 2.0 * _half_angle(size_mm / 2.0, effective_mm, projection, xp)
     limit = field_max_deg if field_max_deg is not None else (
         None if projection == "rectilinear" else FISHEYE_FIELD_DEG)
     return angle if limit is None else xp.minimum(angle, float(limit))
@@ -185,10 +204,13 @@ def fisheye_field_of_view(width_mm: Any, height_mm: Any, focal_length_mm: Any, p
     >>> [round(a, 2) for a in fisheye_field_of_view(36.0, 24.0, 15.0, "equisolid")]
     [147.48, 94.31, 180.0]
     """
-    xp = ops(width_mm, height_mm)
-    diagonal = xp.hypot(width_mm, height_mm)
-    return FisheyeAngles(*(fisheye_angle_of_view_deg(size, focal_length_mm, projection, magnification,
-                                                     pupil_magnification, field_max_deg)
+    require_positive("sensor_mm", width_mm)
+    require_positive("sensor_mm", height_mm)
+    _check_view(focal_length_mm, projection, magnification, pupil_magnification, field_max_deg)
+    xp = ops(width_mm, height_mm, focal_length_mm, magnification, pupil_magnification)
+    effective = focal_length_mm * (1.0 + magnification / pupil_magnification)
+    diagonal = ops(width_mm, height_mm).hypot(width_mm, height_mm)
+    return FisheyeAngles(*(_angle(size, effective, projection, field_max_deg, xp)
                            for size in (width_mm, height_mm, diagonal)))
 
 
