@@ -171,3 +171,18 @@ def test_bad_projection_keys_in_a_preset_file(tmp_path, lines, key):
     with pytest.raises(PresetFileError) as caught:
         load_db(extra_files=(path,))
     assert key in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_one_answer_for_a_fisheye_angle_whichever_way_it_is_asked(tmp_path):
+    # the option, a batch cell, the lens preset and the Python API give the same stereographic angles
+    import camtool
+
+    (by_option,) = run_json("fov", "-f", "8", "--sensor", "aps-c", "--projection", "stereographic")
+    (by_preset,) = run_json("fov", "--lens", "samyang-8-fisheye", "--sensor", "aps-c")
+    batch = tmp_path / "scenes.csv"
+    batch.write_text("focal_length,projection\n8,stereographic\n", encoding="utf-8")
+    (by_cell,) = run_json("fov", "--batch", str(batch), "--sensor", "aps-c")
+    api = camtool.field_of_view(8, 23.6, 15.6, projection="stereographic")
+    for row in (by_option, by_preset, by_cell):
+        assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (
+            api.horizontal_deg, api.vertical_deg, api.diagonal_deg)
