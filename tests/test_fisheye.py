@@ -186,3 +186,19 @@ def test_one_answer_for_a_fisheye_angle_whichever_way_it_is_asked(tmp_path):
     for row in (by_option, by_preset, by_cell):
         assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (
             api.horizontal_deg, api.vertical_deg, api.diagonal_deg)
+
+
+def test_a_photo_taken_with_a_fisheye_preset_gets_its_angles():
+    # camtool exif with --lens: the photo's angles are the fisheye's (the Fisheye-Nikkor 6 mm covers its 220°
+    # every way on full frame, the 36 × 24 mm frame the file's focal-plane resolution gives)
+    from camtool.exif.reader import Reading
+    from camtool.plans.photo import photo_answer
+
+    lens = load_db().lens("fisheye-nikkor-6mm")
+    shot = Reading(make="Nikon", model="Z 6", focal_length_mm=6.0, f_number=8.0, plane_width_mm=36.0,
+                   plane_height_mm=24.0, focus_distance_mm=1000.0,
+                   sources={"sensor": "Photo.FocalPlaneX/YResolution", "f_number": "Photo.FNumber"})
+    row = photo_answer(shot, path="f.jpg", lens_preset=lens).values
+    assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (220.0, 220.0, 220.0)
+    row = photo_answer(shot, path="f.jpg").values  # without the preset: rectilinear, 2·atan(18/(6(1 + m)))
+    assert row["horizontal_deg"] < 180.0

@@ -267,7 +267,7 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
         options = (model, distance_from, diffraction, wavelength_nm, tolerance)
         _depth(row, f, n, c, s, s_min, s_max, lens, options, missing)
     if f is not None and size is not None:
-        _angles(row, f, s, size, lens, distance_from, missing)
+        _angles(row, f, s, size, lens, distance_from, missing, lens_preset)
     _exposure(row, n, reading.shutter_s, reading.iso, missing, named)
     return PhotoAnswer(row, tuple(unusable), tuple(missing))
 
@@ -380,14 +380,22 @@ def _depth(row: dict[str, Any], f: float, n: float, c: float, s: float, s_min: f
 
 
 def _angles(row: dict[str, Any], f: float, s: float | None, size: SensorSize, lens: LensData | None,
-            distance_from: str, missing: list[Problem]) -> None:
+            distance_from: str, missing: list[Problem], lens_preset: Any = None) -> None:
+    """The angles of view at the focus; a fisheye lens preset's under its projection (docs/design.md §4.2)."""
     from camtool.core.errors import DomainError
     from camtool.geometry.fov import view
 
     p, delta = (lens.thick_parameters() if lens is not None else None) or (1.0, 0.0)
     distance = s if s is not None and math.isfinite(s) else None
     try:
-        angles = view(size.width_mm, size.height_mm, f, distance, distance_from, p, delta).angles
+        seen = view(size.width_mm, size.height_mm, f, distance, distance_from, p, delta)
+        angles: Any = seen.angles
+        mapping = getattr(lens_preset, "projection", None)
+        if mapping not in (None, "rectilinear"):
+            from camtool.geometry.projection import fisheye_field_of_view
+
+            angles = fisheye_field_of_view(size.width_mm, size.height_mm, f, mapping, seen.magnification, p,
+                                           getattr(lens_preset, "field_max_deg", None))
     except (DomainError, ValueError) as error:
         missing.append(Problem(f"no angle of view ({_one_line(error)})"))
         return
