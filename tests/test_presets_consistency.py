@@ -238,6 +238,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sigma-56mm-f1.4-dc-dn-contemporary", 56.0), ("hasselblad-hc-300mm-f4.5", 292.0),
     # 0.9 m with 0.14x at the long end: about 97 mm there
     ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 150.0),
+    # 0.29 m with 1:5.2 at the long end: about 39 mm there
+    ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 42.0),
 }
 
 
@@ -388,6 +390,9 @@ CITED_CLOSE_FOCUS = [
     ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 150, 900, 0.14),
     # Digital Camera World: 0.093 m and 1.2x; Sony's SAL20F28 service manual: 0.25 m and 0.13x.
     ("canon-ef-m-28mm-f3.5-macro-is-stm", 28, 93, 1.2), ("sony-20mm-f2.8-sal20f28", 20, 250, 0.13),
+    # photozone.de's specification table: 0.29 m, 1:5.2 (one closest focus for the zoom).
+    ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 14, 290, None),
+    ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 42, 290, 0.192),
     # Photofocus (Tamron's list): 0.3 m and 1:2.6 at 70 mm, 0.85 m and 1:4.7 at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70, 300, 0.385),
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180, 850, 0.213),
