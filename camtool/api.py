@@ -193,6 +193,9 @@ OptionalPixelPitchUm = Annotated[Any, _Kind("number", optional=True, bounds=PIXE
 ShutterTime = Annotated[Any, _Kind("number", bounds=SHUTTER_RANGE_S, unit="s")]
 Diagonal = Annotated[Any, _Kind("number", bounds=(0.5, 2000.0 * math.sqrt(2.0)), unit="mm")]
 DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
+Projection = Annotated[str, _Kind("choice", choices=("rectilinear", "equidistant", "equisolid", "orthographic",
+                                                     "stereographic"))]
+OptionalFieldDeg = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(1e-9, 360.0), unit="°")]
 Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
 Text = Annotated[str, _Kind("text")]
 OptionalAngle = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(-89.9, 89.9), unit="°",
@@ -590,14 +593,27 @@ def field_of_view(
     *,
     magnification: MagnificationOrZero = 0.0,
     pupil_magnification: PupilMagnification = 1.0,
+    projection: Projection = "rectilinear",
+    field_max_deg: OptionalFieldDeg = None,
 ) -> FieldOfView:
     """Horizontal, vertical and diagonal angles of view in degrees (with focus breathing at ``magnification``).
+
+    ``projection`` is the lens's mapping (a fisheye's: ``equidistant``,
+    ``equisolid``, ``orthographic``, ``stereographic``); a fisheye covers at
+    most ``field_max_deg`` (180° when None), docs/design.md §4.2.
 
     Examples
     --------
     >>> round(field_of_view(50, 36, 24).horizontal_deg, 2)  # 2·atan(18/50)
     39.6
+    >>> field_of_view(8, 36, 24, projection="equisolid").diagonal_deg  # a circular fisheye: its 180°
+    180.0
     """
+    if projection != "rectilinear" or field_max_deg is not None:
+        from camtool.geometry.projection import fisheye_field_of_view
+
+        return FieldOfView(*fisheye_field_of_view(sensor_width_mm, sensor_height_mm, focal_length_mm, projection,
+                                                  magnification, pupil_magnification, field_max_deg))
     from camtool.geometry.fov import field_of_view as run
 
     return run(sensor_width_mm, sensor_height_mm, focal_length_mm, magnification, pupil_magnification)

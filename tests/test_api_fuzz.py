@@ -65,6 +65,8 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "pixel_pitch_mm": st.floats(0.0002, 0.1),
     "model": st.sampled_from(["auto", "approx", "thin", "thick", "paraxial", "raytrace"]),
     "distance_from": st.sampled_from(["sensor", "lens"]),
+    "projection": st.sampled_from(["rectilinear", "equidistant", "equisolid", "orthographic", "stereographic"]),
+    "field_max_deg": st.one_of(st.none(), st.floats(1.0, 360.0)),
     "rule": st.sampled_from(["d/1500", "d/1730", "px:2", "print:8x10in@25cm", "d/1000"]),
     "diffraction": st.booleans(),
     "prescription": st.sampled_from([None, "dgauss100"]).map(lambda name: name and _prescription(name)),
@@ -173,9 +175,9 @@ def hostile_arrays() -> st.SearchStrategy[Any]:
 
 def argument(name: str, function: str = "") -> st.SearchStrategy[Any]:
     valid = VALID_IN.get(function, {}).get(name, VALID[name])
-    if name in ("model", "distance_from", "rule", "diffraction", "prescription", "film", "kind", "name", "lens",
-                "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum", "points",
-                "criterion", "sensor_label", "fill_axis", "units", "data", "output"):
+    if name in ("model", "distance_from", "projection", "rule", "diffraction", "prescription", "film", "kind",
+                "name", "lens", "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum",
+                "points", "criterion", "sensor_label", "fill_axis", "units", "data", "output"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()
@@ -280,6 +282,8 @@ def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     (lambda: camtool.depth_of_field(50, 8, 0.03, 3000, prescription="dgauss100"), "prescription"),
     (lambda: camtool.hyperfocal_distance(50, 8, 0.03, pupil_magnification=0.0), "pupil_magnification"),
     (lambda: camtool.field_of_view(50, 36, 24, magnification=math.inf), "magnification"),
+    (lambda: camtool.field_of_view(8, 36, 24, projection="fish"), "projection"),
+    (lambda: camtool.field_of_view(8, 36, 24, projection="equisolid", field_max_deg=400), "field_max_deg"),
     (lambda: camtool.focus_for_limits(50, 0.03, 2000, math.nan), "far_mm"),
     (lambda: camtool.focus_for_magnification(100, 10**400), "magnification"),
     (lambda: camtool.circle_of_confusion(36, 24, rule=1500), "rule"),

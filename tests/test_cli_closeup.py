@@ -98,8 +98,10 @@ def test_shipped_macro_scene_runs_at_life_size():
 
 
 def test_mp_e_65_published_distance_and_range():
-    # Canon MP-E 65mm f/2.8 1-5x Macro Photo: 1x to 5x; closest focusing distance 0.24 m (at 5x)
+    # Canon MP-E 65mm f/2.8 1-5x Macro Photo (Wikipedia's infobox): 1x to 5x; 240 mm at 1x, 313 mm at 5x
     (row,) = run_json("focus", "--lens", "mp-e-65", "-m", "5")
+    assert row["distance_mm"] == pytest.approx(313.0, rel=1e-12)
+    (row,) = run_json("focus", "--lens", "mp-e-65", "-m", "1")
     assert row["distance_mm"] == pytest.approx(240.0, rel=1e-12)
     for args, option in ((["-s", "1m"], "'-s' / '--distance'"), (["-m", "6"], "'-m' / '--magnification'"),
                          (["-m", "0.5"], "'-m' / '--magnification'")):

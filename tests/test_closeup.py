@@ -249,19 +249,24 @@ MACROS = [lens for lens in load_db().all("lens") if lens.category == "macro"]
 def test_every_macro_preset_reaches_its_published_magnification_at_its_closest_focus(lens):
     # lens_db/lenses.yaml: each maker's closest focus and maximum magnification (source: field)
     model = focus_model(lens, lens.focal_min_mm)
-    m, _f = internal_focus_at_distance(model, lens.min_focus_mm)
+    # a lens whose subject moves away as it magnifies (the MP-E 65) publishes that distance apart
+    closest = lens.focus_at_max_magnification_mm or lens.min_focus_mm
+    m, _f = internal_focus_at_distance(model, closest)
     assert m == pytest.approx(lens.max_magnification, rel=0.02)
-    assert internal_focus_at_magnification(model, lens.max_magnification)[1] == pytest.approx(lens.min_focus_mm,
-                                                                                              rel=0.02)
+    assert internal_focus_at_magnification(model, lens.max_magnification)[1] == pytest.approx(closest, rel=0.02)
     with pytest.raises(DomainError):
         internal_focus_at_distance(model, lens.min_focus_mm * 0.95)
 
 
 def test_mp_e_65_range_and_canon_distance():
-    # Canon MP-E 65mm f/2.8 1-5x Macro Photo: 1x to 5x, closest focusing distance 0.24 m (at 5x).
+    # Canon MP-E 65mm f/2.8 1-5x Macro Photo (Wikipedia's infobox of Canon's figures): 1x to 5x, closest
+    # distance 240 mm (the lens collapsed, 1x), farthest 313 mm (extended, 5x).
     lens = load_db().get("lens", "mp-e-65")
     model = focus_model(lens, 65.0)
-    assert internal_focus_at_magnification(model, 5.0)[1] == pytest.approx(240.0, rel=1e-12)
+    assert internal_focus_at_magnification(model, 1.0)[1] == pytest.approx(240.0, rel=1e-12)
+    assert internal_focus_at_magnification(model, 5.0)[1] == pytest.approx(313.0, rel=1e-12)
+    assert internal_focus_at_distance(model, 313.0)[0] == pytest.approx(5.0, rel=1e-9)
+    assert internal_focus_at_distance(model, 240.0)[0] == pytest.approx(1.0, rel=1e-9)
     for bad in (0.5, 5.5):
         with pytest.raises(DomainError, match="1× to 5×"):
             internal_focus_at_magnification(model, bad)
@@ -289,6 +294,12 @@ def _published_pairs():
             if m is not None:
                 yield pytest.param(lens, f, distance, m, id=f"{lens.id}@{f:g}")
         if not lens.is_zoom and lens.min_focus_mm and lens.max_magnification and lens.prescription is None:
+            if lens.focus_at_max_magnification_mm:  # both ends published (the MP-E 65)
+                yield pytest.param(lens, lens.focal_min_mm, lens.min_focus_mm, lens.min_magnification,
+                                   id=f"{lens.id}-least")
+                yield pytest.param(lens, lens.focal_min_mm, lens.focus_at_max_magnification_mm,
+                                   lens.max_magnification, id=lens.id)
+                continue
             yield pytest.param(lens, lens.focal_min_mm, lens.min_focus_mm, lens.max_magnification, id=lens.id)
 
 
@@ -298,8 +309,8 @@ def test_every_published_closest_focus_gives_its_magnification(lens, focal, clos
     model = focus_model(lens, focal)
     m, _f = internal_focus_at_distance(model, closest)
     assert m == pytest.approx(published, rel=0.02)
-    with pytest.raises(DomainError):
-        internal_focus_at_distance(model, closest * 0.97)
+    with pytest.raises(DomainError):  # nothing closer than the model's closest focus (the published one but the MP-E's)
+        internal_focus_at_distance(model, min(closest, model.min_focus_mm) * 0.97)
     if lens.min_magnification is None:  # focusing out from the closest focus lowers the magnification
         assert internal_focus_at_distance(model, closest * 1.05)[0] < m
 

@@ -232,6 +232,14 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sigma-24-70mm-f2.8-dg-dn-art", 70.0), ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70.0),
     # 0.3 m with 1:2.6 and 0.85 m with 1:4.7 imply about 60 mm at 70 mm and 123 mm at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70.0), ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180.0),
+    # one closest focus for the zoom with the magnification at the long end: about 158 mm and 169 mm there
+    ("nikon-af-s-70-200mm-f2.8e-fl-ed-vr", 200.0), ("nikon-af-s-70-200mm-f4g-ed-vr", 200.0),
+    # internal focusing: about 52 mm and 254 mm at the closest focus
+    ("sigma-56mm-f1.4-dc-dn-contemporary", 56.0), ("hasselblad-hc-300mm-f4.5", 292.0),
+    # 0.9 m with 0.14x at the long end: about 97 mm there
+    ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 150.0),
+    # 0.29 m with 1:5.2 at the long end: about 39 mm there
+    ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 42.0),
 }
 
 
@@ -369,6 +377,22 @@ CITED_CLOSE_FOCUS = [
     ("sigma-28-70mm-f2.8-dg-dn-contemporary", 70, 380, 0.217),
     # ScubaPortal (Tamron's figures): 19 cm and 1:5.2 at 17 mm, 26 cm and 1:6 at 28 mm.
     ("tamron-17-28mm-f2.8-di-iii-rxd", 17, 190, 0.192), ("tamron-17-28mm-f2.8-di-iii-rxd", 28, 260, 0.167),
+    # Amateur Photographer: 29 cm, 0.13x.
+    ("sony-fe-28mm-f2", 28, 290, 0.13),
+    # ora.it.com (Nikon's table): 1.1 m, 0.21x; Nikon School Italia: 1 m, 0.274x.
+    ("nikon-af-s-70-200mm-f2.8e-fl-ed-vr", 200, 1100, 0.21), ("nikon-af-s-70-200mm-f4g-ed-vr", 200, 1000, 0.274),
+    # Sigma's page quoted on Canon Rumors: 50 cm, 1:7.4.
+    ("sigma-56mm-f1.4-dc-dn-contemporary", 56, 500, 0.135),
+    # Hasselblad's data sheets: 0.60 m and 1:8,8 (50,7 mm); 2.45 m and 1:7.5 (292 mm).
+    ("hasselblad-hc-50mm-f3.5-ii", 50.7, 600, 0.114), ("hasselblad-hc-300mm-f4.5", 292, 2450, 0.133),
+    # Olympus's specification pages: 0.2 m and 0.08x; 0.9 m and 0.14x (one closest focus for the zoom).
+    ("olympus-m-zuiko-digital-12mm-f2", 12, 200, 0.08), ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 40, 900, None),
+    ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 150, 900, 0.14),
+    # Digital Camera World: 0.093 m and 1.2x; Sony's SAL20F28 service manual: 0.25 m and 0.13x.
+    ("canon-ef-m-28mm-f3.5-macro-is-stm", 28, 93, 1.2), ("sony-20mm-f2.8-sal20f28", 20, 250, 0.13),
+    # photozone.de's specification table: 0.29 m, 1:5.2 (one closest focus for the zoom).
+    ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 14, 290, None),
+    ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 42, 290, 0.192),
     # Photofocus (Tamron's list): 0.3 m and 1:2.6 at 70 mm, 0.85 m and 1:4.7 at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70, 300, 0.385),
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180, 850, 0.213),
@@ -405,6 +429,12 @@ CITED_F_NUMBER_MAX = [
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 32),
     # Wikipedia infobox, Canon MP-E 65mm f/2.8 1-5x Macro: aperture f/2.8-f/16.
     ("canon-mp-e-65mm-f2.8-1-5x-macro", 16),
+    # Amateur Photographer's FE 28mm F2 review: down to f/22; Hasselblad's HC 50-II and HC 300 data sheets.
+    ("sony-fe-28mm-f2", 22), ("hasselblad-hc-50mm-f3.5-ii", 32), ("hasselblad-hc-300mm-f4.5", 45),
+    # Olympus's 12mm F2.0 and 40-150mm specification pages: F22; Digital Camera World (EF-M 28mm Macro): f/22;
+    # Sony's SAL20F28 service manual: f/22.
+    ("olympus-m-zuiko-digital-12mm-f2", 22), ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 22),
+    ("canon-ef-m-28mm-f3.5-macro-is-stm", 22), ("sony-20mm-f2.8-sal20f28", 22),
     # Photo Review, AF-S Nikkor 50mm f/1.8G: the minimum aperture is f/16.
     ("nikon-af-s-50mm-f1.8g", 16),
     # PConline's Z 70-200mm f/2.8 VR S review: f/22, the smallest aperture (tested at 70 and 200 mm).

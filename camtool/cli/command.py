@@ -92,8 +92,9 @@ equipment_options = stack(
     click.option("--camera", metavar="NAME", shell_complete=preset_completion("camera"),
                  help="Camera preset: its sensor and pixel pitch (for --coc-rule px:K)."),
     click.option("--lens", metavar="NAME", shell_complete=preset_completion("lens"),
-                 help="Lens preset: focal length of a prime (a zoom needs -f in its range), f-number range, "
-                      "closest focus, and pupil magnification, hiatus and prescription where known."),
+                 help="Lens preset: focal length of a prime (a zoom needs -f in its range; a lens set, -f or "
+                      "SET@FOCAL), f-number range, closest focus, and pupil magnification, hiatus, prescription and "
+                      "projection where known."),
     click.option("--scene", metavar="NAME", shell_complete=preset_completion("scene"),
                  help="Scene preset: camera or sensor, lens, f-number, distance, subject size, background; "
                       "options given explicitly override it."),

@@ -140,8 +140,9 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
             _fill(ctx, params, name, value)
         if found.sensor is not None:
             params["sensor"] = found.sensor
-        ctx.meta[CAMERA], ctx.meta[LENS] = found.camera, found.lens
-        lens = found.lens
+        lens = found.lens and equipment.set_member(
+            found.lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params else [])
+        ctx.meta[CAMERA], ctx.meta[LENS] = found.camera, lens
         if lens is not None:
             given_f = flatten(params.get("focal_length")) if "focal_length" in params else [lens.focal_min_mm]
             brought = equipment.lens_defaults(lens, focal_lengths=given_f,

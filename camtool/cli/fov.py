@@ -18,11 +18,12 @@ from camtool.cli.options import (
     squeeze_option,
 )
 from camtool.cli.params import flatten
+from camtool.geometry.projection import PROJECTIONS
 from camtool.plans.fov import field_of_view
 from camtool.render.columns import ANGLE, NUMBER, SMALL, Column
 
 KEYS = ["focal_length_mm", "horizontal_deg", "vertical_deg", "diagonal_deg", "equivalent_focal_length_mm",
-        "crop_factor", "sensor_width_mm", "sensor_height_mm"]
+        "crop_factor", "sensor_width_mm", "sensor_height_mm", "projection"]
 DISTANCE_KEYS = ["distance_mm", "magnification", "field_width_mm", "field_height_mm", "distance_from"]
 COLUMNS = [
     Column("focal_length_mm", "f", SMALL),
@@ -50,8 +51,11 @@ DISTANCE_COLUMNS = [
 @squeeze_option
 @distance_plane_option
 @lens_geometry_options
+@click.option("--projection", type=click.Choice(PROJECTIONS), default=None,
+              help="The lens's mapping (default: the --lens preset's, else rectilinear); a fisheye covers at most "
+                   "its field (the preset's, else 180°).")
 def fov(ctx: click.Context, focal_length, distance, magnification, extension, teleconverter, sensor, crop, squeeze,
-        distance_from, pupil_mag, hiatus, fmt, units, preset_files) -> Output:
+        distance_from, pupil_mag, hiatus, projection, fmt, units, preset_files) -> Output:
     """Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.
 
     Without -s the angles are for infinity focus, 2·atan(size / 2f). With -s the
@@ -65,6 +69,7 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
       camtool fov -f 100 -s 0.5m --format json
       camtool fov -f 100 -m 0.5,1,2
       camtool fov -f 50 --camera arri-alexa-35 --squeeze 2
+      camtool fov -f 8,15 --projection equisolid
 
     With -m the focus is set by the magnification (any m > 0): the lens sits
     f(1 + 1/m) from the subject, and the distance shown is that one (from the
@@ -72,6 +77,12 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
     focus focuses internally, and --extension and --teleconverter change the
     lens as in dof and focus (docs/closeup.md §2, §7); the angles are then
     those of the focal length at the focus.
+
+    A fisheye (--projection, or a lens preset's projection: equidistant
+    r = fθ, equisolid r = 2f·sin(θ/2), orthographic r = f·sin θ,
+    stereographic r = 2f·tan(θ/2)) covers the angle its mapping gives, at
+    most its field: an 8 mm circular fisheye on full frame, 180° every way.
+    The field at the subject is then 2u·tan(α/2), unbounded from 180°.
     """
     focal = required(ctx, focal_length, "-f")
     wanted_m = flatten(magnification)
@@ -86,12 +97,14 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
                              crop_factor=chosen.crop_factor, wanted=s if wanted else None,
                              by_magnification=bool(wanted_m), distance_from=distance_from, pupil_magnification=p,
                              hiatus_mm=delta, lens_preset=ctx.meta.get(LENS), extension_mm=extension,
-                             teleconverter=teleconverter, squeeze=squeeze)
+                             teleconverter=teleconverter, squeeze=squeeze, projection=projection)
     keys, columns = list(KEYS) + ["squeeze"] * (squeeze is not None), list(COLUMNS)
     if seen.at_distance:
         keys += DISTANCE_KEYS
         columns += DISTANCE_COLUMNS
+    mapping = seen.values["projection"]
+    extra = " · ".join(x for x in (lens_note, "" if mapping == "rectilinear" else f"{mapping} projection") if x)
     note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})" + (
                   f" · {squeeze:g}× anamorphic: angles of the de-squeezed frame" if squeeze else ""),
-                  distance_from if seen.at_distance else None, lens_note) if fmt == "table" else ""
+                  distance_from if seen.at_distance else None, extra) if fmt == "table" else ""
     return Output(rows_from(count, seen.values), columns, keys, note)

@@ -258,6 +258,29 @@ def resolve_equipment(*, scene: str | None = None, camera: str | None = None, le
     return Equipment(filled, body, glass, sensor_name)
 
 
+def set_member(lens: Any, *, focal_lengths: Sequence[float]) -> Any:
+    """The lens in use: a lens set's member at the one focal length given, any other lens as it is.
+
+    A set (a cine prime set, ``lens_db/README.md``) is one preset holding each
+    of its focal lengths; ``--lens SET -f 50`` picks its 50 mm, as does the
+    name ``SET@50``. No focal length, one the set does not have, or several
+    (each would be another lens) are refused, naming the members.
+    """
+    members = getattr(lens, "members", ())
+    if not members:
+        return lens
+    names = ", ".join(f"{m.focal_min_mm:g}" for m in members)
+    wanted = sorted(set(focal_lengths))
+    if len(wanted) != 1:
+        what = "is a set of lenses" if not wanted else "is a set of lenses, one per focal length"
+        raise InputError("focal_length", f"{{lens}} {lens.id} {what} ({names} mm): give one focal length with "
+                                         f"{{focal_length}}, or name the member, as {members[0].id}", usage=True)
+    found = lens.member(wanted[0])
+    if found is None:
+        raise InputError("focal_length", f"{wanted[0]:g} mm is not in the set {{lens}} {lens.id}: {names} mm")
+    return found
+
+
 def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any]) -> dict[str, float]:
     """What a lens brings that was left empty: a prime's focal length; a single-aperture lens's f-number, and a
     fixed (built-in) lens's widest.

@@ -303,7 +303,7 @@ def photo_answer(reading: Reading, *, path: str, distance_mm: float | None = Non
     if f is not None and n is not None and c is not None:
         _hyperfocal(row, f, n, c, model, distance_from, lens, exiftool, missing)
     if f is not None and size is not None:
-        _angles(row, f, s_view, size, lens, distance_from, missing, exiftool)
+        _angles(row, f, s_view, size, lens, distance_from, missing, exiftool, lens_preset)
     iso = reading.iso
     if exiftool and reading.iso_speed_ratings is not None:  # ExifTool's ISO is the 16-bit tag, 65535 included
         iso, row["iso"], row["iso_source"] = reading.iso_speed_ratings, reading.iso_speed_ratings, \
@@ -551,12 +551,14 @@ def _hyperfocal(row: dict[str, Any], f: float, n: float, c: float, model: str, d
 
 
 def _angles(row: dict[str, Any], f: float, s: float | None, size: SensorSize, lens: LensData | None,
-            distance_from: str, missing: list[Problem], exiftool: bool = False) -> None:
+            distance_from: str, missing: list[Problem], exiftool: bool = False, lens_preset: Any = None) -> None:
     """The angles of view across the sensor, and the field width at a finite focus distance.
 
     ExifTool's FOV corrects the focal length for the focus only when the
     distance exceeds f and gives the field width only below 10 km; the same
-    limits apply in its convention here.
+    limits apply in its convention here. A fisheye lens preset's angles are
+    those of its projection (docs/design.md §4.2), in camtool's convention
+    (ExifTool's formula is rectilinear).
     """
     from camtool.core.errors import DomainError
     from camtool.geometry.fov import view
@@ -567,10 +569,16 @@ def _angles(row: dict[str, Any], f: float, s: float | None, size: SensorSize, le
         distance = None
     try:
         seen = view(size.width_mm, size.height_mm, f, distance, distance_from, p, delta)
+        angles: Any = seen.angles
+        mapping = getattr(lens_preset, "projection", None)
+        if mapping not in (None, "rectilinear") and not exiftool:
+            from camtool.geometry.projection import fisheye_field_of_view
+
+            angles = fisheye_field_of_view(size.width_mm, size.height_mm, f, mapping, seen.magnification, p,
+                                           getattr(lens_preset, "field_max_deg", None))
     except (DomainError, ValueError) as error:
         missing.append(Problem(f"no angle of view ({_one_line(error)})"))
         return
-    angles = seen.angles
     row.update(horizontal_deg=angles.horizontal_deg, vertical_deg=angles.vertical_deg,
                diagonal_deg=angles.diagonal_deg)
     if seen.field_width_mm is not None and (not exiftool or (distance is not None and distance < 1e7)):

@@ -67,6 +67,8 @@ def summary(preset: Any) -> str:
     if kind == "lens":
         focal = (f"{preset.focal_min_mm:g}–{preset.focal_max_mm:g} mm" if preset.is_zoom
                  else f"{preset.focal_min_mm:g} mm")
+        if preset.members:
+            return "set: " + ", ".join(f"{m.focal_min_mm:g}" for m in preset.members) + " mm"
         stops = f" f/{preset.f_number_min:g}" if preset.f_number_min else ""
         return focal + stops + (" (prescription)" if preset.prescription is not None else "")
     if kind == "prescription":
@@ -119,8 +121,8 @@ def show_preset(*, database: Any, name: str, kind: str | None = None) -> PresetS
         fields["points"] = [list(point) for point in shipped.points] or None  # (metered s, extra stops)
         fields["aliases"] = list(shipped.aliases)
         return PresetShown("film", shipped.id, FILMS_ORIGIN, fields)
-    if kind:
-        preset = database.get(kind, name)
+    if kind or "@" in name:  # NAME@FOCAL: a member of a lens set
+        preset = database.get(kind or "lens", name)
     else:
         found = database.find(name)
         if not found:
@@ -138,7 +140,8 @@ def describe(preset: Any) -> dict[str, Any]:
         if dataclasses.is_dataclass(value):
             value = getattr(value, "id", value)  # a referenced preset (a camera's sensor, a scene's lens)
         elif isinstance(value, tuple):
-            value = list(value)
+            # a lens set's members are presets of their own (SET@FOCAL): named here, shown on their own
+            value = [getattr(v, "id", v) if dataclasses.is_dataclass(v) else v for v in value]
         if item.name not in ("data", "prescription", "optics"):
             fields[item.name] = value
     for derived in ("diagonal_mm", "crop_factor", "aspect_ratio", "pixel_pitch_mm", "megapixels"):

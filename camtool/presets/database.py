@@ -123,6 +123,8 @@ class Database:
         not exist.
         """
         kind = kind_of(kind)
+        if kind == "lens" and "@" in str(name):
+            return self._set_member(str(name))
         entry = self._index(kind).find(normalize(str(name)))
         if entry is None:
             if kind == "sensor":
@@ -131,6 +133,19 @@ class Database:
                     return self._build("camera", camera).sensor
             raise PresetNotFound(kind, str(name), self.suggestions(kind, str(name)))
         return self._build(kind, entry)
+
+    def _set_member(self, name: str) -> Lens:
+        """``SET@FOCAL``: the member of a lens set at that focal length (``cooke-s4i@50``)."""
+        base, _at, focal = name.rpartition("@")
+        lens = self.get("lens", base)
+        try:
+            wanted = float(focal.strip().removesuffix("mm"))
+        except ValueError:
+            wanted = float("nan")
+        found = lens.member(wanted) if wanted > 0 else None  # type: ignore[union-attr]
+        if found is None:
+            raise PresetNotFound("lens", name, [m.id for m in getattr(lens, "members", ())])
+        return found
 
     def sensor(self, name: str) -> Sensor:
         """A sensor format by name; a camera's name gives that camera's sensor."""
@@ -307,6 +322,8 @@ def _build_camera(db: Database, entry: _Entry) -> Camera:
 
 def _build_lens(db: Database, entry: _Entry) -> Lens:
     r = entry.record
+    if "set" in r:
+        return _build_lens_set(entry)
     focal_min = r.get("focal_min_mm", r.get("focal_length_mm"))
     focal_max = r.get("focal_max_mm", r.get("focal_length_mm"))
     assert focal_min is not None and focal_max is not None  # the schema requires one of the two spellings
@@ -328,7 +345,25 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         approximate=r.get("approximate", False), min_magnification=r.get("min_magnification"),
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
                           for row in r.get("close_focus", ())), t_number_min=r.get("t_number_min"),
-        tilt_max_deg=r.get("tilt_max_deg"), **_common(entry))
+        tilt_max_deg=r.get("tilt_max_deg"), focus_at_max_magnification_mm=r.get("focus_at_max_magnification_mm"),
+        projection=r.get("projection"), field_max_deg=r.get("field_max_deg"), **_common(entry))
+
+
+def _build_lens_set(entry: _Entry) -> Lens:
+    """A lens set and its members, each a prime named ``SET-ID@FOCAL`` (``cooke-s4i@50``)."""
+    r = entry.record
+    common = _common(entry)
+    shared = {"mount": r.get("mount"), "category": r.get("category"), "approximate": r.get("approximate", False),
+              "sensor_id": str(r["sensor"]) if "sensor" in r else None,
+              "source": common["source"], "notes": common["notes"], "origin": common["origin"], "tier": common["tier"]}
+    members = tuple(
+        Lens(f"{r['id']}@{row['focal_length_mm']:g}", f"{r['name']} {row['focal_length_mm']:g}mm",
+             row["focal_length_mm"], row["focal_length_mm"], row.get("f_number_min"), r.get("f_number_max"),
+             min_focus_mm=row.get("min_focus_mm"), max_magnification=row.get("max_magnification"),
+             t_number_min=row.get("t_number_min"), **shared)
+        for row in r["set"])
+    return Lens(r["id"], r["name"], members[0].focal_min_mm, members[-1].focal_min_mm, None, r.get("f_number_max"),
+                members=members, **{**shared, "aliases": common["aliases"]})
 
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:

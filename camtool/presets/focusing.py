@@ -10,22 +10,56 @@ length in use into a :class:`camtool.geometry.closeup.InternalFocus`
 - A zoom uses its ``close_focus`` row at that focal length, or interpolates
   linearly in focal length between the two rows around it (the
   magnification only where both rows publish one).
-- Where a closest focus is known but no magnification at that focal length,
-  the lens is taken to focus as a unit (κ = 0), refusing distances closer
-  than the published closest focus.
+- Where a zoom row gives a closest focus but no magnification, the row's
+  magnification is modelled: the unit-focusing magnification at that
+  distance, but never more than the lens's published maximum
+  (``max_magnification``, the largest over the zoom range). A long zoom end
+  focuses closer than a unit-focusing lens of its nominal focal length can
+  (the FE 24-70 GM II at 70 mm: 0.30 m, where unit focusing would give
+  0.59×, but Sony's maximum is 0.32×), so the cap is what keeps the model
+  from more magnification, and so less depth of field, than the lens has.
+  Where unit focusing cannot reach the published distance at all (D < 4f:
+  the Z 70-180 at 85 mm, 0.33 m), the row takes the published maximum and
+  the internal-focus model reaches it at that distance. Without a published
+  maximum either, the lens is taken to focus as a unit, stopped at the
+  published closest focus or at 1:1, whichever is farther.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from camtool.geometry.closeup import InternalFocus, internal_focus, magnification_branches
+from camtool.geometry.closeup import InternalFocus, internal_focus, internal_focus_between, magnification_branches
 
-__all__ = ["focus_model"]
+__all__ = ["focus_model", "row_magnification"]
 
 
-def _row_at(lens: Any, focal_length_mm: float) -> tuple[float, float | None] | None:
-    rows = sorted(lens.close_focus)
+def row_magnification(lens: Any, focal_length_mm: float, distance_mm: float, published: float | None,
+                      hiatus_mm: float = 0.0) -> float | None:
+    """The magnification a zoom row reaches at its closest focus: published, else modelled (None: neither).
+
+    Modelled: the unit-focusing magnification at the row's distance, capped at the
+    lens's published maximum; the published maximum where unit focusing cannot reach
+    the distance (D < 4f + δ).
+
+    Examples
+    --------
+    >>> from camtool.presets import load_db
+    >>> lens = load_db().get("lens", "sel2470gm2")  # Sony: 0.30 m at 70 mm, at most 0.32x
+    >>> row_magnification(lens, 70.0, 300.0, None)
+    0.32
+    """
+    if published is not None:
+        return float(published)
+    cap = getattr(lens, "max_magnification", None)
+    if distance_mm >= 4.0 * focal_length_mm + hiatus_mm:
+        unit = float(magnification_branches(focal_length_mm, distance_mm, hiatus_mm).low)
+        return unit if cap is None else min(unit, float(cap))
+    return None if cap is None else float(cap)
+
+
+def _row_at(lens: Any, focal_length_mm: float, delta: float) -> tuple[float, float | None] | None:
+    rows = [(f, d, row_magnification(lens, f, d, m, delta)) for f, d, m in sorted(lens.close_focus)]
     if not rows:
         return None
     for f, distance, m in rows:
@@ -38,8 +72,9 @@ def _row_at(lens: Any, focal_length_mm: float) -> tuple[float, float | None] | N
         return distance, m
     (f1, d1, m1), (f2, d2, m2) = below[-1], above[0]
     t = (focal_length_mm - f1) / (f2 - f1)
-    m = None if m1 is None or m2 is None else m1 + t * (m2 - m1)
-    return d1 + t * (d2 - d1), m
+    if m1 is None or m2 is None:
+        return d1 + t * (d2 - d1), None
+    return d1 + t * (d2 - d1), m1 + t * (m2 - m1)
 
 
 def focus_model(lens: Any, focal_length_mm: float) -> InternalFocus | None:
@@ -57,9 +92,13 @@ def focus_model(lens: Any, focal_length_mm: float) -> InternalFocus | None:
     delta = float(getattr(lens, "hiatus_mm", None) or 0.0)
     low = float(getattr(lens, "min_magnification", None) or 0.0)
     if getattr(lens, "close_focus", ()):
-        row = _row_at(lens, focal_length_mm)
+        row = _row_at(lens, focal_length_mm, delta)
         assert row is not None
         distance, m = row
+    elif getattr(lens, "focus_at_max_magnification_mm", None) is not None and low > 0.0:
+        # both ends of a lens without infinity focus are published (the MP-E 65: 0.24 m at 1x, 0.313 m at 5x)
+        return internal_focus_between(float(focal_length_mm), low, float(lens.min_focus_mm),
+                                      float(lens.max_magnification), float(lens.focus_at_max_magnification_mm))
     elif getattr(lens, "min_focus_mm", None) is not None and not lens.is_zoom:
         distance, m = lens.min_focus_mm, lens.max_magnification
     else:

@@ -41,7 +41,7 @@ from camtool.presets.schema import (
     suggest,
 )
 
-CACHE_FORMAT = 8
+CACHE_FORMAT = 10
 """Bumped whenever the record layout changes, so old cache files are ignored."""
 
 _CACHE_KIND = f"presets-{CACHE_FORMAT}"

@@ -267,6 +267,68 @@ def close_focus_rows(value: Any) -> list[dict[str, float]]:
     return out
 
 
+def projection_name(value: Any) -> str:
+    """A lens's mapping: rectilinear, equidistant, equisolid, orthographic or stereographic.
+
+    >>> projection_name("equisolid")
+    'equisolid'
+    """
+    from camtool.geometry.projection import PROJECTIONS
+
+    if value not in PROJECTIONS:
+        raise Bad(f"expected one of {', '.join(PROJECTIONS)}, got {show(value)}")
+    return str(value)
+
+
+def field_degrees(value: Any) -> float:
+    """A lens's whole field in degrees, more than 0 and at most 360."""
+    number = _real(value)
+    if not 0.0 < number <= 360.0:
+        raise Bad(f"must be more than 0 and at most 360 degrees, got {value!r}")
+    return number
+
+
+SET_FIELDS: dict[str, Callable[[Any], Any]] = {
+    "focal_length_mm": positive_mm,
+    "t_number_min": positive,
+    "f_number_min": positive,
+    "min_focus_mm": positive_mm,
+    "max_magnification": positive,
+}
+
+
+def set_members(value: Any) -> list[dict[str, float]]:
+    """A lens set's members, one per focal length: ``[{focal_length_mm[, t_number_min, f_number_min,
+    min_focus_mm, max_magnification]}]`` in increasing focal length (a cine prime set).
+
+    >>> set_members([{"focal_length_mm": 25, "t_number_min": 1.8, "min_focus_mm": 350}])
+    [{'focal_length_mm': 25.0, 't_number_min': 1.8, 'min_focus_mm': 350.0}]
+    >>> set_members([{"focal_length_mm": 50}, {"focal_length_mm": 35}])
+    Traceback (most recent call last):
+    ...
+    camtool.presets.schema.Bad: member 2: focal_length_mm must be greater than the member before (50)
+    """
+    if not isinstance(value, list) or not value:
+        raise Bad(f"expected a non-empty list of {{focal_length_mm[, t_number_min, min_focus_mm, ...]}}, "
+                  f"got {show(value)}")
+    out: list[dict[str, float]] = []
+    for number, raw in enumerate(value, start=1):
+        if not isinstance(raw, Mapping):
+            raise Bad(f"member {number} must be a mapping, got {show(raw)}")
+        record, problems = check_fields(raw, SET_FIELDS, ("focal_length_mm",))
+        if problems:
+            key, problem = problems[0]
+            raise Bad(f"member {number}, {key}: {problem}")
+        if out and record["focal_length_mm"] <= out[-1]["focal_length_mm"]:
+            raise Bad(f"member {number}: focal_length_mm must be greater than the member before "
+                      f"({out[-1]['focal_length_mm']:g})")
+        low, t_stop = record.get("f_number_min"), record.get("t_number_min")
+        if low is not None and t_stop is not None and t_stop < low:
+            raise Bad(f"member {number}: a T-stop cannot be below the f-number ({low:g})")
+        out.append(record)
+    return out
+
+
 def sensor_ref(value: Any) -> str | dict[str, Any]:
     """A sensor: the name of a sensor preset, or an inline ``{width_mm, height_mm[, coc_mm]}``."""
     if isinstance(value, Mapping):
@@ -387,12 +449,16 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "min_focus_mm": positive_mm,
         "max_magnification": positive,
         "min_magnification": positive,
+        "focus_at_max_magnification_mm": positive_mm,
         "close_focus": close_focus_rows,
+        "set": set_members,
         "t_number_min": positive,
         "equivalent_focal_length_mm": positive_mm,
         "pupil_magnification": positive,
         "hiatus_mm": finite,
         "tilt_max_deg": positive,
+        "projection": projection_name,
+        "field_max_deg": field_degrees,
         "prescription": reference,
         "sensor": reference,
         "mount": text,
@@ -516,7 +582,17 @@ def _check_camera(record: dict[str, Any]) -> list[tuple[str, str]]:
     return []
 
 
+_PER_MEMBER = ("focal_length_mm", "focal_min_mm", "focal_max_mm", "close_focus", "min_focus_mm",
+               "max_magnification", "min_magnification", "t_number_min", "f_number_min", "f_number_min_tele",
+               "f_number_max_tele", "focus_at_max_magnification_mm", "prescription")
+
+
 def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
+    if "set" in record:
+        clash = [key for key in _PER_MEMBER if key in record]
+        if clash:
+            return [(clash[0], "a lens set gives its focal lengths, stops and close focus per member, in set")]
+        return []
     has_prime = "focal_length_mm" in record
     has_zoom = "focal_min_mm" in record or "focal_max_mm" in record
     if has_prime and has_zoom:
@@ -549,6 +625,14 @@ def _check_lens(record: dict[str, Any]) -> list[tuple[str, str]]:
     low, high = record.get("min_magnification"), record.get("max_magnification")
     if low is not None and high is not None and low > high:
         return [("min_magnification", f"must be <= max_magnification ({high:g})")]
+    if "field_max_deg" in record and record.get("projection", "rectilinear") == "rectilinear":
+        return [("field_max_deg", "applies only to a fisheye (projection other than rectilinear)")]
+    far = record.get("focus_at_max_magnification_mm")
+    if far is not None and (low is None or high is None or record.get("min_focus_mm") is None):
+        return [("focus_at_max_magnification_mm",
+                 "applies only to a lens without infinity focus (min_magnification, max_magnification, min_focus_mm)")]
+    if far is not None and far < record["min_focus_mm"]:
+        return [("focus_at_max_magnification_mm", f"must be >= min_focus_mm ({record['min_focus_mm']:g})")]
     if "close_focus" in record:
         return _check_close_focus(record)
     return []
@@ -783,6 +867,10 @@ class Lens:
     t_number_min: float | None = None  # widest T-stop (cinema lenses)
     tilt_max_deg: float | None = None  # tilt range, ± degrees (tilt-shift lenses)
     f_number_max_tele: float | None = None  # smallest aperture at the long end, where it differs
+    focus_at_max_magnification_mm: float | None = None  # a lens focusing farther at max than at min magnification
+    projection: str | None = None  # a fisheye's mapping (camtool.geometry.projection); None: rectilinear
+    members: tuple[Lens, ...] = field(default=(), compare=False, repr=False)  # a lens set's lenses
+    field_max_deg: float | None = None  # a fisheye's whole field (its image circle), degrees
 
     kind = "lens"
 
@@ -795,8 +883,18 @@ class Lens:
 
     @property
     def is_zoom(self) -> bool:
-        """True when the focal length can change."""
-        return self.focal_max_mm > self.focal_min_mm
+        """True when the focal length can change (a lens set's members are primes: not a zoom)."""
+        return self.focal_max_mm > self.focal_min_mm and not self.members
+
+    def member(self, focal_length_mm: float) -> Lens | None:
+        """The member of a lens set at ``focal_length_mm`` (None: no such member, or not a set).
+
+        >>> one = Lens("s@25", "S 25mm", 25.0, 25.0, t_number_min=1.8)
+        >>> Lens("s", "S", 25.0, 50.0, members=(one,)).member(25.0) is one
+        True
+        """
+        return next((m for m in self.members if abs(m.focal_min_mm - focal_length_mm) <= 1e-6 * focal_length_mm),
+                    None)
 
     @property
     def focal_length_mm(self) -> float | None:
