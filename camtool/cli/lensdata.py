@@ -15,7 +15,7 @@ import click
 
 from camtool.cli.equipment import LENS
 from camtool.cli.options import stack
-from camtool.cli.params import PupilMagnificationType, SignedLengthType, ToleranceType
+from camtool.cli.params import CriterionType, PupilMagnificationType, SignedLengthType, ToleranceType
 from camtool.cli.params import WavelengthType as WavelengthType  # where the commands import it
 from camtool.dof.ladder import LensData as LensData
 from camtool.plans import equipment
@@ -67,6 +67,11 @@ model_options = stack(
                       "given, must agree within 1%)."),
 )
 """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
+
+criterion_option = click.option(
+    "--criterion", "criterion", type=CriterionType(), metavar="mtf:LEVEL@FREQ",
+    help="Sharp where the perfect lens's MTF at FREQ (lp/mm on the sensor, or coc: 1/c) is at least LEVEL; "
+         "runs the wave model (default mtf:0.181@coc, docs/wave.md).")
 
 
 def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,

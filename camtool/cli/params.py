@@ -210,6 +210,23 @@ class PointType(click.ParamType):
         return distance, height
 
 
+class CriterionType(click.ParamType):
+    """A contrast criterion ``mtf:LEVEL@FREQ`` (:func:`camtool.core.units.parse_criterion`)."""
+
+    name = "criterion"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from camtool.core.units import parse_criterion
+        from camtool.dof.wave import Criterion
+
+        if isinstance(value, Criterion):
+            return value
+        try:
+            return Criterion(*parse_criterion(str(value)))
+        except UnitError as error:
+            self.fail(str(error), param, ctx)
+
+
 class ToleranceType(click.ParamType):
     """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
 

@@ -45,6 +45,12 @@ MAGNIFICATION = (1.0e-9, 1000.0)
 EXTENSION_MM = (0.0, 10_000.0)
 """Extension tubes or bellows behind a lens: up to 10 m, beyond any bellows made (and any magnification above)."""
 
+MTF_LEVEL = (0.05, 0.95)
+"""A contrast level of a criterion ``mtf:LEVEL@FREQ``: below 5 % the first crossing of a defocused MTF is ill-defined."""
+
+FREQUENCY_LPMM = (0.1, 5000.0)
+"""A spatial frequency on the sensor in line pairs per mm: a large plate seen far off to past a phone sensor's cut-off."""
+
 
 def in_range(value: float, bounds: tuple[float, float], allow_inf: bool = False) -> bool:
     """Whether ``value`` lies in the closed interval ``bounds`` (infinity only if ``allow_inf``; NaN never)."""

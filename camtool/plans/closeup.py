@@ -213,7 +213,7 @@ def _array(values: list[float]) -> Any:
 
 def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, lens: Any, diffraction: bool,
              wavelength_nm: float, tolerance: float, pupil_magnification: float, direct: bool = False,
-             nominal_focal_mm: Any = None, lens_preset: Any = None) -> list[dict[str, Any]]:
+             nominal_focal_mm: Any = None, lens_preset: Any = None, criterion: Any = None) -> list[dict[str, Any]]:
     """Depth of field of every planned row (from the lens plane, shifted to the sensor plane when asked).
 
     With ``diffraction`` each row gets its Airy disc, diffraction-limit
@@ -264,7 +264,8 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
         plane = distance_from if direct else "lens"
         s = pick(setting.sensor_distance_mm if plane == "sensor" else setting.lens_distance_mm)
         try:
-            result = depth_of_field(model, f, n, pick(cs), s, plane, lens, diffraction, wavelength_nm, tolerance)
+            result = depth_of_field(model, f, n, pick(cs), s, plane, lens, diffraction, wavelength_nm, tolerance,
+                                    criterion)
         except DomainError as error:
             raise _unreachable(error, direct, setting, sharp) from None
         limits = result.limits
