@@ -219,7 +219,7 @@ def wave_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any,
         raise ContrastUnreachable(pick[0], pick[1], criterion, pick[2], float(wavelength_nm))
     scale = 8.0 * lam / (aperture * aperture)
     k = scale * w_focus
-    hyper = _hyperfocal(f, aperture, nu, lam, scale, k, criterion.level)
+    hyper = _hyperfocal(f, aperture, nu, lam, scale, criterion.level)
     with np.errstate(all="ignore"):
         near = u / (1.0 + k * u)
         near = np.where(np.isinf(u), 1.0 / k, near)
@@ -245,13 +245,20 @@ def wave_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any,
     return limits
 
 
-def _hyperfocal(f: Any, aperture: Any, nu: Any, lam: float, scale: Any, k_focus: Any, level: float) -> Any:
-    """H from the lens: 1/k at the sensor position of a focus at H (a fixed point, two steps from the scene's own k)."""
+def _hyperfocal(f: Any, aperture: Any, nu: Any, lam: float, scale: Any, level: float) -> Any:
+    """H from the lens: 1/k at the sensor position of a focus at H.
+
+    A fixed point, started from the sensor at f (a focus at infinity) and
+    taken two steps (each moves v by about f²/H, so the third is below
+    rounding): a function of the lens and the criterion alone, the same
+    whatever the focus of the scene.
+    """
     import numpy as np
 
     from camtool.optics.transfer import defocus_at_level
 
-    h = 1.0 / k_focus
+    w = defocus_at_level(nu * lam * f / aperture, level)
+    h = np.where(np.isfinite(w), 1.0 / (scale * w), 4.0 * f)
     for _ in range(2):
         with np.errstate(all="ignore"):
             v_h = np.where(h > 1.5 * f, f / (1.0 - f / h), 3.0 * f)

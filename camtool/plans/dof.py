@@ -232,7 +232,7 @@ def _closeup_table(scene: _Scene, model: str) -> DofTable:
 def _hyperfocal_model(model: str, lens: Any, rows: Any) -> str | None:
     """Under auto, when some row's limits came from a cheaper rung: the one rung the H column is computed by."""
     rung = hyperfocal_rung(lens)
-    if model != "auto" or all(str(row["model"]).split("+")[0] == rung for row in rows):
+    if model != "auto" or all(str(row["model"]).split("+")[0] in (rung, "wave") for row in rows):  # wave: its own H
         return None
     return rung
 
