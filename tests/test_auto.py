@@ -83,6 +83,8 @@ def audit(scenes, reference_model) -> tuple[float, float, list]:
     for scene in scenes:
         reference = outcome(reference_model(scene[4]), scene)
         auto = outcome("auto", scene)
+        if not isinstance(auto, type) and "wave" in str(auto.model):
+            continue  # diffraction dominates: judged by contrast, not against the root-sum-square (test_wave.py)
         total += 1
         if isinstance(reference, type) or isinstance(auto, type):
             agree = reference == auto

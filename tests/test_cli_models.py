@@ -16,12 +16,12 @@ DGAUSS = str(Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml"
 
 def test_model_all_rows_structure() -> None:
     rows = run_json("dof", "-N", "2.8", "-s", "2", "--coc", "0.03", "--prescription", DGAUSS, "--model", "all")
-    assert [r["model"] for r in rows] == ["approx", "thin", "paraxial", "raytrace"]
+    assert [r["model"] for r in rows] == ["approx", "thin", "paraxial", "raytrace", "wave"]
     for row in rows:
         assert {"model", "error_estimate", "difference_pct", "time_per_evaluation_s", "near_mm", "far_mm",
                 "total_mm"} <= set(row)
         assert row["time_per_evaluation_s"] > 0
-    assert rows[-1]["difference_pct"] == 0.0
+    assert rows[-2]["difference_pct"] == 0.0  # raytrace, the reference; wave follows
     assert rows[0]["focal_length_mm"] == pytest.approx(100.00375702793)
 
 
@@ -34,8 +34,8 @@ def test_model_all_table_names_the_reference() -> None:
 
 def test_model_all_over_several_scenes_groups_models_per_scene() -> None:
     rows = run_json("dof", "-f", "50", "-N", "4,8", "-s", "3", "--model", "all")
-    assert [(r["f_number"], r["model"]) for r in rows] == [(4.0, "approx"), (4.0, "thin"), (8.0, "approx"),
-                                                          (8.0, "thin")]
+    assert [(r["f_number"], r["model"]) for r in rows] == [(4.0, "approx"), (4.0, "thin"), (4.0, "wave"),
+                                                          (8.0, "approx"), (8.0, "thin"), (8.0, "wave")]
 
 
 def test_footer_names_model_and_estimate() -> None:
@@ -44,9 +44,10 @@ def test_footer_names_model_and_estimate() -> None:
 
 
 def test_diffraction_and_wavelength_units() -> None:
-    (a,) = run_json("dof", "-f", "50", "-N", "16", "-s", "3", "--diffraction", "--wavelength", "0.55um")
-    (b,) = run_json("dof", "-f", "50", "-N", "16", "-s", "3", "--diffraction", "--wavelength", "550nm")
-    (plain,) = run_json("dof", "-f", "50", "-N", "16", "-s", "3")
+    # f/11: the Airy disc (0.0148 mm) is below c/√2 (0.0204 mm), so auto keeps the root-sum-square add-on
+    (a,) = run_json("dof", "-f", "50", "-N", "11", "-s", "3", "--diffraction", "--wavelength", "0.55um")
+    (b,) = run_json("dof", "-f", "50", "-N", "11", "-s", "3", "--diffraction", "--wavelength", "550nm")
+    (plain,) = run_json("dof", "-f", "50", "-N", "11", "-s", "3")
     assert a == b and a["model"] == "thin+diffraction"
     assert a["total_mm"] < plain["total_mm"]
 

@@ -96,7 +96,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
       camtool dof --lens mp-e-65 -N 2.8 -m 1,2,5 --diffraction
       camtool dof -f 100 -N 8,16 -s 400mm --diffraction
       camtool dof -f 50 -N 8 -s 1m --extension 25mm --teleconverter 1.4
-      camtool dof -f 50 -N 8,16,32 -s 3m --criterion mtf:0.3@coc
+      camtool dof -f 50 -N 8,16,22 -s 3m --criterion mtf:0.3@coc
 
     With -m (any m > 0) or close up, the table shows the magnification and
     the working f-number N(1 + m/P). A lens preset with a published closest
