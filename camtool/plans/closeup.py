@@ -211,6 +211,18 @@ def _array(values: list[float]) -> Any:
     return np.asarray(values, dtype=float)
 
 
+def _contrast_reached(f_number: float, coc_mm: float, magnification: float, criterion: Any,
+                      wavelength_nm: float) -> bool:
+    """Whether the wave rung's in-focus MTF reaches its criterion (a row the Airy disc fills may still be sharp)."""
+    return f_number < _contrast_limit(coc_mm, magnification, criterion, wavelength_nm)
+
+
+def _contrast_limit(coc_mm: float, magnification: float, criterion: Any, wavelength_nm: float) -> float:
+    from camtool.dof.wave import DEFAULT_CRITERION, largest_contrast_f_number
+
+    return float(largest_contrast_f_number(criterion or DEFAULT_CRITERION, coc_mm, magnification, wavelength_nm))
+
+
 def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, lens: Any, diffraction: bool,
              wavelength_nm: float, tolerance: float, pupil_magnification: float, direct: bool = False,
              nominal_focal_mm: Any = None, lens_preset: Any = None, criterion: Any = None) -> list[dict[str, Any]]:
@@ -249,8 +261,13 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
             rows[i].update({"airy_mm": d.airy_mm, "diffraction_limit_f_number": d.limit_f_number,
                             "wave_dof_mm": wave_depth_mm(n, m, pupil, wavelength_nm) if m > 0 else math.inf,
                             "reason": None})
-            if d.sharp:
+            by_contrast = model in ("auto", "wave") and not d.sharp and _contrast_reached(n, ci, m, criterion,
+                                                                                          wavelength_nm)
+            if d.sharp or by_contrast:  # auto runs wave where the Airy disc dominates (camtool.dof.ladder)
                 sharp.append(i)
+            elif model in ("auto", "wave"):
+                rows[i]["reason"] = (f"nothing sharp: even in focus the MTF misses the contrast criterion; below "
+                                     f"f/{_contrast_limit(ci, m, criterion, wavelength_nm):.3g} leaves depth")
             else:
                 rows[i]["reason"] = (f"nothing sharp: the Airy disc ({d.airy_mm:.3g} mm) fills the CoC "
                                      f"({ci:.3g} mm); below f/{d.limit_f_number:.3g} leaves depth")
