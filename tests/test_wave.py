@@ -194,3 +194,21 @@ def test_cli_criterion() -> None:
     assert bad.exit_code == 2
     out = run("dof", "-f", "50", "-N", "8", "-s", "3m", "--model", "all", "--format", "json")
     assert '"model": "wave"' in out.output
+
+
+def test_hyperfocal_by_contrast() -> None:
+    from camtool.plans.depth import hyperfocal_plan
+
+    p = hyperfocal_plan(model="auto", focal_length_mm=50.0, f_number=16.0, coc_mm=0.03, diffraction=True,
+                        distance_from="lens")
+    assert p.model == "wave"
+    assert p.hyperfocal_mm == pytest.approx(wave_dof(50.0, 16.0, 0.03, math.inf, "lens").hyperfocal_mm, rel=1e-12)
+    assert wave_dof(50.0, 16.0, 0.03, p.hyperfocal_mm, "lens").far_mm == math.inf
+    rss = hyperfocal_plan(model="thin", focal_length_mm=50.0, f_number=16.0, coc_mm=0.03, diffraction=True,
+                          distance_from="lens")
+    assert rss.model == "thin+diffraction"
+    # thin + root-sum-square: H = f²/(N·c′) + f with c′ = √(c² − (2.44λN)²)
+    usable = math.sqrt(0.03 ** 2 - (2.44 * 550e-6 * 16.0) ** 2)
+    assert rss.hyperfocal_mm == pytest.approx(50.0 ** 2 / (16.0 * usable) + 50.0, rel=1e-12)
+    out = run("hyperfocal", "-f", "50", "-N", "200", "--diffraction")  # the unattainable H: now an error
+    assert out.exit_code == 2 and "below f/37.1" in out.output

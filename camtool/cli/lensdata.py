@@ -51,14 +51,20 @@ hiatus_option = click.option(
 lens_geometry_options = stack(pupil_mag_option, hiatus_option)
 """``--pupil-mag`` and ``--hiatus`` alone, for commands that focus but compute no depth of field."""
 
+diffraction_options = stack(
+    click.option("--diffraction/--no-diffraction", default=False, show_default=True,
+                 help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
+                      "√(c² − airy²)); under auto the wave model where it exceeds c/√2; says so when nothing "
+                      "can be sharp."),
+    click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
+                 help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+)
+"""``--diffraction`` and ``--wavelength``."""
+
 model_options = stack(
     click.option("--tolerance", type=ToleranceType(), default="1%", show_default=True,
                  help="auto: the largest estimated error accepted, relative to the depth of field (1% or 0.01)."),
-    click.option("--diffraction/--no-diffraction", default=False, show_default=True,
-                 help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
-                      "√(c² − airy²)); says so when nothing can be sharp."),
-    click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-                 help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+    diffraction_options,
     pupil_mag_option,
     hiatus_option,
     click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",

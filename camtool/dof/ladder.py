@@ -214,12 +214,13 @@ def hyperfocal_choices() -> tuple[str, ...]:
     Examples
     --------
     >>> hyperfocal_choices()
-    ('approx', 'thin', 'thick', 'auto')
+    ('approx', 'thin', 'thick', 'wave', 'auto')
     """
     return (*(rung.name for rung in rungs.RUNGS if rung.hyperfocal_help), "auto")
 
 
-HYPERFOCAL_AUTO_HELP = "thick when that lens data is known, else thin (the rung auto uses at and beyond H)."
+HYPERFOCAL_AUTO_HELP = ("thick when that lens data is known, else thin (the rung auto uses at and beyond H); wave with "
+                        "--diffraction or --criterion.")
 
 
 def hyperfocal_rung(lens: LensData | None = None) -> str:
@@ -254,8 +255,18 @@ def hyperfocal(
     coc_mm: Any,
     distance_from: str = "sensor",
     lens: LensData | None = None,
+    diffraction: bool = False,
+    wavelength_nm: float = 550.0,
+    criterion: Any = None,
 ) -> Hyperfocal:
     """Hyperfocal distance H in mm by a closed-form rung, and the near limit when focused at H.
+
+    With ``diffraction`` or a ``criterion``, ``auto`` is ``wave``: the
+    hyperfocal distance by contrast, diffraction and defocus together (a
+    stopped-down lens gets the H it can reach, or
+    :class:`camtool.dof.wave.ContrastUnreachable` with the largest f-number
+    that has one); a geometric rung named with ``diffraction`` adds the Airy
+    disc by root-sum-square instead.
 
     H in the chosen plane is where the far limit first reaches infinity: the
     limits of a focus at infinity carry it, and focusing there gives the near
@@ -292,10 +303,13 @@ def hyperfocal(
     known = None if lens is None else lens.thick_parameters()
     p, delta = known if known is not None else (1.0, 0.0)
     data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
-    rung = hyperfocal_rung(lens) if model == "auto" else model
-    at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data)
+    by_contrast = model == "wave" or (model == "auto" and (diffraction or criterion is not None))
+    rung = "wave" if by_contrast else hyperfocal_rung(lens) if model == "auto" else model
+    extra = {"diffraction": diffraction and not by_contrast, "wavelength_nm": wavelength_nm, "criterion": criterion}
+    at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data,
+                                 **extra)
     h = at_infinity.limits.hyperfocal_mm
-    at_h = depth_of_field(rung, focal_length_mm, f_number, coc_mm, h, distance_from, lens=data)
+    at_h = depth_of_field(rung, focal_length_mm, f_number, coc_mm, h, distance_from, lens=data, **extra)
     return Hyperfocal(h, at_h.limits.near_mm, at_h.model)
 
 

@@ -178,7 +178,8 @@ RUNGS: tuple[Rung, ...] = (
          "real rays", _has_prescription, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
     Rung("wave", _wave, ("pupil", "hiatus", "aberrations"),
          "perfect thin lens, sharp where its defocused MTF meets --criterion (diffraction and defocus together)",
-         contrast=True),
+         hyperfocal_help="by contrast: where the far limit's MTF meets --criterion (auto with --diffraction or "
+                         "--criterion)", contrast=True),
 )
 """The rungs, cheapest (and least complete) first."""
 
