@@ -212,3 +212,24 @@ def test_hyperfocal_by_contrast() -> None:
     assert rss.hyperfocal_mm == pytest.approx(50.0 ** 2 / (16.0 * usable) + 50.0, rel=1e-12)
     out = run("hyperfocal", "-f", "50", "-N", "200", "--diffraction")  # the unattainable H: now an error
     assert out.exit_code == 2 and "below f/37.1" in out.output
+
+
+def test_contrast_optimum_is_the_best_f_number_and_balances_the_ends() -> None:
+    from camtool.dof.wave import contrast_optimum
+
+    r = contrast_optimum(150.0, 2000.0, math.inf, 20.0, "lens")
+    assert r.distance_mm == pytest.approx(4000.0, rel=1e-12)  # 1/u = (1/2000 + 0)/2
+    for x in (2000.0, 1e30):  # the same contrast at both ends, an mpmath-checked OTF
+        assert contrast_at(150.0, r.f_number, r.distance_mm, x, 20.0) == pytest.approx(r.mtf, abs=1e-9)
+    for n in (r.f_number * 0.97, r.f_number * 1.03):  # a local maximum
+        assert contrast_at(150.0, n, r.distance_mm, 2000.0, 20.0) < r.mtf
+    assert r.mtf == pytest.approx(_autocorrelation(20.0 * 550e-6 * r.working_f_number, r.defocus_waves), abs=1e-10)
+
+
+def test_cli_focus_optimum_by_contrast() -> None:
+    import json
+
+    out = run("focus", "-f", "150", "--near", "2m", "--far", "inf", "--optimum", "--criterion", "mtf:0.1@20",
+              "--format", "json")
+    (row,) = json.loads(out.stdout)
+    assert row["criterion_met"] is True and row["frequency_lpmm"] == 20.0 and row["f_number"] > 40
