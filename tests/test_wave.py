@@ -233,3 +233,29 @@ def test_cli_focus_optimum_by_contrast() -> None:
               "--format", "json")
     (row,) = json.loads(out.stdout)
     assert row["mtf"] > row["mtf_level"] == 0.1 and row["frequency_lpmm"] == 20.0 and row["f_number"] > 40
+
+
+def test_contrast_depth_of_a_rail_frame_reduces_to_the_quarter_wave_depth() -> None:
+    from camtool.dof.closeup import wave_depth_mm
+    from camtool.dof.wave import contrast_depth_mm
+
+    for n, m in ((8.0, 1.0), (4.0, 3.0), (2.8, 0.5)):
+        n_w = n * (1.0 + m)
+        nu = 0.5 / (550e-6 * n_w)  # half the cut-off, where a quarter wave leaves 0.2875 of contrast
+        quarter = Criterion(defocus_mtf(0.5, 0.25), nu)
+        assert contrast_depth_mm(n, m, quarter) == pytest.approx(wave_depth_mm(n, m), rel=1e-9)
+
+
+def test_cli_stack_by_contrast() -> None:
+    import json
+
+    from camtool.dof.wave import contrast_depth_mm
+
+    out = run("stack", "-m", "1", "-N", "8", "--depth", "5mm", "--criterion", "mtf:0.3@50", "--overlap", "0",
+              "--format", "json")
+    rows = json.loads(out.stdout)
+    step = contrast_depth_mm(8.0, 1.0, Criterion(0.3, 50.0))
+    assert len(rows) == math.ceil(5.0 / step) and rows[1]["step_mm"] == pytest.approx(step, rel=1e-12)
+    assert rows[0]["criterion"] == "mtf:0.3@50"
+    bad = run("stack", "-f", "24", "-N", "11", "--near", "0.5", "--far", "inf", "--criterion", "mtf:0.3@50")
+    assert bad.exit_code == 2 and "rail stack" in bad.output
