@@ -259,3 +259,33 @@ def test_cli_stack_by_contrast() -> None:
     assert rows[0]["criterion"] == "mtf:0.3@50"
     bad = run("stack", "-f", "24", "-N", "11", "--near", "0.5", "--far", "inf", "--criterion", "mtf:0.3@50")
     assert bad.exit_code == 2 and "rail stack" in bad.output
+
+
+def test_the_comparison_table_of_docs_wave_md() -> None:
+    """Every cell of docs/wave.md's root-sum-square table, recomputed."""
+    from pathlib import Path
+
+    from camtool.core.errors import DomainError
+
+    text = (Path(__file__).parent.parent / "docs" / "wave.md").read_text(encoding="utf-8")
+    rows = [line for line in text.splitlines() if line.startswith("| ") and line[2].isdigit()]
+    assert len(rows) >= 10
+
+    def shown(value: float | None) -> str:
+        return "nothing sharp" if value is None else "∞" if math.isinf(value) else f"{value:.4g}"
+
+    for line in rows:
+        cells = [cell.strip() for cell in line.strip("|").split("|")]
+        f, n, c, s = (float(x) for x in cells[:4])
+        totals = []
+        for call in (lambda: depth_of_field("thin", f, n, c, s, "lens").limits.total_mm,
+                     lambda: depth_of_field("thin", f, n, c, s, "lens", diffraction=True).limits.total_mm,
+                     lambda: wave_dof(f, n, c, s, "lens").total_mm):
+            try:
+                totals.append(call())
+            except DomainError:
+                totals.append(None)
+        assert cells[4:7] == [shown(t) for t in totals], line
+        rss, wave = totals[1:]
+        if rss is not None and wave is not None and math.isfinite(wave):
+            assert cells[7] == f"{(rss / wave - 1) * 100:+.0f} %", line
