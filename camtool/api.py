@@ -44,6 +44,7 @@ from camtool.core.ranges import (
     F_NUMBER,
     FOCAL_LENGTH_MM,
     MAGNIFICATION,
+    MTF_LEVEL,
     PIXEL_PITCH_UM,
     SENSOR_SIDE_MM,
     describe,
@@ -58,6 +59,7 @@ from camtool.geometry.compose import Composition
 from camtool.geometry.fov import FieldOfView
 from camtool.geometry.thinlens import FocusGeometry
 from camtool.plans.photo import PhotoAnswer
+from camtool.plans.pinhole import PinholePlan
 from camtool.plans.stack import BracketStack, RailStack
 from camtool.plans.tilt import TiltAnswer
 
@@ -75,6 +77,7 @@ __all__ = [
     "HyperfocalDistance",
     "LensData",
     "PhotoAnswer",
+    "PinholePlan",
     "RailStack",
     "StarLimits",
     "TiltAnswer",
@@ -90,6 +93,7 @@ __all__ = [
     "focus_for_magnification",
     "hyperfocal_distance",
     "photo",
+    "pinhole",
     "plan_exposure",
     "preset",
     "preset_names",
@@ -178,7 +182,11 @@ OptionalPixelPitchUm = Annotated[Any, _Kind("number", optional=True, bounds=PIXE
 ShutterTime = Annotated[Any, _Kind("number", bounds=SHUTTER_RANGE_S, unit="s")]
 Diagonal = Annotated[Any, _Kind("number", bounds=(0.5, 2000.0 * math.sqrt(2.0)), unit="mm")]
 DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
-Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
+Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace", "wave"))]
+ContrastLevel = Annotated[float, _Kind("number", scalar=True, bounds=MTF_LEVEL)]
+"""A contrast (MTF) level, as ``pinhole --contrast`` takes it: 0.05 to 0.95."""
+RealFilmDistance = Annotated[float, _Kind("number", scalar=True, bounds=FOCAL_LENGTH_MM, unit="mm")]
+EV100 = Annotated[float, _Kind("number", scalar=True, bounds=(-10.0, 25.0), zero_ok=True)]
 Text = Annotated[str, _Kind("text")]
 OptionalAngle = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(-89.9, 89.9), unit="°",
                                      zero_ok=True)]
@@ -465,6 +473,7 @@ def depth_of_field(
     diffraction: Flag = False,
     wavelength_nm: Wavelength = 550.0,
     tolerance: Tolerance = 0.01,
+    contrast_criterion: OptionalText = None,
 ) -> DepthOfField:
     """Near and far limits of acceptable sharpness in mm, by a rung of the model ladder.
 
@@ -480,6 +489,8 @@ def depth_of_field(
     pupil_magnification, hiatus_mm : lens data for the ``thick`` rung (P = exit/entrance pupil diameter)
     prescription : a :class:`camtool.optics.prescription.Prescription` for ``paraxial`` and ``raytrace``
     diffraction : bool, add the Airy disc to the blur (λ = ``wavelength_nm``)
+    contrast_criterion : str or None, ``mtf:LEVEL@FREQ`` as ``--criterion`` takes it: the ``wave`` rung's
+        criterion (given, ``auto`` runs ``wave``; docs/wave.md)
 
     Returns
     -------
@@ -492,13 +503,30 @@ def depth_of_field(
     >>> r = depth_of_field(50, 8, 0.03, 3000, model="thin")
     >>> round(r.total_mm)
     1779
+    >>> depth_of_field(50, 8, 0.03, 3000, contrast_criterion="mtf:0.3@coc").model
+    'wave'
     """
     from camtool.dof.ladder import depth_of_field as run
 
     lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    criterion = _criterion(contrast_criterion)
     result = run(model, focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
-                 wavelength_nm, tolerance)
+                 wavelength_nm, tolerance, criterion)
     return DepthOfField(*result.limits, result.model, result.error_estimate)
+
+
+def _criterion(text: str | None) -> Any:
+    """A ``mtf:LEVEL@FREQ`` criterion read by the one parser (:func:`camtool.core.units.parse_criterion`)."""
+    if text is None:
+        return None
+    from camtool.core.units import UnitError, parse_criterion
+    from camtool.dof.wave import Criterion
+
+    try:
+        return Criterion(*parse_criterion(text))
+    except UnitError as error:
+        raise DomainError("contrast_criterion", text, "mtf:LEVEL@FREQ, e.g. mtf:0.3@40 or mtf:0.181@coc",
+                          detail=str(error)) from None
 
 
 class HyperfocalDistance(NamedTuple):
@@ -944,3 +972,30 @@ def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_m
     return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
                 overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,
                 pupil_magnification=pupil_magnification or 1.0, distance_from=distance_from, lens_name=lens)
+
+
+@_checked
+def pinhole(film_distance_mm: RealFilmDistance, *, subject_distance_mm: RealDistanceOrInf = math.inf,
+            wavelength_nm: RealWavelength = 550.0, contrast_level: ContrastLevel = 0.5,
+            sensor_width_mm: SensorSideReal = 36.0, sensor_height_mm: SensorSideReal = 24.0, ev100: EV100 = 15.0,
+            iso: ISOReal = 100.0) -> PinholePlan:
+    """The pinhole camera, as ``camtool pinhole``: the best diameter by contrast and the published rules beside it.
+
+    ``rows`` holds the optimum (the diameter whose MTF reaches ``contrast_level`` at the highest frequency on
+    the film) and the Airy, Rayleigh and Young rules, each with its f-number, blur, defocus in waves, the
+    frequency at that contrast, the contrast at which it is itself best, the exposure time at ``ev100`` and
+    ``iso`` and the angles of view (docs/wave.md).
+
+    Examples
+    --------
+    >>> p = pinhole(100.0)
+    >>> [row["method"] for row in p.rows]
+    ['optimum', 'airy', 'rayleigh', 'young']
+    >>> round(p.rows[2]["pinhole_mm"], 4)  # Rayleigh: 1.9·√(0.00055 mm × 100 mm)
+    0.4456
+    """
+    from camtool.plans.pinhole import pinhole_plan
+
+    return pinhole_plan(film_distance_mm=film_distance_mm, subject_distance_mm=subject_distance_mm,
+                        wavelength_nm=wavelength_nm, level=contrast_level, sensor_width_mm=sensor_width_mm,
+                        sensor_height_mm=sensor_height_mm, ev100=ev100, iso=iso)

@@ -36,6 +36,7 @@ COMMANDS = {
     "exif": "camtool.cli.exif",
     "chart": "camtool.cli.chart",
     "stack": "camtool.cli.stack",
+    "pinhole": "camtool.cli.pinhole",
 }
 
 
