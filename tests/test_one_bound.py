@@ -34,6 +34,9 @@ STANDS_FOR = {
     "rule_constant": ("stars", "rule_constant"),
     "npf_k": ("stars", "npf_k"),
     "iso": ("exposure", "iso"),
+    "film_distance_mm": ("pinhole", "film_distance"),
+    "contrast_level": ("pinhole", "contrast"),
+    "ev100": ("pinhole", "ev100"),
 }
 
 
