@@ -277,15 +277,26 @@ def test_the_comparison_table_of_docs_wave_md() -> None:
     for line in rows:
         cells = [cell.strip() for cell in line.strip("|").split("|")]
         f, n, c, s = (float(x) for x in cells[:4])
-        totals = []
-        for call in (lambda: depth_of_field("thin", f, n, c, s, "lens").limits.total_mm,
-                     lambda: depth_of_field("thin", f, n, c, s, "lens", diffraction=True).limits.total_mm,
-                     lambda: wave_dof(f, n, c, s, "lens").total_mm):
+        totals: list[float | None] = []
+        for model, add in (("thin", False), ("thin", True), ("wave", False)):
             try:
-                totals.append(call())
+                totals.append(float(depth_of_field(model, f, n, c, s, "lens", diffraction=add).limits.total_mm))
             except DomainError:
                 totals.append(None)
         assert cells[4:7] == [shown(t) for t in totals], line
         rss, wave = totals[1:]
         if rss is not None and wave is not None and math.isfinite(wave):
             assert cells[7] == f"{(rss / wave - 1) * 100:+.0f} %", line
+
+
+def test_chart_aperture_marks_the_contrast_optimum() -> None:
+    from camtool.dof.wave import contrast_optimum
+    from camtool.plans.chart import aperture_chart
+
+    data = aperture_chart(focal_length_mm=100.0, coc_mm=0.03, near_mm=1000.0, far_mm=1500.0,
+                          criterion=Criterion(0.3, 20.0))
+    expected = contrast_optimum(100.0, 1000.0, 1500.0, 20.0)
+    assert data.extra["contrast_f_number"] == pytest.approx(expected.f_number, rel=1e-12)
+    assert data.marks[-1].x == pytest.approx(expected.f_number, rel=1e-12) and data.marks[-1].y is None
+    plain = aperture_chart(focal_length_mm=100.0, coc_mm=0.03, near_mm=1000.0, far_mm=1500.0)
+    assert len(plain.marks) == 2 and "contrast_f_number" not in plain.extra

@@ -6,11 +6,15 @@ an Airy pattern, 2.44·λ·L/d across its first dark ring. The published rules
 balance the two as d = k·√(λ·F), with F = L·s/(L + s) the distance that
 plays the focal length (F = L for a distant subject; Young, below):
 
-| rule | k | reasoning | source |
-|---|---|---|---|
-| ``airy`` | √2.44 = 1.562 | the Airy disc as wide as the hole: d² = 2.44·λ·F | the pinhole forums' rule (e.g. the sundial mailing list; the alt-photo-process list, 1997: "the pinhole should be the same size as the diffraction disk") |
-| ``rayleigh`` | 1.9 | Lord Rayleigh's constant, the one most quoted | Lord Rayleigh (J. W. Strutt), "On pin-hole photography", Phil. Mag. 31 (1891); quoted as d = 1.9√(fλ) |
-| ``young`` | 2 | the hole is one Fresnel zone, r² = λ·F, where the image is best focused | M. Young, "Pinhole optics", Applied Optics 10, 2763–2767 (1971) |
+- ``airy``, k = √2.44 = 1.562: the Airy disc as wide as the hole, d² = 2.44·λ·F
+  (the pinhole forums' rule, e.g. the sundial mailing list and the
+  alt-photo-process list, 1997: "the pinhole should be the same size as the
+  diffraction disk");
+- ``rayleigh``, k = 1.9: Lord Rayleigh's constant, the one most quoted
+  (Lord Rayleigh, "On pin-hole photography", Phil. Mag. 31 (1891); quoted as
+  d = 1.9√(fλ));
+- ``young``, k = 2: the hole is one Fresnel zone, r² = λ·F, where the image is
+  best focused (M. Young, "Pinhole optics", Applied Optics 10, 2763 (1971)).
 
 The rules disagree by a quarter (1.562 to 2). The wave optics behind them is
 exact and short: the wave from the point, cut by the hole, reaches the film

@@ -63,7 +63,7 @@ def pinhole_plan(*, film_distance_mm: float, subject_distance_mm: float = math.i
     angles = {f"{name}_deg": float(angle_of_view_deg(size, length)) for name, size in (
         ("horizontal", sensor_width_mm), ("vertical", sensor_height_mm),
         ("diagonal", math.hypot(sensor_width_mm, sensor_height_mm)))}
-    methods = [("optimum", ph.best_constant(level), level)]
+    methods: list[tuple[str, float, float | None]] = [("optimum", ph.best_constant(level), level)]
     methods += [(rule.name, rule.constant, ph.rule_level(rule.constant)) for rule in ph.RULES]
     rows = []
     for name, k, best_level in methods:

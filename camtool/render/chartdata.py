@@ -257,8 +257,14 @@ def blur_data(focal_lengths: Sequence[float], f_numbers: Sequence[float], magnif
 
 def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm: float,
                   f_numbers: Sequence[float], focus_mm: float | None = None, distance_from: str = "sensor",
-                  pupil_magnification: float = 1.0, wavelength_nm: float = 550.0, scene: str = "") -> ChartData:
+                  pupil_magnification: float = 1.0, wavelength_nm: float = 550.0, scene: str = "",
+                  criterion: Any = None) -> ChartData:
     """Blur (mm) at the scene's near and far limits from defocus, and the Airy disc, against f-number; the optimum marked.
+
+    With a contrast ``criterion`` (:class:`camtool.dof.wave.Criterion`) the
+    contrast optimum is marked too: the f-number whose MTF at the criterion's
+    frequency is highest at both limits (:func:`camtool.dof.wave.contrast_optimum`,
+    ``extra["contrast_f_number"]``), beside the root-sum-square one.
 
     The optimum aperture is :func:`camtool.dof.closeup.optimum_for_limits`:
     focused half-way between the near and far images (Hansma's rule), the
@@ -339,6 +345,14 @@ def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm:
                        "optimum_focus_mm": float(best.distance_mm),
                        "crossing_f_number": math.sqrt(k / a), "crossing_blur_mm": math.sqrt(k * a),
                        "wavelength_nm": wavelength_nm})
+    if criterion is not None:
+        from camtool.dof.wave import contrast_optimum, criterion_frequency
+
+        nu = float(criterion_frequency(criterion, coc_mm))
+        by_contrast = contrast_optimum(focal_length_mm, near_mm, far_mm, nu, distance_from, wavelength_nm)
+        data.marks.append(Mark(f"contrast optimum f/{by_contrast.f_number:.3g} ({criterion.label()})", 5,
+                               by_contrast.f_number, None))
+        data.extra.update({"contrast_f_number": by_contrast.f_number, "contrast_mtf": by_contrast.mtf})
     return data
 
 
