@@ -129,6 +129,9 @@ def test_diffraction_per_row_keeps_the_sharp_row():
 def test_diffraction_with_no_sharp_row_is_an_error():
     result = run("dof", "-f", "100", "-N", "22", "-m", "2", "--diffraction")
     assert result.exit_code == 2 and result.stdout == "" and result.stderr.count("\n") == 1
+    assert "nothing is sharp enough" in result.stderr  # auto: by contrast (docs/wave.md)
+    result = run("dof", "-f", "100", "-N", "22", "-m", "2", "--diffraction", "--model", "thin")
+    assert result.exit_code == 2 and result.stdout == "" and result.stderr.count("\n") == 1
     assert "Airy disc" in result.stderr
 
 

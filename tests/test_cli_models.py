@@ -87,9 +87,13 @@ def test_lens_data_helper_takes_a_preset() -> None:
      "prescription (--prescription FILE, or a --lens that has one)"),
     (["--prescription", DGAUSS], "Error: Invalid value for '-f' / '--focal-length': 50 mm is outside the valid "
      "range: within 1 % of 100.004 mm, the paraxial focal length of dgauss100"),
-    (["-N", "32", "--diffraction"], "Error: Invalid value for '-N' / '--f-number': 32 is outside the valid range: "
-     "below f/21.1 for any depth of field with diffraction at 550 nm (nothing is acceptably sharp: the Airy disc, "
-     "0.0437 mm, fills the 0.0288 mm circle of confusion)"),
+    # auto with --diffraction judges by contrast where the Airy disc dominates (docs/wave.md): f/64 is past even that
+    (["-N", "64", "--diffraction"], "Error: Invalid value for '-N' / '--f-number': 64 is outside the valid range: "
+     "below f/36.5 for any depth of field by mtf:0.181@coc at 550 nm (nothing is sharp enough: even in focus the MTF "
+     "at 34.7 lp/mm is below 0.181)"),
+    (["-N", "32", "--diffraction", "--model", "thin"], "Error: Invalid value for '-N' / '--f-number': 32 is outside "
+     "the valid range: below f/21.1 for any depth of field with diffraction at 550 nm (nothing is acceptably sharp: "
+     "the Airy disc, 0.0437 mm, fills the 0.0288 mm circle of confusion)"),
     (["--tolerance", "2"], "Error: Invalid value for '--tolerance': 2 is outside the valid range: above 0 and below "
      "100 % (1 % = 0.01)"),
     (["--wavelength", "5nm"], "Error: Invalid value for '--wavelength': 5nm is outside the valid range: 200 to 2000 nm"),

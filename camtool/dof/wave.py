@@ -172,7 +172,7 @@ def contrast_depth_mm(f_number: float, magnification: float, criterion: Criterio
     1:1 at f/8 (f/16 working), 50 lp/mm at 30 %:
 
     >>> round(contrast_depth_mm(8.0, 1.0, Criterion(0.3, 50.0)), 4)
-    0.3745
+    0.6626
     """
     from camtool.core.errors import require_positive
     from camtool.optics.transfer import defocus_at_level

@@ -271,6 +271,13 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
             else:
                 rows[i]["reason"] = (f"nothing sharp: the Airy disc ({d.airy_mm:.3g} mm) fills the CoC "
                                      f"({ci:.3g} mm); below f/{d.limit_f_number:.3g} leaves depth")
+    if diffraction and not sharp and model in ("auto", "wave"):  # no row sharp even by contrast: say by how much
+        from camtool.dof.wave import DEFAULT_CRITERION, ContrastUnreachable, criterion_frequency
+
+        chosen = criterion or DEFAULT_CRITERION
+        raise ContrastUnreachable(setting.f_number[0], _contrast_limit(cs[0], setting.magnification[0], criterion,
+                                                                       wavelength_nm), chosen,
+                                  float(criterion_frequency(chosen, cs[0])), wavelength_nm)
     if diffraction and not sharp:
         from camtool.dof.diffraction import usable_coc_mm
 
