@@ -23,7 +23,6 @@ from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
 from camtool.dof.limits import DofLimits
 from camtool.dof.rungs import NO_LENS, LensData
-from camtool.dof.wave import ContrastUnreachable
 from camtool.geometry.thinlens import FocusGeometry, focus_geometry
 
 __all__ = [
@@ -678,6 +677,8 @@ def compare_models(
     count = 1
     for value in (f, f_number, coc_mm, distance_mm):
         count = max(count, getattr(value, "size", 1))
+    from camtool.dof.wave import ContrastUnreachable
+
     results: list[tuple[ModelResult, float]] = []
     geometric = available_models(lens)
     for name in (*geometric, "wave"):
