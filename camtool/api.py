@@ -47,6 +47,7 @@ from camtool.core.ranges import (
     FOCAL_LENGTH_MM,
     FRAME_RATE_FPS,
     MAGNIFICATION,
+    MTF_LEVEL,
     PIXEL_PITCH_UM,
     PUPIL_MAGNIFICATION,
     SENSOR_SIDE_MM,
@@ -65,6 +66,7 @@ from camtool.geometry.thinlens import FocusGeometry
 from camtool.plans.cine import RotaryShutter
 from camtool.plans.cocmap import CocMap
 from camtool.plans.photo import PhotoAnswer
+from camtool.plans.pinhole import PinholePlan
 from camtool.plans.stack import BracketStack, RailStack
 from camtool.plans.tilt import TiltAnswer
 from camtool.render.chartdata import ChartData
@@ -85,6 +87,7 @@ __all__ = [
     "HyperfocalDistance",
     "LensData",
     "PhotoAnswer",
+    "PinholePlan",
     "RailStack",
     "RotaryShutter",
     "StarLimits",
@@ -103,6 +106,7 @@ __all__ = [
     "focus_for_magnification",
     "hyperfocal_distance",
     "photo",
+    "pinhole",
     "plan_exposure",
     "preset",
     "preset_names",
@@ -196,7 +200,11 @@ DistanceFrom = Annotated[str, _Kind("choice", choices=("sensor", "lens"))]
 Projection = Annotated[str, _Kind("choice", choices=("rectilinear", "equidistant", "equisolid", "orthographic",
                                                      "stereographic"))]
 OptionalFieldDeg = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(1e-9, 360.0), unit="°")]
-Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace"))]
+Model = Annotated[str, _Kind("choice", choices=("auto", "approx", "thin", "thick", "paraxial", "raytrace", "wave"))]
+ContrastLevel = Annotated[float, _Kind("number", scalar=True, bounds=MTF_LEVEL)]
+"""A contrast (MTF) level, as ``pinhole --contrast`` takes it: 0.05 to 0.95."""
+RealFilmDistance = Annotated[float, _Kind("number", scalar=True, bounds=FOCAL_LENGTH_MM, unit="mm")]
+EV100 = Annotated[float, _Kind("number", scalar=True, bounds=(-10.0, 25.0), zero_ok=True)]
 Text = Annotated[str, _Kind("text")]
 OptionalAngle = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(-89.9, 89.9), unit="°",
                                      zero_ok=True)]
@@ -486,6 +494,7 @@ def depth_of_field(
     diffraction: Flag = False,
     wavelength_nm: Wavelength = 550.0,
     tolerance: Tolerance = 0.01,
+    contrast_criterion: OptionalText = None,
 ) -> DepthOfField:
     """Near and far limits of acceptable sharpness in mm, by a rung of the model ladder.
 
@@ -501,6 +510,8 @@ def depth_of_field(
     pupil_magnification, hiatus_mm : lens data for the ``thick`` rung (P = exit/entrance pupil diameter)
     prescription : a :class:`camtool.optics.prescription.Prescription` for ``paraxial`` and ``raytrace``
     diffraction : bool, add the Airy disc to the blur (λ = ``wavelength_nm``)
+    contrast_criterion : str or None, ``mtf:LEVEL@FREQ`` as ``--criterion`` takes it: the ``wave`` rung's
+        criterion (given, ``auto`` runs ``wave``; docs/wave.md)
 
     Returns
     -------
@@ -513,13 +524,30 @@ def depth_of_field(
     >>> r = depth_of_field(50, 8, 0.03, 3000, model="thin")
     >>> round(r.total_mm)
     1779
+    >>> depth_of_field(50, 8, 0.03, 3000, contrast_criterion="mtf:0.3@coc").model
+    'wave'
     """
     from camtool.dof.ladder import depth_of_field as run
 
     lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    criterion = _criterion(contrast_criterion)
     result = run(model, focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
-                 wavelength_nm, tolerance)
+                 wavelength_nm, tolerance, criterion)
     return DepthOfField(*result.limits, result.model, result.error_estimate)
+
+
+def _criterion(text: str | None) -> Any:
+    """A ``mtf:LEVEL@FREQ`` criterion read by the one parser (:func:`camtool.core.units.parse_criterion`)."""
+    if text is None:
+        return None
+    from camtool.core.units import UnitError, parse_criterion
+    from camtool.dof.wave import Criterion
+
+    try:
+        return Criterion(*parse_criterion(text))
+    except UnitError as error:
+        raise DomainError("contrast_criterion", text, "mtf:LEVEL@FREQ, e.g. mtf:0.3@40 or mtf:0.181@coc",
+                          detail=str(error)) from None
 
 
 class HyperfocalDistance(NamedTuple):
@@ -1116,3 +1144,28 @@ def coc_map(depth_mm: DistanceOrInf, *, focus_mm: RealDistance, focal_length_mm:
 
     return run(depth_mm=depth_mm, focus_mm=focus_mm, focal_length_mm=focal_length_mm, f_number=f_number,
                coc_mm=coc_mm, pupil_magnification=pupil_magnification)
+@_checked
+def pinhole(film_distance_mm: RealFilmDistance, *, subject_distance_mm: RealDistanceOrInf = math.inf,
+            wavelength_nm: RealWavelength = 550.0, contrast_level: ContrastLevel = 0.5,
+            sensor_width_mm: SensorSideReal = 36.0, sensor_height_mm: SensorSideReal = 24.0, ev100: EV100 = 15.0,
+            iso: ISOReal = 100.0) -> PinholePlan:
+    """The pinhole camera, as ``camtool pinhole``: the best diameter by contrast and the published rules beside it.
+
+    ``rows`` holds the optimum (the diameter whose MTF reaches ``contrast_level`` at the highest frequency on
+    the film) and the Airy, Rayleigh and Young rules, each with its f-number, blur, defocus in waves, the
+    frequency at that contrast, the contrast at which it is itself best, the exposure time at ``ev100`` and
+    ``iso`` and the angles of view (docs/wave.md).
+
+    Examples
+    --------
+    >>> p = pinhole(100.0)
+    >>> [row["method"] for row in p.rows]
+    ['optimum', 'airy', 'rayleigh', 'young']
+    >>> round(p.rows[2]["pinhole_mm"], 4)  # Rayleigh: 1.9·√(0.00055 mm × 100 mm)
+    0.4456
+    """
+    from camtool.plans.pinhole import pinhole_plan
+
+    return pinhole_plan(film_distance_mm=film_distance_mm, subject_distance_mm=subject_distance_mm,
+                        wavelength_nm=wavelength_nm, level=contrast_level, sensor_width_mm=sensor_width_mm,
+                        sensor_height_mm=sensor_height_mm, ev100=ev100, iso=iso)

@@ -63,7 +63,11 @@ VALID: dict[str, st.SearchStrategy[Any]] = {
     "iso": st.floats(1.0, 1e6),
     "nd_stops": st.floats(0.0, 20.0),
     "pixel_pitch_mm": st.floats(0.0002, 0.1),
-    "model": st.sampled_from(["auto", "approx", "thin", "thick", "paraxial", "raytrace"]),
+    "model": st.sampled_from(["auto", "approx", "thin", "thick", "paraxial", "raytrace", "wave"]),
+    "contrast_criterion": st.sampled_from([None, "mtf:0.3@40", "mtf:0.181@coc", "mtf:2@40", "mtf:0.3@"]),
+    "contrast_level": st.floats(0.05, 0.95),
+    "film_distance_mm": st.floats(1.0, 5000.0),
+    "subject_distance_mm": st.one_of(st.floats(10.0, 1e9), st.just(math.inf)),
     "distance_from": st.sampled_from(["sensor", "lens"]),
     "projection": st.sampled_from(["rectilinear", "equidistant", "equisolid", "orthographic", "stereographic"]),
     "field_max_deg": st.one_of(st.none(), st.floats(1.0, 360.0)),
@@ -159,7 +163,7 @@ WRONG_TEXT = [None, 1, 1.5, True, b"thin", ["thin"], "", "THIN", "d/0", "d/-5", 
 
 # Where an infinite result is a right answer: the far limit and what follows from it when the far limit is
 # at infinity, the front depth when the focus is at infinity; a distance at infinity for a subject there.
-INFINITE_OK = {"front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hyperfocal_mm", "lens_distance_mm",
+INFINITE_OK = {"subject_distance_mm", "front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hyperfocal_mm", "lens_distance_mm",
                "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
                "radius_mm",  # a prescription's flat surface
                "step_mm", "extension_step_mm", "covered_mm",  # a rail frame sharp to infinity: one frame covers all
@@ -263,7 +267,7 @@ def test_the_fuzz_covers_every_public_function_and_parameter() -> None:
     expected = {"circle_of_confusion", "composition", "depth_of_field", "field_of_view", "focus_for_limits",
                 "focus_for_magnification", "hyperfocal_distance", "plan_exposure", "equivalent_settings", "film_time",
                 "flash_exposure", "preset", "preset_names", "star_trail_limits", "photo", "tilt", "rail_stack",
-                "bracket_stack", "chart", "save_chart", "rotary_shutter", "coc_map"}
+                "bracket_stack", "chart", "save_chart", "rotary_shutter", "coc_map", "pinhole"}
     assert set(FUNCTIONS) == expected
     for function in FUNCTIONS.values():
         assert set(inspect.signature(function).parameters) <= set(VALID)

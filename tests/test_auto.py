@@ -83,9 +83,12 @@ def audit(scenes, reference_model) -> tuple[float, float, list]:
     for scene in scenes:
         reference = outcome(reference_model(scene[4]), scene)
         auto = outcome("auto", scene)
+        if not isinstance(auto, type) and "wave" in str(auto.model):
+            continue  # diffraction dominates: judged by contrast, not against the root-sum-square (test_wave.py)
         total += 1
         if isinstance(reference, type) or isinstance(auto, type):
-            agree = reference == auto
+            # nothing sharp, whether by the root-sum-square (NothingSharp) or by contrast (ContrastUnreachable)
+            agree = reference == auto or all(isinstance(x, type) and issubclass(x, DomainError) for x in (reference, auto))
             within += agree
             bounded += agree
             if not agree:

@@ -219,9 +219,9 @@ def test_trade_data_are_compare_models(monkeypatch: pytest.MonkeyPatch, tmp_path
     data = handed(monkeypatch, tmp_path, "trade", "-f", "50", "-N", "8", "-s", "3m", "--coc", "0.03",
                   "--pupil-mag", "0.7")
     rows = compare_models(50.0, 8.0, 0.03, 3000.0, lens=chartdata.LensData(pupil_magnification=0.7), repeat=1)
-    assert [c.label for c in data.curves] == ["approx", "thin", "thick"]
+    assert [c.label for c in data.curves] == ["approx", "thin", "thick", "wave"]
     assert [c.y[0] for c in data.curves] == pytest.approx([float(r.difference) for r in rows], rel=1e-12)
-    assert data.curves[-1].y == [0.0] and data.extra["reference"] == "thick"
+    assert data.curves[-2].y == [0.0] and data.extra["reference"] == "thick"
     assert data.extra["estimates"] == pytest.approx([float(r.result.error_estimate) for r in rows], rel=1e-12)
     assert all(0 < c.x[0] < 1 for c in data.curves)
 

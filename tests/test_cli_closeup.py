@@ -112,7 +112,9 @@ def test_mp_e_65_published_distance_and_range():
 
 
 def test_diffraction_per_row_keeps_the_sharp_row():
-    result = run("dof", "-f", "100", "-N", "8,16", "-s", "400mm", "--diffraction", "--format", "json")
+    # 1:1: f/5.6 works at f/11.2 (Airy 0.015 mm, below c/√2: root-sum-square); f/22 at f/44 misses even the
+    # contrast criterion the wave rung would use (in focus, below f/18.3 at 1:1)
+    result = run("dof", "-f", "100", "-N", "5.6,22", "-s", "400mm", "--diffraction", "--format", "json")
     assert result.exit_code == 0
     sharp, blurred = json.loads(result.stdout)
     for row in (sharp, blurred):
@@ -120,14 +122,17 @@ def test_diffraction_per_row_keeps_the_sharp_row():
         assert row["diffraction_limit_f_number"] == pytest.approx(FF_COC / (2.44 * 550e-6 * 2.0), rel=1e-12)
         assert row["wave_dof_mm"] == pytest.approx(wave_depth_mm(row["f_number"], 1.0), rel=1e-9)
     assert sharp["near_mm"] is not None and sharp["reason"] is None and sharp["model"].endswith("+diffraction")
-    assert blurred["near_mm"] is None and blurred["total_mm"] is None and "Airy" in blurred["reason"]
+    assert blurred["near_mm"] is None and blurred["total_mm"] is None and "contrast" in blurred["reason"]
     assert sharp["depth_dominated_by"] == "geometric" and blurred["depth_dominated_by"] == "wave"
-    table = run("dof", "-f", "100", "-N", "8,16", "-s", "400mm", "--diffraction")
+    table = run("dof", "-f", "100", "-N", "5.6,22", "-s", "400mm", "--diffraction")
     assert table.exit_code == 0 and "nothing sharp" in table.stdout
 
 
 def test_diffraction_with_no_sharp_row_is_an_error():
     result = run("dof", "-f", "100", "-N", "22", "-m", "2", "--diffraction")
+    assert result.exit_code == 2 and result.stdout == "" and result.stderr.count("\n") == 1
+    assert "nothing is sharp enough" in result.stderr  # auto: by contrast (docs/wave.md)
+    result = run("dof", "-f", "100", "-N", "22", "-m", "2", "--diffraction", "--model", "thin")
     assert result.exit_code == 2 and result.stdout == "" and result.stderr.count("\n") == 1
     assert "Airy disc" in result.stderr
 
@@ -245,7 +250,7 @@ def test_diffraction_answers_each_row_of_a_prescription_too() -> None:
     assert result.exit_code == 0
     sharp, blurred = json.loads(result.output)
     assert sharp["distance_mm"] == 1000.0 and sharp["near_mm"] < 1000.0 < sharp["far_mm"]
-    assert blurred["near_mm"] is None and blurred["far_mm"] is None and "Airy disc" in blurred["reason"]
+    assert blurred["near_mm"] is None and blurred["far_mm"] is None and "nothing sharp" in blurred["reason"]
     assert sharp["model"].endswith("+diffraction")
 
 

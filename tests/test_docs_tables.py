@@ -16,7 +16,7 @@ from cli_helpers import run
 DOCS = Path(__file__).parents[1] / "docs"
 TABLES = {
     "dof-list": (100, ["dof", "-f", "50", "-N", "2.8,8,22", "-s", "3m,inf", "--model", "thin"]),
-    "dof-diffraction": (80, ["dof", "-f", "50", "-N", "8,22,32", "-s", "3m", "--diffraction"]),
+    "dof-diffraction": (80, ["dof", "-f", "50", "-N", "8,22,32", "-s", "3m", "--diffraction", "--model", "thin"]),
     "exposure-nd-film": (90, ["exposure", "--ev", "12", "-N", "8", "--nd", "10stops", "--nd", "6stops",
                               "--film", "fp4"]),
     "stack-narrow": (60, ["stack", "-f", "100", "-N", "8", "--near", "1m", "--far", "1.4m", "--units", "imperial"]),

@@ -203,3 +203,20 @@ def test_one_coc_map_command_line_and_api(tmp_path):
     assert (row["near_limit_mm"], row["far_limit_mm"]) == (api.near_limit_mm, api.far_limit_mm)
     assert row["sharp_fraction"] == api.sharp_fraction
     assert np.allclose(np.load(out)[0], api.coc_mm, rtol=1e-6, atol=1e-6 * float(api.coc_mm.max()))
+@pytest.mark.parametrize("criterion", ["mtf:0.3@coc", "mtf:0.5@20"])
+def test_a_contrast_criterion_gives_one_answer_by_option_batch_and_api(criterion: str, tmp_path) -> None:
+    """dof --criterion, a batch row's criterion cell, the Python API and hyperfocal: one wave rung, one H."""
+    import camtool
+
+    (option,) = run_json("dof", "-f", "50", "-N", "8", "-s", "3", "--criterion", criterion)
+    batch_file = tmp_path / "rows.csv"
+    batch_file.write_text(f"focal-length,f-number,distance,criterion\n50,8,3,{criterion}\n", encoding="utf-8")
+    (batch,) = run_json("dof", "--batch", str(batch_file))
+    api = camtool.depth_of_field(50, 8, option["coc_mm"], 3000, contrast_criterion=criterion)
+    assert option["model"] == batch["model"] == api.model == "wave"
+    for key in ("near_mm", "far_mm", "hyperfocal_mm"):
+        assert option[key] == batch[key] == getattr(api, key)
+    (h,) = run_json("hyperfocal", "-f", "50", "-N", "8", "--criterion", criterion)
+    assert h["hyperfocal_mm"] == option["hyperfocal_mm"]
+    (at_h,) = run_json("dof", "-f", "50", "-N", "8", "-s", f"{h['hyperfocal_mm']}mm", "--criterion", criterion)
+    assert at_h["far_mm"] is None  # infinity

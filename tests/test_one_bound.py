@@ -37,6 +37,9 @@ STANDS_FOR = {
     "pupil_magnification": ("dof", "pupil_mag"),
     "fps": ("exposure", "fps"),
     "shutter_angle_deg": ("exposure", "shutter_angle"),
+    "film_distance_mm": ("pinhole", "film_distance"),
+    "contrast_level": ("pinhole", "contrast"),
+    "ev100": ("pinhole", "ev100"),
 }
 
 

@@ -92,7 +92,7 @@ def _snapshot(name: str, text: str) -> None:
 
 TABLES = {
     "dof-list": ["dof", "-f", "50", "-N", "2.8,8,22", "-s", "3m", "--model", "thin"],
-    "dof-diffraction": ["dof", "-f", "50", "-N", "8,22,32", "-s", "3m", "--diffraction"],
+    "dof-diffraction": ["dof", "-f", "50", "-N", "8,22,32", "-s", "3m", "--diffraction", "--model", "thin"],
     "exposure-nd-film": ["exposure", "--ev", "12", "-N", "8", "--nd", "10stops", "--nd", "6stops", "--film", "fp4"],
     "presets-list": ["presets", "list", "--kind", "sensor", "--search", "aps"],
     "stack-imperial": ["stack", "-f", "100", "-N", "8", "--near", "1m", "--far", "3m", "--units", "imperial"],

@@ -37,6 +37,7 @@ COMMANDS = {
     "chart": "camtool.cli.chart",
     "stack": "camtool.cli.stack",
     "cocmap": "camtool.cli.cocmap",
+    "pinhole": "camtool.cli.pinhole",
 }
 
 

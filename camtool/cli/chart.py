@@ -28,7 +28,7 @@ import click
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, footer, required, single
 from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import WavelengthType, lens_data, model_options, pupil_mag_option
+from camtool.cli.lensdata import WavelengthType, criterion_option, lens_data, model_options, pupil_mag_option
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
@@ -301,8 +301,9 @@ def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, 
 @click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
               help="Wavelength for the Airy disc: 550, 550nm or 0.55um.")
 @pupil_mag_option
+@criterion_option
 def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, high, sensor, crop, coc, coc_rule,
-                   pixel_pitch, distance_from, wavelength, pupil_mag, units, preset_files) -> Any:
+                   pixel_pitch, distance_from, wavelength, pupil_mag, criterion, units, preset_files) -> Any:
     """Blur at the scene's near and far limits from defocus and from diffraction against f-number, optimum marked.
 
     Defocus blur (thin lens) of points at --near and --far falls as 1/N; the
@@ -310,6 +311,8 @@ def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, h
     focused half-way between the near and far images (Hansma's rule, the
     default focus; -s sets another), the f-number where the two are equal and
     their root-sum-square is smallest, the sharpest the whole scene can be.
+    With --criterion the contrast optimum is marked as well: the f-number
+    with the most MTF at the criterion's frequency at both limits (docs/wave.md).
     """
     f = single(ctx, required(ctx, focal_length, "-f"), "-f")
     n_low, n_high = single(ctx, low, "--from"), single(ctx, high, "--to")
@@ -319,7 +322,7 @@ def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, h
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
     data = aperture_chart(focal_length_mm=f, coc_mm=c, near_mm=closest, far_mm=farthest, from_f_number=n_low,
                           to_f_number=n_high, focus_mm=focus, distance_from=distance_from,
-                          pupil_magnification=pupil_mag, wavelength_nm=wavelength)
+                          pupil_magnification=pupil_mag, wavelength_nm=wavelength, criterion=criterion)
     data.scene = f"{f:g} mm · " + footer("thin", cocs, origin, chosen.label, distance_from, f"λ {wavelength:g} nm")
     return data
 

@@ -20,7 +20,7 @@ from camtool.cli.closeup import (
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, flatten, footer, required
 from camtool.cli.equipment import LENS, input_errors, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import lens_data, model_options
+from camtool.cli.lensdata import criterion_option, lens_data, model_options
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
@@ -84,9 +84,10 @@ MODEL_HELP = model_help()
 @distance_plane_option
 @click.option("--model", type=click.Choice(model_choices()), default="auto", show_default=True, help=MODEL_HELP)
 @model_options
+@criterion_option
 def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magnification, extension, teleconverter,
-        sensor, crop, coc, coc_rule, pixel_pitch, squeeze, distance_from, model, tolerance, diffraction, wavelength, pupil_mag,
-        hiatus, prescription_file, fmt, units, preset_files) -> Output:
+        sensor, crop, coc, coc_rule, pixel_pitch, squeeze, distance_from, model, tolerance, diffraction, wavelength,
+        pupil_mag, hiatus, prescription_file, criterion, fmt, units, preset_files) -> Output:
     """Depth of field: near and far limits, total depth, front/rear split and hyperfocal distance.
 
     \b
@@ -100,6 +101,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
       camtool dof --lens mp-e-65 -N 2.8 -m 1,2,5 --diffraction
       camtool dof -f 100 -N 8,16 -s 400mm --diffraction
       camtool dof -f 50 -N 8 -s 1m --extension 25mm --teleconverter 1.4
+      camtool dof -f 50 -N 8,16,22 -s 3m --criterion mtf:0.3@coc
 
     With -m (any m > 0) or close up, the table shows the magnification and
     the working f-number N(1 + m/P). A lens preset with a published closest
@@ -129,7 +131,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
                           by_magnification=bool(wanted_m), distance_from=distance_from, lens=lens,
                           pupil_magnification=pupil_mag, hiatus_mm=hiatus, lens_preset=ctx.meta.get(LENS),
                           extension_mm=extension, teleconverter=teleconverter, diffraction=diffraction,
-                          wavelength_nm=wavelength, tolerance=tolerance)
+                          wavelength_nm=wavelength, tolerance=tolerance, criterion=criterion)
     rows = table.rows
     where = footer(None, cocs, coc_origin, chosen.label, distance_from)
     if squeeze and model != "all":

@@ -8,7 +8,7 @@ from camtool.cli.closeup import FOCUS_COLUMN, branch_note, closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from, t_stop_columns
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
+from camtool.cli.lensdata import criterion_option, lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
@@ -68,8 +68,14 @@ INVERSE_COLUMNS = [
 ]
 
 
+CONTRAST_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "magnification", "f_number",
+                 "working_f_number", "mtf", "frequency_lpmm", "defocus_waves", "mtf_level", "distance_from"]
+CONTRAST_COLUMNS = [*OPTIMUM_COLUMNS[:5], OPTIMUM_COLUMNS[6], OPTIMUM_COLUMNS[7], Column("mtf", "MTF", NUMBER),
+                    Column("frequency_lpmm", "at lp/mm", NUMBER)]
+
+
 @camtool_command("focus", keys=list(dict.fromkeys([*FORWARD_KEYS, *INVERSE_KEYS, *FIXED_KEYS, *OPTIMUM_KEYS, *DEPTH_KEYS,
-                                                   "t_stop"])))
+                                                   *CONTRAST_KEYS, "t_stop"])))
 @focal_option
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True,
               help="Focus distance (bare numbers are metres).")
@@ -88,13 +94,14 @@ INVERSE_COLUMNS = [
                    "(with --coc).")
 @click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
               help="Wavelength for --optimum: 550, 550nm or 0.55um.")
+@criterion_option
 @closeup_options
 @sensor_options
 @coc_options
 @distance_plane_option
 @lens_geometry_options
 def focus(ctx: click.Context, focal_length, distance, magnification, f_number, exact_stops, near, far, optimum,
-          focus_spread, depth, wavelength, extension, teleconverter, sensor, crop, coc, coc_rule, pixel_pitch,
+          focus_spread, depth, wavelength, criterion, extension, teleconverter, sensor, crop, coc, coc_rule, pixel_pitch,
           distance_from, pupil_mag, hiatus, fmt, units, preset_files) -> Output:
     """Thin-lens focusing: image distance, extension, magnification, working f-number.
 
@@ -126,6 +133,7 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
       camtool focus -f 24 -N 11 --near 1m --far inf
       camtool focus --lens mp-e-65 -m 1,5 -N 2.8
       camtool focus -f 150 --near 2m --far inf --optimum
+      camtool focus -f 150 --near 2m --far inf --optimum --criterion mtf:0.1@20
       camtool focus --focus-spread 3mm --optimum
       camtool focus -m 2.5 --depth 0.2mm -N 4
     """
@@ -144,6 +152,15 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     if optimum and not (near and far):
         raise click.UsageError("--optimum needs --near and --far, or --focus-spread", ctx)
     focal = required(ctx, focal_length, "-f")
+    if optimum and criterion is not None:
+        cocs, _ = resolve_coc(ctx, list(coc), coc_rule, resolve_sensor(ctx, sensor, crop, preset_files), pixel_pitch)
+        count, (f, a, b, c) = combine_params(ctx, focal, required(ctx, near, "--near"), required(ctx, far, "--far"),
+                                             cocs)
+        with library_errors(ctx):
+            values = plans.contrast_optimum(focal_length_mm=f, near_mm=a, far_mm=b, criterion=criterion, coc_mm=c,
+                                            distance_from=distance_from, wavelength_nm=wavelength)
+        note = f"optimum aperture by contrast ({criterion.label()}, docs/wave.md) at {wavelength:g} nm"
+        return Output(rows_from(count, values), CONTRAST_COLUMNS, CONTRAST_KEYS, note if fmt == "table" else "")
     if optimum:
         p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)
         count, (f, a, b) = combine_params(ctx, focal, required(ctx, near, "--near"), required(ctx, far, "--far"))

@@ -8,7 +8,7 @@ from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import lens_data, lens_geometry_options
+from camtool.cli.lensdata import criterion_option, diffraction_options, lens_data, lens_geometry_options
 from camtool.cli.options import (
     aperture_options,
     coc_options,
@@ -41,8 +41,11 @@ COLUMNS = [
               help=hyperfocal_help())
 @lens_geometry_options
 @teleconverter_option
+@diffraction_options
+@criterion_option
 def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, crop, coc, coc_rule, pixel_pitch,
-               distance_from, model, pupil_mag, hiatus, teleconverter, fmt, units, preset_files) -> Output:
+               distance_from, model, pupil_mag, hiatus, teleconverter, diffraction, wavelength, criterion, fmt, units,
+               preset_files) -> Output:
     """Hyperfocal distance: focus there and everything from the near limit to infinity is sharp.
 
     \b
@@ -50,12 +53,15 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
       camtool hyperfocal -f 24 -N 8,11,16
       camtool hyperfocal -f 35 -N 8 --sensor aps-c --format json
       camtool hyperfocal -f 300 -N 4 --teleconverter 1.4
+      camtool hyperfocal -f 50 -N 16,22,32 --diffraction
 
     With --teleconverter K the lens is taken as K·f at K·N (docs/closeup.md §7);
     the rows show those. A lens preset with a published closest focus focuses
     internally: H is its focus setting whose far limit is infinite with the
     focal length in effect there. Focusing dof at the exact value of
     --field hyperfocal_mm gives a far limit of ∞ (the table rounds it).
+    With --diffraction (or --criterion) auto takes H by contrast, the wave
+    model (docs/wave.md); --model thin --diffraction keeps the root-sum-square.
     """
     focal = required(ctx, focal_length, "-f")
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
@@ -65,7 +71,8 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
     with library_errors(ctx):
         result = hyperfocal_plan(model=model, focal_length_mm=f, f_number=n, coc_mm=c, distance_from=distance_from,
                                  lens=lens_data(ctx, pupil_mag, hiatus), lens_preset=ctx.meta.get(LENS),
-                                 teleconverter=teleconverter)
+                                 teleconverter=teleconverter, diffraction=diffraction, wavelength_nm=wavelength,
+                                 criterion=criterion)
     f, n = result.focal_length_mm, result.f_number
     rows = rows_from(count, {
         "focal_length_mm": f, "f_number": n, "hyperfocal_mm": result.hyperfocal_mm, "near_mm": result.near_mm,

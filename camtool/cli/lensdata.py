@@ -15,7 +15,7 @@ import click
 
 from camtool.cli.equipment import LENS
 from camtool.cli.options import stack
-from camtool.cli.params import PupilMagnificationType, SignedLengthType, ToleranceType
+from camtool.cli.params import CriterionType, PupilMagnificationType, SignedLengthType, ToleranceType
 from camtool.cli.params import WavelengthType as WavelengthType  # where the commands import it
 from camtool.dof.ladder import LensData as LensData
 from camtool.plans import equipment
@@ -51,14 +51,20 @@ hiatus_option = click.option(
 lens_geometry_options = stack(pupil_mag_option, hiatus_option)
 """``--pupil-mag`` and ``--hiatus`` alone, for commands that focus but compute no depth of field."""
 
+diffraction_options = stack(
+    click.option("--diffraction/--no-diffraction", default=False, show_default=True,
+                 help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
+                      "√(c² − airy²)); under auto the wave model where it exceeds c/√2; says so when nothing "
+                      "can be sharp."),
+    click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
+                 help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+)
+"""``--diffraction`` and ``--wavelength``."""
+
 model_options = stack(
     click.option("--tolerance", type=ToleranceType(), default="1%", show_default=True,
                  help="auto: the largest estimated error accepted, relative to the depth of field (1% or 0.01)."),
-    click.option("--diffraction/--no-diffraction", default=False, show_default=True,
-                 help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
-                      "√(c² − airy²)); says so when nothing can be sharp."),
-    click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-                 help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+    diffraction_options,
     pupil_mag_option,
     hiatus_option,
     click.option("--prescription", "prescription_file", type=click.Path(dir_okay=False), metavar="FILE",
@@ -67,6 +73,11 @@ model_options = stack(
                       "given, must agree within 1%)."),
 )
 """``--tolerance``, ``--diffraction``, ``--wavelength`` and the lens data ``--pupil-mag``, ``--hiatus``, ``--prescription``."""
+
+criterion_option = click.option(
+    "--criterion", "criterion", type=CriterionType(), metavar="mtf:LEVEL@FREQ",
+    help="Sharp where the perfect lens's MTF at FREQ (lp/mm on the sensor, or coc: 1/c) is at least LEVEL; "
+         "runs the wave model (default mtf:0.181@coc, docs/wave.md).")
 
 
 def pupil_and_hiatus(ctx: click.Context, pupil_mag: float | None = None,

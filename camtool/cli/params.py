@@ -211,6 +211,27 @@ class PointType(click.ParamType):
         return distance, height
 
 
+class CriterionType(click.ParamType):
+    """A contrast criterion ``mtf:LEVEL@FREQ`` (:func:`camtool.core.units.parse_criterion`), or one of ``words``."""
+
+    name = "criterion"
+
+    def __init__(self, words: tuple[str, ...] = ()) -> None:
+        self.words = words
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from camtool.core.units import parse_criterion
+        from camtool.dof.wave import Criterion
+
+        if isinstance(value, Criterion) or (isinstance(value, str) and value.strip().lower() in self.words):
+            return value if isinstance(value, Criterion) else value.strip().lower()
+        try:
+            return Criterion(*parse_criterion(str(value)))
+        except UnitError as error:
+            words = f" (or {' or '.join(self.words)})" if self.words else ""
+            self.fail(f"{error}{words}", param, ctx)
+
+
 class ToleranceType(click.ParamType):
     """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
 

@@ -24,7 +24,7 @@ from camtool.cli.options import (
     param_named,
     sensor_options,
 )
-from camtool.cli.params import FNumberType, NumberType
+from camtool.cli.params import CriterionType, FNumberType, NumberType
 from camtool.core.errors import DomainError, InputError
 from camtool.dof.ladder import model_choices, model_help
 from camtool.plans.stack import DEFAULT_OVERLAP, bracket_rows, bracket_stack, rail_rows, rail_stack, stack_mode
@@ -67,9 +67,11 @@ def _one(ctx: click.Context, values: list[float], option: str, name: str) -> flo
               help="Bracketing mode: farthest point to cover, e.g. 10m or inf.")
 @click.option("--overlap", type=NumberType(0.0, 0.99), default=DEFAULT_OVERLAP, show_default=True, callback=one_value,
               help="Fraction of each frame's depth shared with the next (0 to 0.99).")
-@click.option("--criterion", type=click.Choice(["classic", "wave"]), default=None,
-              help="Depth per frame: classic (the CoC) or wave (quarter-wave λ/NA², what macro stackers use). "
-                   "Default: wave from 1:1 (-m 1) up, classic below and for bracketing.")
+@click.option("--criterion", type=CriterionType(("classic", "wave")), default=None,
+              metavar="classic|wave|mtf:LEVEL@FREQ",
+              help="Depth per frame: classic (the CoC), wave (quarter-wave λ/NA², what macro stackers use) or, in "
+                   "rail mode, by contrast (docs/wave.md). Default: wave from 1:1 (-m 1) up, classic below and for "
+                   "bracketing.")
 @sensor_options
 @coc_options
 @distance_plane_option
@@ -86,6 +88,7 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
     Examples:
       camtool stack -m 1 -N 8 --depth 10mm
       camtool stack -m 2 -N 5.6 --depth 3mm --criterion classic --overlap 0
+      camtool stack -m 1 -N 8 --depth 5mm --criterion mtf:0.3@50
       camtool stack -f 24 -N 11 --near 0.5 --far inf
       camtool stack -f 50 -N 8 --near 1m --far 3m --overlap 0.5 --format json
 

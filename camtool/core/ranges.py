@@ -62,6 +62,11 @@ FRAME_RATE_FPS = (0.01, 100_000.0)
 
 SQUEEZE = (1.0, 4.0)
 """An anamorphic lens's horizontal squeeze factor (1.3, 1.5, 1.8 and 2 are the usual ones; 1 is spherical)."""
+MTF_LEVEL = (0.05, 0.95)
+"""A contrast level of a criterion ``mtf:LEVEL@FREQ``: below 5 % the first crossing of a defocused MTF is ill-defined."""
+
+FREQUENCY_LPMM = (0.1, 5000.0)
+"""A spatial frequency on the sensor in line pairs per mm: a large plate seen far off to past a phone sensor's cut-off."""
 
 
 def in_range(value: float, bounds: tuple[float, float], allow_inf: bool = False) -> bool:

@@ -262,3 +262,38 @@ def parse_guide_number(text: str | float) -> float:
         return float(raw) * scale
     except ValueError:
         raise UnitError(f"{text!r} is not a guide number (examples: 40, 40m, 131ft)") from None
+
+
+def parse_criterion(text: str) -> tuple[float, float | None]:
+    """Parse a contrast criterion ``mtf:LEVEL@FREQ`` into (level, lp/mm or None for ``@coc``).
+
+    LEVEL is a fraction or a percentage, FREQ line pairs per mm on the sensor
+    (``lp/mm`` may follow) or ``coc`` (one line pair per circle of confusion,
+    1/c). Bounds: :data:`camtool.core.ranges.MTF_LEVEL` and
+    :data:`camtool.core.ranges.FREQUENCY_LPMM`.
+
+    >>> parse_criterion("mtf:0.3@40"), parse_criterion("MTF:50%@coc"), parse_criterion("mtf:0.2@25lp/mm")
+    ((0.3, 40.0), (0.5, None), (0.2, 25.0))
+    >>> parse_criterion("mtf:1.5@40")
+    Traceback (most recent call last):
+    ...
+    camtool.core.units.UnitError: 'mtf:1.5@40': the level 1.5 is outside the valid range: 0.05 to 0.95
+    """
+    from camtool.core.ranges import FREQUENCY_LPMM, MTF_LEVEL, describe, in_range
+
+    match = _CRITERION.match(str(text))
+    if not match:
+        raise UnitError(f"{text!r} is not a contrast criterion (examples: mtf:0.3@40, mtf:50%@coc)")
+    level = float(match.group(1)) / (100.0 if match.group(2) else 1.0)
+    if not in_range(level, MTF_LEVEL):
+        raise UnitError(f"{text!r}: the level {level:g} is outside the valid range: {describe(MTF_LEVEL)}")
+    if match.group(3).lower() == "coc":
+        return level, None
+    frequency = float(match.group(3))
+    if not in_range(frequency, FREQUENCY_LPMM):
+        raise UnitError(f"{text!r}: the frequency {frequency:g} lp/mm is outside the valid range: "
+                        f"{describe(FREQUENCY_LPMM, 'lp/mm')}")
+    return level, frequency
+
+
+_CRITERION = re.compile(rf"^\s*mtf\s*:\s*({_NUMBER})\s*(%?)\s*@\s*(coc|{_NUMBER})\s*(?:lp/mm)?\s*$", re.IGNORECASE)

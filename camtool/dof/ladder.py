@@ -60,7 +60,7 @@ def model_choices() -> tuple[str, ...]:
     Examples
     --------
     >>> model_choices()
-    ('approx', 'thin', 'thick', 'paraxial', 'raytrace', 'auto', 'all')
+    ('approx', 'thin', 'thick', 'paraxial', 'raytrace', 'wave', 'auto', 'all')
     """
     return (*rungs.names(), "auto", "all")
 
@@ -123,7 +123,7 @@ class ModelComparison(NamedTuple):
 
 
 def available_models(lens: LensData | None = None) -> tuple[str, ...]:
-    """The rungs the lens data allow, cheapest first.
+    """The geometric rungs the lens data allow, cheapest first (``wave`` stands apart: :func:`depth_of_field`).
 
     Examples
     --------
@@ -145,7 +145,7 @@ def _available(ladder: int, lens: LensData) -> tuple[str, ...]:
     by_hand = lens.pupil_magnification is not None or lens.hiatus_mm is not None
     # with a prescription and no values by hand, thick is paraxial by another name
     skip = "thick" if lens.prescription is not None and not by_hand else ""
-    return tuple(rung.name for rung in rungs.RUNGS if rung.name != skip and rung.can_run(lens))
+    return tuple(rung.name for rung in rungs.geometric() if rung.name != skip and rung.can_run(lens))
 
 
 def _unavailable(model: str, lens: LensData) -> ModelUnavailable | None:
@@ -213,12 +213,13 @@ def hyperfocal_choices() -> tuple[str, ...]:
     Examples
     --------
     >>> hyperfocal_choices()
-    ('approx', 'thin', 'thick', 'auto')
+    ('approx', 'thin', 'thick', 'wave', 'auto')
     """
     return (*(rung.name for rung in rungs.RUNGS if rung.hyperfocal_help), "auto")
 
 
-HYPERFOCAL_AUTO_HELP = "thick when that lens data is known, else thin (the rung auto uses at and beyond H)."
+HYPERFOCAL_AUTO_HELP = ("thick when that lens data is known, else thin (the rung auto uses at and beyond H); wave with "
+                        "--diffraction or --criterion.")
 
 
 def hyperfocal_rung(lens: LensData | None = None) -> str:
@@ -253,8 +254,18 @@ def hyperfocal(
     coc_mm: Any,
     distance_from: str = "sensor",
     lens: LensData | None = None,
+    diffraction: bool = False,
+    wavelength_nm: float = 550.0,
+    criterion: Any = None,
 ) -> Hyperfocal:
     """Hyperfocal distance H in mm by a closed-form rung, and the near limit when focused at H.
+
+    With ``diffraction`` or a ``criterion``, ``auto`` is ``wave``: the
+    hyperfocal distance by contrast, diffraction and defocus together (a
+    stopped-down lens gets the H it can reach, or
+    :class:`camtool.dof.wave.ContrastUnreachable` with the largest f-number
+    that has one); a geometric rung named with ``diffraction`` adds the Airy
+    disc by root-sum-square instead.
 
     H in the chosen plane is where the far limit first reaches infinity: the
     limits of a focus at infinity carry it, and focusing there gives the near
@@ -291,10 +302,13 @@ def hyperfocal(
     known = None if lens is None else lens.thick_parameters()
     p, delta = known if known is not None else (1.0, 0.0)
     data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
-    rung = hyperfocal_rung(lens) if model == "auto" else model
-    at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data)
+    by_contrast = model == "wave" or (model == "auto" and (diffraction or criterion is not None))
+    rung = "wave" if by_contrast else hyperfocal_rung(lens) if model == "auto" else model
+    extra = {"diffraction": diffraction and not by_contrast, "wavelength_nm": wavelength_nm, "criterion": criterion}
+    at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data,
+                                 **extra)
     h = at_infinity.limits.hyperfocal_mm
-    at_h = depth_of_field(rung, focal_length_mm, f_number, coc_mm, h, distance_from, lens=data)
+    at_h = depth_of_field(rung, focal_length_mm, f_number, coc_mm, h, distance_from, lens=data, **extra)
     return Hyperfocal(h, at_h.limits.near_mm, at_h.model)
 
 
@@ -368,6 +382,62 @@ def _run(name: str, applied: bool, f: Any, n: Any, c: Any, s: Any, plane: str, l
     return rungs.by_name()[name].run(f, n, usable if applied else c, s, plane, lens, focus)
 
 
+DOMINANCE = 0.5 ** 0.5
+"""``auto`` with ``diffraction``: the ``wave`` rung runs where the Airy disc exceeds this fraction of the CoC.
+
+There the Airy disc's square is more than half the CoC's in the root-sum-square: diffraction dominates the blur
+at the depth-of-field limits, where the root-sum-square is least accurate (docs/wave.md)."""
+
+
+def _wave_rows(model: str, criterion: Any, diffraction: bool, n: Any, c: Any, focus: rungs.Focus, lens: LensData,
+               wavelength_nm: Any) -> Any:
+    """Which scenes the ``wave`` rung answers: all for ``wave`` or a criterion under ``auto``; under ``auto`` with
+    ``diffraction``, those whose Airy disc 2.44·λ·N(1 + m/P) exceeds c/√2; else none (False)."""
+    if model == "wave" or (model == "auto" and criterion is not None):
+        return True
+    if model != "auto" or not diffraction:
+        return False
+    from camtool.dof.diffraction import airy_diameter_mm
+
+    p = _scene_lens(lens)[0]
+    return airy_diameter_mm(n * (1.0 + focus.geometry.magnification / p), wavelength_nm) > DOMINANCE * c
+
+
+def _wave(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: rungs.Focus, criterion: Any,
+          wavelength_nm: Any) -> ModelResult:
+    """The ``wave`` rung (diffraction built in), with its estimate: the lens data it leaves out."""
+    limits = rungs.by_name()["wave"].run(f, n, c, s, plane, lens, focus, criterion=criterion,
+                                         wavelength_nm=wavelength_nm)
+    effects = _effects(f, n, c, s, plane, lens, 0.0, focus)
+    return ModelResult(limits, "wave", left_out(effects, "wave", True))
+
+
+def _split(wave: Any, inputs: tuple[Any, ...], plane: str, lens: LensData, diffraction: bool, wavelength_nm: Any,
+           tolerance: float, criterion: Any) -> ModelResult:
+    """``auto`` over arrays where some scenes go to ``wave``: each part in one call, the results back in place."""
+    import numpy as np
+
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (*inputs, wave)))
+    flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in inputs]
+    mask = np.broadcast_to(wave, shape).ravel()
+    parts = []
+    for rows, model in ((np.nonzero(mask)[0], "wave"), (np.nonzero(~mask)[0], "auto")):
+        if rows.size:
+            f, n, c, s = (v[rows] for v in flat)
+            parts.append((rows, depth_of_field(model, f, n, c, s, plane, lens, diffraction, wavelength_nm, tolerance,
+                                               criterion)))
+    count = mask.size
+    fields = [np.empty(count) for _ in DofLimits._fields]
+    names = np.empty(count, dtype=object)
+    estimate = np.empty(count)
+    for rows, result in parts:
+        for out, value in zip(fields, result.limits):
+            out[rows] = value
+        names[rows] = result.model
+        estimate[rows] = result.error_estimate
+    return ModelResult(DofLimits(*(v.reshape(shape) for v in fields)), names.reshape(shape), estimate.reshape(shape))
+
+
 def _label(name: str, applied: bool) -> str:
     return f"{name}+diffraction" if applied else name
 
@@ -383,8 +453,15 @@ def depth_of_field(
     diffraction: bool = False,
     wavelength_nm: float = 550.0,
     tolerance: float = 0.01,
+    criterion: Any = None,
 ) -> ModelResult:
     """Depth of field by the named model, or by the cheapest one the scene needs (``auto``).
+
+    ``wave`` (:mod:`camtool.dof.wave`) answers by a contrast ``criterion``
+    (None: its default); ``auto`` runs it for every scene when a criterion is
+    given, and with ``diffraction`` for the scenes where the Airy disc exceeds
+    c/√2 (:data:`DOMINANCE`: diffraction dominates the blur); other scenes
+    take the geometric ladder as below.
 
     ``auto`` (the one meaning every command and the API share): the cheapest
     rung whose estimated error (:func:`camtool.dof.auto.depth_error`) is
@@ -415,6 +492,8 @@ def depth_of_field(
     tolerance : float
         ``auto``: the largest estimated relative error accepted (0.01 = 1 %
         of the depth of field, :func:`camtool.dof.auto.depth_error`).
+    criterion : camtool.dof.wave.Criterion or None
+        The contrast criterion of ``wave`` (given, ``auto`` runs ``wave``).
 
     Returns
     -------
@@ -448,7 +527,7 @@ def depth_of_field(
     >>> depth_of_field("bogus", 50.0, 8.0, 0.03, 3000.0)
     Traceback (most recent call last):
     ...
-    ValueError: unknown model 'bogus'; choose one of approx, thin, thick, paraxial, raytrace, auto
+    ValueError: unknown model 'bogus'; choose one of approx, thin, thick, paraxial, raytrace, wave, auto
     """
     lens = lens or NO_LENS
     if model != "auto":
@@ -462,6 +541,12 @@ def depth_of_field(
 
     check_inputs(f, f_number, coc_mm)
     focus = _focus(f, distance_mm, distance_from, lens)  # converted once, handed to the estimates and the model
+    wave = _wave_rows(model, criterion, diffraction, f_number, coc_mm, focus, lens, wavelength_nm)
+    if wave is True or (not isinstance(wave, bool) and bool(wave.all())):
+        return _wave(f, f_number, coc_mm, distance_mm, distance_from, lens, focus, criterion, wavelength_nm)
+    if wave is not False and bool(wave.any()):
+        return _split(wave, (f, f_number, coc_mm, distance_mm), distance_from, lens, diffraction, wavelength_nm,
+                      tolerance, criterion)
     usable, airy = _usable_coc(f_number, coc_mm, focus, lens, wavelength_nm) if diffraction else (coc_mm, 0.0)
     effects = _effects(f, f_number, coc_mm, distance_mm, distance_from, lens, airy, focus)
     if model != "auto":
@@ -568,18 +653,21 @@ def compare_models(
     diffraction: bool = False,
     wavelength_nm: float = 550.0,
     repeat: int = 3,
+    criterion: Any = None,
 ) -> list[ModelComparison]:
     """Every rung the lens data allow, for the same scene, with its difference from the most complete one and its cost.
 
-    ``difference`` is :func:`camtool.dof.auto.depth_error` against the last
-    (most complete) rung; ``time_per_evaluation_s`` the best of ``repeat``
+    The geometric rungs come first, then ``wave`` by ``criterion`` (left out
+    when some scene's in-focus MTF is below the criterion's level).
+    ``difference`` is :func:`camtool.dof.auto.depth_error` against the most
+    complete geometric rung; ``time_per_evaluation_s`` the best of ``repeat``
     timed runs (``time.perf_counter``) divided by the number of scenes.
 
     Examples
     --------
     >>> rows = compare_models(50.0, 8.0, 0.03, 3000.0)
     >>> [(r.result.model, round(r.difference, 4)) for r in rows]
-    [('approx', 0.0287), ('thin', 0.0)]
+    [('approx', 0.0287), ('thin', 0.0), ('wave', 0.0702)]
     """
     lens = lens or NO_LENS
     f = prescription_focal_length(lens, focal_length_mm)
@@ -589,14 +677,21 @@ def compare_models(
     count = 1
     for value in (f, f_number, coc_mm, distance_mm):
         count = max(count, getattr(value, "size", 1))
+    from camtool.dof.wave import ContrastUnreachable
+
     results: list[tuple[ModelResult, float]] = []
-    for name in available_models(lens):
+    geometric = available_models(lens)
+    for name in (*geometric, "wave"):
         best = float("inf")
         for _ in range(max(repeat, 1)):
             start = time.perf_counter()
-            result = depth_of_field(name, f, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
-                                    wavelength_nm)
+            try:
+                result = depth_of_field(name, f, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
+                                        wavelength_nm, criterion=criterion)
+            except ContrastUnreachable:
+                break  # no answer by contrast for some scene: the geometric rungs stand alone
             best = min(best, time.perf_counter() - start)
-        results.append((result, best / count))
-    reference = results[-1][0].limits
+        else:
+            results.append((result, best / count))
+    reference = results[len(geometric) - 1][0].limits
     return [ModelComparison(result, depth_error(result.limits, reference), seconds) for result, seconds in results]

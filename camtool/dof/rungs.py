@@ -20,7 +20,7 @@ from camtool.dof.closed import approx_dof, thin_dof
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import FocusGeometry, LensPlaneDistances, focus_geometry
 
-__all__ = ["NO_LENS", "RUNGS", "Focus", "LensData", "Rung", "by_name", "names"]
+__all__ = ["NO_LENS", "RUNGS", "Focus", "LensData", "Rung", "by_name", "geometric", "names"]
 
 
 @dataclass(frozen=True)
@@ -82,6 +82,10 @@ class Rung:
     (diffraction is left out unless the add-on runs). ``help`` is the one-line
     ``--model`` help; ``hyperfocal_help``, when set, makes the rung a choice of
     ``camtool hyperfocal`` (a closed form whose focus at infinity gives H).
+    ``contrast`` marks a rung that defines sharpness by a contrast criterion
+    (``wave``): it takes ``criterion`` and ``wavelength_nm`` as keywords, has
+    diffraction built in, and stands beside the geometric ladder rather than on
+    it (``auto`` picks it by its own rule, :func:`camtool.dof.ladder.depth_of_field`).
     """
 
     name: str
@@ -92,6 +96,7 @@ class Rung:
     needs: str = ""
     supplied_by: tuple[str, ...] = ()
     hyperfocal_help: str | None = None
+    contrast: bool = False
 
 
 class Focus(NamedTuple):
@@ -140,6 +145,13 @@ def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus:
     return raytrace_dof(lens.prescription, n, c, s, plane)
 
 
+def _wave(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None,
+          criterion: Any = None, wavelength_nm: float = 550.0) -> DofLimits:
+    from camtool.dof.wave import wave_dof
+
+    return wave_dof(f, n, c, s, plane, criterion, wavelength_nm, _distances(focus, plane, 0.0))
+
+
 def _has_thick_data(lens: LensData) -> bool:
     return lens.thick_parameters() is not None
 
@@ -164,6 +176,10 @@ RUNGS: tuple[Rung, ...] = (
          "first-order trace of --prescription", _has_prescription, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
     Rung("raytrace", _raytrace, (),
          "real rays", _has_prescription, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
+    Rung("wave", _wave, ("pupil", "hiatus", "aberrations"),
+         "perfect thin lens, sharp where its defocused MTF meets --criterion (diffraction and defocus together)",
+         hyperfocal_help="by contrast: where the far limit's MTF meets --criterion (auto with --diffraction or "
+                         "--criterion)", contrast=True),
 )
 """The rungs, cheapest (and least complete) first."""
 
@@ -190,6 +206,15 @@ def names() -> tuple[str, ...]:
     Examples
     --------
     >>> names()
-    ('approx', 'thin', 'thick', 'paraxial', 'raytrace')
+    ('approx', 'thin', 'thick', 'paraxial', 'raytrace', 'wave')
     """
     return tuple(by_name())
+
+
+def geometric() -> tuple[Rung, ...]:
+    """The rungs of the geometric ladder (blur against the CoC), cheapest first: every rung but the contrast ones.
+
+    >>> [rung.name for rung in geometric()]
+    ['approx', 'thin', 'thick', 'paraxial', 'raytrace']
+    """
+    return tuple(rung for rung in RUNGS if not rung.contrast)

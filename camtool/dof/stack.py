@@ -78,12 +78,14 @@ def wave_coc_mm(f_number: Any, magnification: Any = 0.0, pupil_magnification: An
     return 2.0 * wavelength_nm * _MM_PER_NM * f_number * (1.0 + magnification / pupil_magnification)
 
 
-def frame_depth_mm(f_number: float, magnification: float, criterion: str, coc_mm: float = 0.03,
+def frame_depth_mm(f_number: float, magnification: float, criterion: Any, coc_mm: float = 0.03,
                    pupil_magnification: float = 1.0, wavelength_nm: float = 550.0,
                    focal_length_mm: float | None = None) -> tuple[float, float]:
     """(front, rear) depth in mm of one frame at magnification m, by the criterion named.
 
-    ``wave``: λ/NA² split evenly. ``classic``: the exact close-up depth of
+    ``wave``: λ/NA² split evenly; a :class:`camtool.dof.wave.Criterion`: the
+    depth by contrast (:func:`camtool.dof.wave.contrast_depth_mm`) split
+    evenly. ``classic``: the exact close-up depth of
     :func:`camtool.dof.closeup.closeup_dof` when the focal length is known,
     else the rule N·c·(1 + m/P)/m² each side.
 
@@ -94,6 +96,11 @@ def frame_depth_mm(f_number: float, magnification: float, criterion: str, coc_mm
     """
     from camtool.dof.closeup import closeup_dof, macro_depth_mm, wave_depth_mm
 
+    if not isinstance(criterion, str):  # a contrast criterion: camtool.dof.wave.Criterion (docs/wave.md)
+        from camtool.dof.wave import contrast_depth_mm
+
+        half = 0.5 * contrast_depth_mm(f_number, magnification, criterion, coc_mm, pupil_magnification, wavelength_nm)
+        return half, half
     require("criterion", criterion, criterion in CRITERIA, " or ".join(CRITERIA))
     if criterion == "wave":
         half = 0.5 * float(wave_depth_mm(f_number, magnification, pupil_magnification, wavelength_nm))
@@ -117,7 +124,7 @@ class RailPlan(NamedTuple):
     criterion: str
 
 
-def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion: str = "wave",
+def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion: Any = "wave",
               coc_mm: float = 0.03, overlap: float = 0.2, pupil_magnification: float = 1.0,
               wavelength_nm: float = 550.0, focal_length_mm: float | None = None,
               max_frames: int = MAX_RAIL_FRAMES) -> RailPlan:
@@ -140,7 +147,7 @@ def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion:
     depth_mm : float, subject depth > 0
     f_number : float, nominal N > 0
     magnification : float, m > 0
-    criterion : ``"wave"`` or ``"classic"``
+    criterion : ``"wave"``, ``"classic"`` or a :class:`camtool.dof.wave.Criterion`
     coc_mm : float, c > 0 (classic only)
     overlap : float, 0 ≤ o < 1, the fraction of each frame's depth shared with the next
     pupil_magnification : float, P > 0
@@ -161,6 +168,7 @@ def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion:
     """
     require_positive("depth_mm", depth_mm)
     require("overlap", overlap, 0.0 <= overlap < 1.0, "0 to below 1")
+    label = criterion if isinstance(criterion, str) else criterion.label()
     front, rear = frame_depth_mm(f_number, magnification, criterion, coc_mm, pupil_magnification, wavelength_nm,
                                  focal_length_mm)
     require("magnification", magnification, math.isfinite(front) and front > 0.0 and rear > 0.0,
@@ -168,7 +176,7 @@ def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion:
     depth = front + rear
     step = depth * (1.0 - overlap)
     if math.isinf(rear):  # sharp to infinity behind the focus: one frame covers any depth
-        return RailPlan(1, math.inf, math.inf, front, rear, math.inf, criterion)
+        return RailPlan(1, math.inf, math.inf, front, rear, math.inf, label)
     ratio = depth_mm / step * (1.0 - 1e-12)
     require("depth_mm", depth_mm, ratio <= max_frames, "at most {limit} ({frames:,} frames of "
             "{step:.4g} mm each)".format(limit="{limit}", frames=max_frames, step=step),
@@ -176,7 +184,7 @@ def rail_plan(depth_mm: float, f_number: float, magnification: float, criterion:
                    "depth per frame needs fewer", limit=max_frames * step / (1.0 - 1e-12))
     frames = max(1, math.ceil(ratio))
     return RailPlan(frames, step, magnification * magnification * step, front, rear, (frames - 1) * step + depth,
-                    criterion)
+                    label)
 
 
 class BracketFrame(NamedTuple):

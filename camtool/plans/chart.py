@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from camtool.core.errors import DomainError, InputError, braced
 from camtool.dof.ladder import LensData, focal_lengths, hyperfocal
@@ -222,11 +222,12 @@ def blur_chart(*, f_numbers: Sequence[float], sensor_width_mm: float, sensor_hei
 def aperture_chart(*, focal_length_mm: float, coc_mm: float, near_mm: float | None, far_mm: float | None,
                    from_f_number: float = 1.4, to_f_number: float = 64.0, focus_mm: float | None = None,
                    distance_from: str = "sensor", pupil_magnification: float | None = None,
-                   wavelength_nm: float = 550.0) -> ChartData:
+                   wavelength_nm: float = 550.0, criterion: Any = None) -> ChartData:
     """Defocus and diffraction blur against f-number for a scene from ``near_mm`` to ``far_mm`` (both needed).
 
     The pupil magnification defaults to 1; the focus to the optimum's
-    (:func:`camtool.render.chartdata.aperture_data`).
+    (:func:`camtool.render.chartdata.aperture_data`). A contrast ``criterion``
+    marks the contrast optimum as well (docs/wave.md).
 
     Examples
     --------
@@ -242,7 +243,7 @@ def aperture_chart(*, focal_length_mm: float, coc_mm: float, near_mm: float | No
         raise InputError("near", "Give the scene's {near} and {far}.", usage=True)
     return aperture_data(focal_length_mm, coc_mm, near_mm, far_mm, log_space(from_f_number, to_f_number, POINTS),
                          focus_mm, distance_from, pupil_magnification if pupil_magnification is not None else 1.0,
-                         wavelength_nm)
+                         wavelength_nm, criterion=criterion)
 
 
 def trade_chart(*, focal_length_mm: float, f_number: float, coc_mm: float, distance_mm: float,

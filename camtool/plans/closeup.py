@@ -211,9 +211,21 @@ def _array(values: list[float]) -> Any:
     return np.asarray(values, dtype=float)
 
 
+def _contrast_reached(f_number: float, coc_mm: float, magnification: float, criterion: Any,
+                      wavelength_nm: float) -> bool:
+    """Whether the wave rung's in-focus MTF reaches its criterion (a row the Airy disc fills may still be sharp)."""
+    return f_number < _contrast_limit(coc_mm, magnification, criterion, wavelength_nm)
+
+
+def _contrast_limit(coc_mm: float, magnification: float, criterion: Any, wavelength_nm: float) -> float:
+    from camtool.dof.wave import DEFAULT_CRITERION, largest_contrast_f_number
+
+    return float(largest_contrast_f_number(criterion or DEFAULT_CRITERION, coc_mm, magnification, wavelength_nm))
+
+
 def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, lens: Any, diffraction: bool,
              wavelength_nm: float, tolerance: float, pupil_magnification: float, direct: bool = False,
-             nominal_focal_mm: Any = None, lens_preset: Any = None) -> list[dict[str, Any]]:
+             nominal_focal_mm: Any = None, lens_preset: Any = None, criterion: Any = None) -> list[dict[str, Any]]:
     """Depth of field of every planned row (from the lens plane, shifted to the sensor plane when asked).
 
     With ``diffraction`` each row gets its Airy disc, diffraction-limit
@@ -249,11 +261,23 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
             rows[i].update({"airy_mm": d.airy_mm, "diffraction_limit_f_number": d.limit_f_number,
                             "wave_dof_mm": wave_depth_mm(n, m, pupil, wavelength_nm) if m > 0 else math.inf,
                             "reason": None})
-            if d.sharp:
+            by_contrast = model in ("auto", "wave") and not d.sharp and _contrast_reached(n, ci, m, criterion,
+                                                                                          wavelength_nm)
+            if d.sharp or by_contrast:  # auto runs wave where the Airy disc dominates (camtool.dof.ladder)
                 sharp.append(i)
+            elif model in ("auto", "wave"):
+                rows[i]["reason"] = (f"nothing sharp: even in focus the MTF misses the contrast criterion; below "
+                                     f"f/{_contrast_limit(ci, m, criterion, wavelength_nm):.3g} leaves depth")
             else:
                 rows[i]["reason"] = (f"nothing sharp: the Airy disc ({d.airy_mm:.3g} mm) fills the CoC "
                                      f"({ci:.3g} mm); below f/{d.limit_f_number:.3g} leaves depth")
+    if diffraction and not sharp and model in ("auto", "wave"):  # no row sharp even by contrast: say by how much
+        from camtool.dof.wave import DEFAULT_CRITERION, ContrastUnreachable, criterion_frequency
+
+        chosen = criterion or DEFAULT_CRITERION
+        raise ContrastUnreachable(setting.f_number[0], _contrast_limit(cs[0], setting.magnification[0], criterion,
+                                                                       wavelength_nm), chosen,
+                                  float(criterion_frequency(chosen, cs[0])), wavelength_nm)
     if diffraction and not sharp:
         from camtool.dof.diffraction import usable_coc_mm
 
@@ -264,7 +288,8 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
         plane = distance_from if direct else "lens"
         s = pick(setting.sensor_distance_mm if plane == "sensor" else setting.lens_distance_mm)
         try:
-            result = depth_of_field(model, f, n, pick(cs), s, plane, lens, diffraction, wavelength_nm, tolerance)
+            result = depth_of_field(model, f, n, pick(cs), s, plane, lens, diffraction, wavelength_nm, tolerance,
+                                    criterion)
         except DomainError as error:
             raise _unreachable(error, direct, setting, sharp) from None
         limits = result.limits

@@ -66,7 +66,8 @@ def _thick_data(lens: LensData | None) -> LensData | None:
 
 def hyperfocal_setting(*, model: str, focal_length_mm: float, f_number: float, coc_mm: float,
                        distance_from: str = "sensor", lens: LensData | None = None, lens_preset: Any = None,
-                       teleconverter: float = 1.0) -> HyperfocalSetting:
+                       teleconverter: float = 1.0, diffraction: bool = False, wavelength_nm: float = 550.0,
+                       criterion: Any = None) -> HyperfocalSetting:
     """The hyperfocal focus setting of one scene: where the far limit starts being infinite.
 
     Decides the rung (``model``, or :func:`camtool.dof.ladder.hyperfocal_rung`
@@ -96,19 +97,21 @@ def hyperfocal_setting(*, model: str, focal_length_mm: float, f_number: float, c
     """
     if model not in hyperfocal_choices():
         raise ValueError(f"unknown model {model!r}; choose one of {', '.join(hyperfocal_choices())}")
-    rung = hyperfocal_rung(lens) if model == "auto" else model
+    by_contrast = model == "wave" or (model == "auto" and (diffraction or criterion is not None))
+    rung = "wave" if by_contrast else hyperfocal_rung(lens) if model == "auto" else model
+    extra = {"diffraction": diffraction and not by_contrast, "wavelength_nm": wavelength_nm, "criterion": criterion}
     k = teleconverter
     focal, kn = k * focal_length_mm, k * f_number
     focus = _focus_model(lens_preset, focal_length_mm)
     if focus is None:
-        h = hyperfocal(rung, focal, kn, coc_mm, distance_from, lens)
-        u_h = float(hyperfocal(rung, focal, kn, coc_mm, "lens", lens).hyperfocal_mm)
+        h = hyperfocal(rung, focal, kn, coc_mm, distance_from, lens, **extra)
+        u_h = float(hyperfocal(rung, focal, kn, coc_mm, "lens", lens, **extra).hyperfocal_mm)
         return HyperfocalSetting(float(h.hyperfocal_mm), float(h.near_mm), str(h.model), focal, kn, focal,
                                  focal / (u_h - focal))
     data = _thick_data(lens)
 
     def lens_plane_h(f_in_effect: float) -> float:
-        at_infinity = depth_of_field(rung, f_in_effect, kn, coc_mm, math.inf, "lens", lens=data)
+        at_infinity = depth_of_field(rung, f_in_effect, kn, coc_mm, math.inf, "lens", lens=data, **extra)
         return float(at_infinity.limits.hyperfocal_mm)
 
     f0, kappa = focus.focal_length_mm, focus.kappa
@@ -131,7 +134,7 @@ def hyperfocal_setting(*, model: str, focal_length_mm: float, f_number: float, c
     m = k * m_lens
     u = f_here + f_here / m
     shift = f_here + f_here * m + focus.hiatus_mm if distance_from == "sensor" else 0.0
-    at_h = depth_of_field(rung, f_here, kn, coc_mm, u, "lens", lens=data)
+    at_h = depth_of_field(rung, f_here, kn, coc_mm, u, "lens", lens=data, **extra)
     return HyperfocalSetting(u + shift, float(at_h.limits.near_mm) + shift, str(at_h.model), focal, kn, f_here, m)
 
 
@@ -144,8 +147,21 @@ def _focus_model(lens_preset: Any, focal_length_mm: float) -> Any:
 
 def hyperfocal_plan(*, model: str, focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_from: str = "sensor",
                     lens: LensData | None = None, lens_preset: Any = None,
-                    teleconverter: float | None = None) -> HyperfocalPlan:
+                    teleconverter: float | None = None, diffraction: bool = False, wavelength_nm: float = 550.0,
+                    criterion: Any = None) -> HyperfocalPlan:
     """Every row of ``camtool hyperfocal``: the lens's focal length and f-number × the teleconverter, H, its near limit.
+
+    With ``diffraction`` or a ``criterion`` under ``auto`` the hyperfocal
+    distance is the ``wave`` rung's (by contrast; a geometric ``model`` named
+    with ``diffraction`` takes the root-sum-square add-on instead): a lens
+    stopped down past the criterion's reach is a :class:`DomainError` on
+    ``f_number`` naming the largest f-number that has a hyperfocal distance.
+
+    >>> p = hyperfocal_plan(model="auto", focal_length_mm=50.0, f_number=200.0, coc_mm=0.03, diffraction=True)
+    Traceback (most recent call last):
+    ...
+    camtool.dof.wave.ContrastUnreachable: f_number=200 is outside the valid range: below f/38.6 for any depth of \
+field by mtf:0.181@coc at 550 nm (nothing is sharp enough: even in focus the MTF at 33.3 lp/mm is below 0.181)
 
     Scalars or arrays of one length (a scalar stands for every row). Without
     a lens preset that focuses internally the arrays go through
@@ -164,14 +180,15 @@ def hyperfocal_plan(*, model: str, focal_length_mm: Any, f_number: Any, coc_mm: 
     focal = _scaled(focal_length_mm, k)
     kn = _scaled(f_number, k)
     if not any(_focus_model(lens_preset, v) for v in _values(focal_length_mm)):
-        h = hyperfocal(model, focal, kn, coc_mm, distance_from, lens)
+        h = hyperfocal(model, focal, kn, coc_mm, distance_from, lens, diffraction, wavelength_nm, criterion)
         return HyperfocalPlan(focal, kn, h.hyperfocal_mm, h.near_mm, h.model)
     import numpy as np
 
     f0s, ns, cs = np.broadcast_arrays(np.asarray(focal_length_mm, float), np.asarray(f_number, float),
                                       np.asarray(coc_mm, float))
     settings = [hyperfocal_setting(model=model, focal_length_mm=float(fi), f_number=float(ni), coc_mm=float(ci),
-                                   distance_from=distance_from, lens=lens, lens_preset=lens_preset, teleconverter=k)
+                                   distance_from=distance_from, lens=lens, lens_preset=lens_preset, teleconverter=k,
+                                   diffraction=diffraction, wavelength_nm=wavelength_nm, criterion=criterion)
                 for fi, ni, ci in zip(f0s.ravel(), ns.ravel(), cs.ravel(), strict=True)]
     if np.ndim(f0s) == 0:
         (one,) = settings

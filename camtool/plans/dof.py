@@ -76,7 +76,7 @@ def dof_table(*, model: str, focal_length_mm: Any, f_number: Any, wanted: Any, c
               by_magnification: bool = False, distance_from: str = "sensor", lens: LensData | None = None,
               pupil_magnification: float | None = None, hiatus_mm: float | None = None, lens_preset: Any = None,
               extension_mm: float | None = None, teleconverter: float | None = None, diffraction: bool = False,
-              wavelength_nm: float = 550.0, tolerance: float = 0.01) -> DofTable:
+              wavelength_nm: float = 550.0, tolerance: float = 0.01, criterion: Any = None) -> DofTable:
     """Every row of ``camtool dof``: which path a scene takes, the model (or all of them), the rows.
 
     ``wanted`` is the focus distance in ``distance_from``'s plane, or the
@@ -94,7 +94,11 @@ def dof_table(*, model: str, focal_length_mm: Any, f_number: Any, wanted: Any, c
     focuses internally (unless a prescription is traced); otherwise the ladder
     runs on the distances as given. ``model="all"`` gives every rung the lens
     data allow, scene by scene, the most complete last, with each rung's
-    difference from it and its time per evaluation (best of three).
+    difference from it and its time per evaluation (best of three); then
+    ``wave``. ``criterion`` (a :class:`camtool.dof.wave.Criterion`) is the
+    contrast criterion of ``wave``, which ``auto`` then runs; ``wave`` has
+    diffraction built in, so ``diffraction`` alone does not send it through
+    the close-up planner.
 
     Examples
     --------
@@ -109,10 +113,16 @@ def dof_table(*, model: str, focal_length_mm: Any, f_number: Any, wanted: Any, c
     """
     from camtool.plans.closeup import has_focus_model
 
+    if criterion is not None and model not in ("wave", "auto", "all"):
+        from camtool.core.errors import InputError
+
+        raise InputError("criterion", f"{{criterion}} sets the wave model's contrast criterion; with {{model}} {model} "
+                         "it has nothing to set (use {model} wave, auto or all)", usage=True)
     scene = _Scene(model, focal_length_mm, f_number, wanted, coc_mm, by_magnification, distance_from, lens,
                    pupil_magnification, hiatus_mm, lens_preset, extension_mm, teleconverter, diffraction,
-                   wavelength_nm, tolerance)
-    asked = bool(by_magnification or extension_mm or teleconverter or diffraction)
+                   wavelength_nm, tolerance, criterion)
+    wave = model == "wave" or (model == "auto" and criterion is not None)
+    asked = bool(by_magnification or extension_mm or teleconverter or (diffraction and not wave))
     by_rays = lens is not None and lens.prescription is not None
     if asked or (has_focus_model(lens_preset) and not by_rays):
         return _closeup_all(scene) if model == "all" else _closeup_table(scene, model)
@@ -136,6 +146,7 @@ class _Scene(NamedTuple):
     diffraction: bool
     wavelength: float
     tolerance: float
+    criterion: Any
 
     def fallback(self) -> Any:
         """P and δ of the lens data given by hand and the preset (no prescription file), else 1 and 0."""
@@ -163,7 +174,7 @@ def _direct(scene: _Scene) -> DofTable:
 
     f, n, s, c, plane = scene.f, scene.n, scene.wanted, scene.c, scene.plane
     result = depth_of_field(scene.model, f, n, c, s, plane, scene.lens, scene.diffraction, scene.wavelength,
-                            scene.tolerance)
+                            scene.tolerance, scene.criterion)
     limits = result.limits
     p = scene.fallback().pupil_magnification
     rows = ColumnRows(_size(f, n, s, c), {
@@ -199,7 +210,7 @@ def _closeup_rows(scene: _Scene, model: str) -> tuple[list[dict[str, Any]], bool
     rows = dof_rows(model=model, setting=setting, coc_mm=scene.c, distance_from=scene.plane, lens=scene.lens,
                     diffraction=scene.diffraction, wavelength_nm=scene.wavelength, tolerance=scene.tolerance,
                     pupil_magnification=p, direct=not scene.by_m and not setting.modelled, nominal_focal_mm=nominal,
-                    lens_preset=scene.preset)
+                    lens_preset=scene.preset, criterion=scene.criterion)
     return rows, setting.modelled
 
 
@@ -221,7 +232,7 @@ def _closeup_table(scene: _Scene, model: str) -> DofTable:
 def _hyperfocal_model(model: str, lens: Any, rows: Any) -> str | None:
     """Under auto, when some row's limits came from a cheaper rung: the one rung the H column is computed by."""
     rung = hyperfocal_rung(lens)
-    if model != "auto" or all(str(row["model"]).split("+")[0] == rung for row in rows):
+    if model != "auto" or all(str(row["model"]).split("+")[0] in (rung, "wave") for row in rows):  # wave: its own H
         return None
     return rung
 
@@ -233,7 +244,8 @@ def _direct_all(scene: _Scene) -> DofTable:
 
     f, n, s, c, plane = scene.f, scene.n, scene.wanted, scene.c, scene.plane
     count = _size(f, n, s, c)
-    rungs = compare_models(f, n, c, s, plane, scene.lens, scene.diffraction, scene.wavelength)
+    rungs = compare_models(f, n, c, s, plane, scene.lens, scene.diffraction, scene.wavelength,
+                           criterion=scene.criterion)
     per_model = []
     for rung in rungs:
         limits = rung.result.limits
@@ -246,7 +258,8 @@ def _direct_all(scene: _Scene) -> DofTable:
             "difference_pct": rung.difference * 100.0, "time_per_evaluation_s": rung.time_per_evaluation_s,
         }))
     rows = [model_rows[i] for i in range(count) for model_rows in per_model]  # every model of one scene together
-    return DofTable(rows, "direct", False, False, None, frozenset(), False, False, rungs[-1].result.model)
+    reference = [rung.result.model for rung in rungs if rung.result.model != "wave"][-1]
+    return DofTable(rows, "direct", False, False, None, frozenset(), False, False, reference)
 
 
 def _closeup_all(scene: _Scene) -> DofTable:

@@ -179,6 +179,40 @@ def optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, distance_from: s
     }
 
 
+def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criterion: Any, coc_mm: Any = None,
+                     distance_from: str = "sensor", wavelength_nm: float = 550.0) -> dict[str, Any]:
+    """The optimum f-number for a near and far limit by contrast: the most MTF at the criterion's frequency, by key.
+
+    :func:`camtool.dof.wave.contrast_optimum` row by row (scalars, or lists of
+    one length); the frequency is the criterion's, or 1/c for ``@coc``.
+    ``mtf_level`` is the criterion's level: the range is sharp by it where ``mtf`` reaches it.
+
+    >>> from camtool.dof.wave import Criterion
+    >>> r = contrast_optimum(focal_length_mm=150.0, near_mm=2000.0, far_mm=float("inf"), distance_from="lens",
+    ...                      criterion=Criterion(0.1, 20.0))
+    >>> round(r["f_number"], 1), r["mtf"] >= r["mtf_level"]
+    (60.2, True)
+    """
+    from camtool.dof.wave import contrast_optimum as best
+    from camtool.dof.wave import criterion_frequency
+
+    columns = [focal_length_mm, near_mm, far_mm, coc_mm if coc_mm is not None else 0.0]
+    count = max((len(v) for v in columns if hasattr(v, "__len__")), default=0)
+    keys = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "magnification", "f_number", "working_f_number",
+            "mtf", "frequency_lpmm", "defocus_waves", "mtf_level"]
+    out: dict[str, list[Any]] = {key: [] for key in keys}
+    for i in range(max(count, 1)):
+        f, a, b, c = (v[i] if hasattr(v, "__len__") else v for v in columns)
+        nu = float(criterion_frequency(criterion, c))
+        r = best(float(f), float(a), float(b), nu, distance_from, wavelength_nm)
+        for key, value in zip(keys, (f, a, b, r.distance_mm, r.magnification, r.f_number, r.working_f_number, r.mtf,
+                                     nu, r.defocus_waves, criterion.level)):
+            out[key].append(float(value))  # plain floats to the writer
+    values: dict[str, Any] = {key: (column if count else column[0]) for key, column in out.items()}
+    values["distance_from"] = distance_from
+    return values
+
+
 def spread_optimum(*, focus_spread_mm: Any, magnification: Any = 0.0, pupil_magnification: float = 1.0,
                    wavelength_nm: float = 550.0) -> dict[str, Any]:
     """The optimum f-number for a focus spread (rail travel) at a magnification, by key.

@@ -129,10 +129,14 @@ class RailStack(NamedTuple):
 
 
 def rail_stack(*, depth_mm: float, f_number: float, magnification: float, coc_mm: float,
-               criterion: str | None = None, overlap: float = DEFAULT_OVERLAP, pupil_magnification: float = 1.0,
+               criterion: Any = None, overlap: float = DEFAULT_OVERLAP, pupil_magnification: float = 1.0,
                wavelength_nm: float = 550.0, focal_length_mm: float | None = None, diffraction: bool = False,
                model: str = "auto", lens_preset: Any = None, max_frames: int = MAX_RAIL_FRAMES) -> RailStack:
     """A rail stack: the criterion (wave from 1:1 up unless named), the CoC and :func:`camtool.dof.stack.rail_plan`.
+
+    ``criterion`` is ``classic``, ``wave`` or a contrast criterion
+    (:class:`camtool.dof.wave.Criterion`: each frame's depth is where the
+    perfect lens's MTF meets it, docs/wave.md).
 
     Refuses a magnification beyond the lens preset's published largest, and
     the paraxial and raytrace models (the frames are the close-up closed form).
@@ -158,7 +162,7 @@ def rail_stack(*, depth_mm: float, f_number: float, magnification: float, coc_mm
         c = _usable(f_number, c, magnification, pupil_magnification, wavelength_nm)
     plan = rail_plan(depth_mm, f_number, magnification, chosen, c, overlap, pupil_magnification, wavelength_nm,
                      focal_length_mm, max_frames)
-    return RailStack(plan, float(magnification), chosen, c, float(depth_mm), float(overlap))
+    return RailStack(plan, float(magnification), plan.criterion, c, float(depth_mm), float(overlap))
 
 
 def rail_rows(stack: RailStack, *, start: int = 0, stop: int | None = None) -> ColumnRows:
@@ -257,7 +261,7 @@ def _rung(model: str, lens: LensData | None, f: float, n: float, c: float, near_
 
 
 def bracket_stack(*, focal_length_mm: float | None, f_number: float, coc_mm: float, near_mm: float, far_mm: float,
-                  overlap: float = DEFAULT_OVERLAP, criterion: str | None = None, model: str = "auto",
+                  overlap: float = DEFAULT_OVERLAP, criterion: Any = None, model: str = "auto",
                   lens: LensData | None = None, lens_preset: Any = None, pupil_magnification: float = 1.0,
                   wavelength_nm: float = 550.0, diffraction: bool = False, tolerance: float = 0.01,
                   distance_from: str = "sensor", lens_name: str | None = None) -> BracketStack:
@@ -286,6 +290,9 @@ def bracket_stack(*, focal_length_mm: float | None, f_number: float, coc_mm: flo
     >>> len(s.frames), s.model, s.frames[-1].distance_mm == 24.0 ** 2 / (11.0 * 0.03) + 24.0
     (2, 'thin', True)
     """
+    if criterion is not None and not isinstance(criterion, str):
+        raise InputError("criterion", "a contrast criterion sets the depth of each frame of a rail stack "
+                         "({magnification} and {depth}); bracketing takes classic or wave", usage=True)
     focal = focal_lengths(lens, [] if focal_length_mm is None else [focal_length_mm])
     if not focal:
         raise InputError("focal_length", "Missing option '{focal_length}'.", usage=True)

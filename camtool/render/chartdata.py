@@ -259,8 +259,14 @@ def blur_data(focal_lengths: Sequence[float], f_numbers: Sequence[float], magnif
 
 def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm: float,
                   f_numbers: Sequence[float], focus_mm: float | None = None, distance_from: str = "sensor",
-                  pupil_magnification: float = 1.0, wavelength_nm: float = 550.0, scene: str = "") -> ChartData:
+                  pupil_magnification: float = 1.0, wavelength_nm: float = 550.0, scene: str = "",
+                  criterion: Any = None) -> ChartData:
     """Blur (mm) at the scene's near and far limits from defocus, and the Airy disc, against f-number; the optimum marked.
+
+    With a contrast ``criterion`` (:class:`camtool.dof.wave.Criterion`) the
+    contrast optimum is marked too: the f-number whose MTF at the criterion's
+    frequency is highest at both limits (:func:`camtool.dof.wave.contrast_optimum`,
+    ``extra["contrast_f_number"]``), beside the root-sum-square one.
 
     The optimum aperture is :func:`camtool.dof.closeup.optimum_for_limits`:
     focused half-way between the near and far images (Hansma's rule), the
@@ -341,6 +347,14 @@ def aperture_data(focal_length_mm: float, coc_mm: float, near_mm: float, far_mm:
                        "optimum_focus_mm": float(best.distance_mm),
                        "crossing_f_number": math.sqrt(k / a), "crossing_blur_mm": math.sqrt(k * a),
                        "wavelength_nm": wavelength_nm})
+    if criterion is not None:
+        from camtool.dof.wave import contrast_optimum, criterion_frequency
+
+        nu = float(criterion_frequency(criterion, coc_mm))
+        by_contrast = contrast_optimum(focal_length_mm, near_mm, far_mm, nu, distance_from, wavelength_nm)
+        data.marks.append(Mark(f"contrast optimum f/{by_contrast.f_number:.3g} ({criterion.label()})", 5,
+                               by_contrast.f_number, None))
+        data.extra.update({"contrast_f_number": by_contrast.f_number, "contrast_mtf": by_contrast.mtf})
     return data
 
 
@@ -352,7 +366,7 @@ def trade_data(focal_length_mm: float | None, f_number: float, coc_mm: float, di
     From :func:`camtool.dof.ladder.compare_models` for this one scene, timed
     on the spot (best of ``repeat``). Each rung is a point: x the time per
     evaluation in seconds, y the difference (a fraction; 0 for the most
-    complete rung, the reference) and, in ``extra["estimates"]``, the error
+    complete geometric rung, the reference; ``wave`` last) and, in ``extra["estimates"]``, the error
     ``auto`` estimates for it.
 
     Parameters
@@ -366,7 +380,7 @@ def trade_data(focal_length_mm: float | None, f_number: float, coc_mm: float, di
     --------
     >>> data = trade_data(50.0, 8.0, 0.03, 3000.0, repeat=1)
     >>> [(c.label, round(c.y[0], 4)) for c in data.curves]
-    [('approx', 0.0287), ('thin', 0.0)]
+    [('approx', 0.0287), ('thin', 0.0), ('wave', 0.0702)]
     """
     rows = compare_models(focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
                           wavelength_nm, repeat=repeat)
@@ -375,7 +389,7 @@ def trade_data(focal_length_mm: float | None, f_number: float, coc_mm: float, di
         data.curves.append(Curve(str(row.result.model), group, "rung", [row.time_per_evaluation_s],
                                  [float(row.difference)]))
     data.extra["estimates"] = [float(row.result.error_estimate) for row in rows]
-    data.extra["reference"] = str(rows[-1].result.model)
+    data.extra["reference"] = [str(row.result.model) for row in rows if row.result.model != "wave"][-1]
     return data
 
 

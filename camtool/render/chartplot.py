@@ -233,6 +233,9 @@ def _aperture(figure: Figure, data: ChartData, units: str) -> None:
     axes.plot([crossing.x], [crossing.y], marker="o", color=colour(crossing.group), ls="none", label=crossing.label)
     axes.axvline(crossing.x, color=colour(crossing.group), ls=(0, (1, 2)), lw=0.8)
     axes.axhline(coc.y, color="#555555", ls=(0, (5, 2, 1, 2)), lw=0.9, label=coc.label)
+    for mark in data.marks[2:]:  # the contrast optimum, when a criterion was given
+        assert mark.x is not None
+        axes.axvline(mark.x, color=colour(mark.group), ls=(0, (4, 2)), lw=0.9, label=mark.label)
     axes.set_xscale("log")
     axes.set_yscale("log")
     xs = data.curves[0].x
