@@ -44,9 +44,9 @@ from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, f
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
-from camtool.core.records import open_source, records
+from camtool.core.records import Chunk, chunks, open_source
 from camtool.core.units import UnitError
-from camtool.render.columnar import ColumnRows, values_of
+from camtool.render.columnar import ColumnRows, values_of, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
 
@@ -155,23 +155,8 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
         raise BatchFileError(f"--batch {unreadable}") from None
     try:
         with stream:
-            header: list[str] | None = None
-            numbers: list[int] = []
-            rows: list[Any] = []
-            errors: list[str | None] = []
-            for number, record, problem in records(stream, name):
-                if number == 0:
-                    header = record
-                    continue
-                numbers.append(number)
-                rows.append(record)
-                errors.append(None if problem is None else f"--batch row {number}: {problem}")
-                if problem is not None and on_error == "stop":
-                    break
-                if len(numbers) >= CHUNK:
-                    batch.run(header, numbers, rows, errors)
-                    numbers, rows, errors = [], [], []
-            batch.run(header, numbers, rows, errors)
+            for chunk in chunks(stream, name, CHUNK, stop=on_error == "stop"):
+                batch.run(chunk)
     except FileProblem as unreadable:
         batch.end(failed=True)
         raise BatchFileError(f"--batch {unreadable}") from None
@@ -199,15 +184,17 @@ class _Batch:
 
     # -- parsing: a column at a time ------------------------------------------------------------
 
-    def _parse(self, header: list[str] | None, numbers: list[int], records: list[Any],
-               errors: list[str | None]) -> tuple[dict[str, Any], dict[str, list[Any]]]:
+    def _parse(self, chunk: Chunk, errors: list[str | None]) -> tuple[dict[str, Any], dict[str, list[Any]]]:
         """Parameter values by name (float arrays, NaN where a cell is empty; lists for the others) and
         the passed-through cells by column; a bad cell's message goes to ``errors`` (the first per row)."""
-        if header is not None:
+        header, numbers, records = chunk.header, chunk.numbers, chunk.rows or []
+        if chunk.columns is not None:
+            data: dict[str, Sequence[Any]] = dict(zip(header or [], chunk.columns))
+        elif header is not None:
             width = len(header)
             rows = [cells if cells is not None and len(cells) == width
                     else [*(cells or []), *[""] * (width - len(cells or []))] for cells in records]
-            data: dict[str, Sequence[Any]] = dict(zip(header, zip(*rows))) if width else {}
+            data = dict(zip(header, zip(*rows))) if width else {}
         else:
             keys = dict.fromkeys(key for record in records if record for key in record)
             data = {key: [record.get(key) if record else None for record in records] for key in keys}
@@ -233,7 +220,7 @@ class _Batch:
             values[name] = parsed
         return values, passed
 
-    def _merge(self, param: click.Parameter, first: Any, second: Any, numbers: list[int],
+    def _merge(self, param: click.Parameter, first: Any, second: Any, numbers: Sequence[int],
                errors: list[str | None]) -> Any:
         """One option given by two columns: each row takes the one it fills; a row that fills both is bad."""
         import numpy as np
@@ -252,7 +239,7 @@ class _Batch:
         return merged
 
     def _numbers(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
-                 numbers: list[int], errors: list[str | None]) -> Any:
+                 numbers: Sequence[int], errors: list[str | None]) -> Any:
         """One list-option column as floats: plain numbers parsed at once, cells with units one by one."""
         import numpy as np
 
@@ -266,14 +253,14 @@ class _Batch:
             if np.isnan(array).any():
                 array = None  # "nan" typed in a cell: an error, found below
         except (ValueError, TypeError):
-            array = _suffixed(cells, param)
-            factor = 1.0 if array is not None else factor
+            array, factor = _suffixed(cells, param) or (None, factor)
         overflow = None
-        if array is not None and factor != 1.0:
-            with np.errstate(over="ignore"):
-                scaled = array * factor
-            overflow = np.isinf(scaled) & np.isfinite(array)  # 1e308 m: no finite length, as on the command line
-            array = scaled
+        if array is not None:
+            if factor != 1.0:
+                with np.errstate(over="ignore"):
+                    scaled = array * factor
+                overflow = np.isinf(scaled) & np.isfinite(array)  # 1e308 m: no finite length, as on the command line
+                array = scaled
         else:
             array = np.empty(len(cells))
             for index, cell in enumerate(cells):
@@ -306,7 +293,7 @@ class _Batch:
             return math.nan
 
     def _settings(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
-                  numbers: list[int], errors: list[str | None]) -> list[Any]:
+                  numbers: Sequence[int], errors: list[str | None]) -> list[Any]:
         """A column of other options (sensor, model, ...): each distinct cell converted once."""
         known: dict[str, Any] = {}
         out: list[Any] = [None] * len(cells)
@@ -331,15 +318,17 @@ class _Batch:
 
     # -- computing: one call per group of rows sharing their settings ------------------------------
 
-    def run(self, header: list[str] | None, numbers: list[int], records: list[Any],
-            errors: list[str | None]) -> None:
+    def run(self, chunk: Chunk) -> None:
         """Compute one chunk and write its rows; in stop mode, the rows before the first bad one, then raise."""
+        numbers = chunk.numbers
         if not numbers:
             return
         import numpy as np
 
-        errors = list(errors)
-        values, passed = self._parse(header, numbers, records, errors)
+        errors: list[str | None] = [None if problem is None else f"--batch row {number}: {problem}"
+                                    for number, problem in zip(numbers, chunk.problems)] if chunk.problems \
+            else [None] * len(numbers)
+        values, passed = self._parse(chunk, errors)
         if self.fields and not self.total:  # a --field no row can have: refused before any row's message
             from camtool.cli.rows import DYNAMIC_KEYS, check_fields
 
@@ -380,7 +369,7 @@ class _Batch:
         else:
             self._write_rows(results, passed, errors, len(numbers))
 
-    def _solve(self, members: list[int], values: dict[str, Any], numbers: list[int], errors: list[str | None],
+    def _solve(self, members: list[int], values: dict[str, Any], numbers: Sequence[int], errors: list[str | None],
                results: list[tuple[list[int], Output]]) -> None:
         """Compute a group in one call; if it fails, halve it until the bad rows are found."""
         try:
@@ -460,7 +449,7 @@ class _Batch:
             if whole or same:
                 data[key] = parts[0][1]
             elif all(_numeric(v) for _, v in parts):
-                column = np.full(count, np.nan)
+                column = np.zeros(count)  # a skipped row's cell is never written: no NaN to withhold
                 for members, value in parts:
                     column[members] = np.asarray(value, dtype=float).reshape(-1) if not isinstance(
                         value, (int, float)) else value
@@ -472,8 +461,7 @@ class _Batch:
                 data[key] = column
         skipped = errors if any(error is not None for error in errors) else None
         rows = ColumnRows(count, data, skipped, kept=frozenset(passed))
-        for _, out in results:
-            self.writer.write(rows if out is results[0][1] else [], columns, keys, out.footer)
+        write_block(self.writer, rows, columns, keys, [out.footer for _, out in results])
 
     def _write_rows(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
                     errors: list[str | None], end: int) -> None:
@@ -532,6 +520,11 @@ def _t_stops(ctx: click.Context, param: click.Parameter, cells: Sequence[Any]) -
     from camtool.cli.common import T_STOP_COLUMN
     from camtool.core.units import parse_t_stop
 
+    try:  # a CSV column: one look at its text finds that no cell holds a T
+        if "t" not in "".join(cells).lower():
+            return False
+    except TypeError:  # JSON values: numbers among the strings
+        pass
     found = any(isinstance(cell, str) and parse_t_stop(cell) is not None for cell in cells)
     if found:
         ctx.meta[T_STOP_COLUMN] = True
@@ -554,8 +547,9 @@ def _numeric(value: Any) -> bool:
     return getattr(value, "dtype", None) is not None and value.dtype.kind in "fiub"
 
 
-def _suffixed(cells: Sequence[Any], param: click.Parameter) -> Any:
-    """Cells that all end in the same unit (``3.2m``), as numbers in the option's unit; None otherwise."""
+def _suffixed(cells: Sequence[Any], param: click.Parameter) -> tuple[Any, float] | None:
+    """Cells that all end in the same unit (``3.2m``): the numbers and the size of the unit in the option's; None
+    otherwise."""
     import numpy as np
 
     first = cells[0] if cells else None
@@ -572,7 +566,7 @@ def _suffixed(cells: Sequence[Any], param: click.Parameter) -> Any:
         return None
     if np.isnan(array).any():
         return None
-    return array * scale
+    return array, scale
 
 
 def _valid(kind: click.ParamType, array: Any) -> Any:

@@ -13,13 +13,37 @@ import json
 from collections.abc import Iterator, Sequence
 from typing import Any
 
-from camtool.render.serial import printable
+from camtool.render.serial import ERROR, printable
 
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
 
 
+class Masked:
+    """A float column with a hole where a row has no value (null in JSON, an empty CSV cell).
+
+    >>> import numpy as np
+    >>> values_of(Masked(np.array([2.0, 0.5]), np.array([True, False])), 2)
+    [2.0, None]
+    """
+
+    def __init__(self, values: Any, present: Any) -> None:
+        self.values, self.present = values, present
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    def __getitem__(self, index: slice) -> Masked:
+        return Masked(self.values[index], self.present[index])
+
+    def items(self) -> list[float | None]:
+        """The per-row values, None where there is none."""
+        return [v if ok else None for v, ok in zip(self.values.tolist(), self.present.tolist())]
+
+
 def values_of(values: Any, count: int) -> list[Any]:
     """The per-row Python values of a result column (a float repeated, or an array's items)."""
+    if isinstance(values, Masked):
+        return values.items()
     if isinstance(values, (int, float)):
         return [float(values)] * count
     if isinstance(values, str) or values is None:
@@ -63,8 +87,6 @@ class ColumnRows(Sequence[dict[str, Any]]):
             expanded = {key: values_of(value, self.size) for key, value in self.columns.items()}
             rows = [{key: values[i] for key, values in expanded.items()} for i in range(self.size)]
             if self.errors is not None:
-                from camtool.render.serial import ERROR
-
                 for i, message in enumerate(self.errors):
                     if message is not None:
                         rows[i] = {**{key: rows[i][key] for key in self.kept}, ERROR: message}
@@ -127,6 +149,10 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
         out = [cell] * count
     elif isinstance(values, (int, float)):
         out = [_float(float(values), style)] * count
+    elif isinstance(values, Masked):
+        out = texts(values.values, count, style, skipped)
+        for index in (~values.present).nonzero()[0].tolist():
+            out[index] = missing
     elif isinstance(values, list):
         out = [missing if v is None else _string(v, style) if isinstance(v, str) else _other(v, style)
                for v in values]
@@ -134,6 +160,8 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
         import numpy as np
 
         array = np.asarray(values).reshape(-1)
+        if array.dtype.kind == "O":  # groups of a batch chunk put together: floats, None, names
+            return texts(array.tolist(), count, style, skipped)
         if array.dtype.kind not in "fiub":
             items = array.tolist()
             shown = {item: _string(str(item), style) for item in set(items)}
@@ -180,3 +208,143 @@ def _other(value: Any, style: str) -> str:
     if style == "json":
         return _ENCODER.encode(value)
     return _string(str(value), style)
+
+
+def arrow() -> Any:
+    """pyarrow's compute module when the ``batch`` extra is installed, else None (the text is then made in Python)."""
+    try:
+        import pyarrow.compute
+    except ImportError:  # pragma: no cover - the test environment has the extra
+        return None
+    return pyarrow.compute
+
+
+def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Sequence[str | None]) -> str:
+    """The rows as CSV lines (each ending in a newline) or JSON objects (each after ``,\\n``), made by pyarrow.
+
+    Byte for byte what the row writer makes of the same rows: each float as
+    :func:`repr` prints it (pyarrow's shortest round-trip digits, which are
+    Python's, in the range where both print plain decimals; Python's own
+    ``repr`` outside it), strings escaped as :func:`texts` does. ``errors``:
+    a message for each row that is skipped (its computed cells empty, in JSON
+    null with an ``error`` key), None for the others.
+    """
+    import numpy as np
+    import pyarrow as pa
+    import pyarrow.compute as pc
+
+    count = rows.size
+    skipped = np.array([e is not None for e in errors], dtype=bool) if any(e is not None for e in errors) else None
+    missing = pa.scalar(MISSING[style])
+    cells: list[Any] = []
+    for key in keys:
+        values = rows.columns.get(key)
+        skip = None if key in rows.kept else skipped
+        cells.append(_arrow_texts(values, count, style, skip, missing))
+    if style == "csv":
+        line = pc.binary_join_element_wise(*cells, ",") if cells else pa.scalar("")
+        line = pc.binary_join_element_wise(line, "\n", "")
+    else:
+        parts: list[Any] = []
+        for index, key in enumerate(keys):
+            parts += [("{" if index == 0 else ", ") + _ENCODER.encode(key) + ": ", cells[index]]
+        if not keys:
+            parts.append("{")
+        if skipped is not None:
+            tail = ["}"] * count
+            for index in np.flatnonzero(skipped).tolist():
+                tail[index] = (", " if keys else "") + f"{_ENCODER.encode(ERROR)}: {_ENCODER.encode(errors[index])}}}"
+            parts.append(pa.array(tail, pa.string()))
+        else:
+            parts.append("}")
+        line = pc.binary_join_element_wise(",\n", *parts, "")
+    if isinstance(line, pa.Scalar):  # every cell the same: no array to join
+        return str(line.as_py()) * count
+    return _joined(line)
+
+
+def _joined(array: Any) -> str:
+    """The concatenated text of a string array (no nulls): its data buffer between the first and last offsets."""
+    import numpy as np
+
+    offsets = np.frombuffer(array.buffers()[1], dtype=np.int32)[array.offset:array.offset + len(array) + 1]
+    data = array.buffers()[2]
+    return data.to_pybytes()[int(offsets[0]):int(offsets[-1])].decode("utf-8") if len(array) else ""
+
+
+def _arrow_texts(values: Any, count: int, style: str, skipped: Any, missing: Any) -> Any:
+    """One column as pyarrow strings (or one string scalar for every row), as :func:`texts` writes it."""
+    import numpy as np
+    import pyarrow as pa
+    import pyarrow.compute as pc
+
+    if values is None:
+        return missing
+    if isinstance(values, Masked):
+        out = _arrow_texts(values.values, count, style, skipped, missing)
+        return pc.if_else(pa.array(values.present), out, missing)
+    if isinstance(values, (str, int, float)):
+        cell = _string(values, style) if isinstance(values, str) else _float(float(values), style)
+        return cell if skipped is None else pc.if_else(pa.array(skipped), missing, cell)
+    if not isinstance(values, np.ndarray) or values.dtype.kind not in "fiubUS":
+        skip = np.flatnonzero(skipped).tolist() if skipped is not None else ()
+        return pa.array(texts(values, count, style, skip), pa.string())
+    array = values.reshape(-1)
+    if len(array) == 1 and count > 1:
+        return _arrow_texts(array[0].item(), count, style, skipped, missing)
+    if array.dtype.kind in "US":  # names, e.g. the model each row ran: each distinct one escaped once
+        encoded = pc.dictionary_encode(pa.array(array.astype(str)))
+        shown = pa.array([_string(str(name), style) for name in encoded.dictionary.to_pylist()], pa.string())
+        out = pc.take(shown, encoded.indices)
+    else:
+        array = np.ascontiguousarray(array, dtype=float)
+        out = pc.cast(pa.array(array), pa.string())
+        out = pc.if_else(pc.match_substring(out, "."), out, pc.binary_join_element_wise(out, ".0", ""))
+        size = np.abs(array)
+        with np.errstate(invalid="ignore"):
+            other = ~(((size >= 1e-4) & (size < 1e10)) | (array == 0.0))  # pyarrow writes 1e+10, Python 10000000000.0
+        if skipped is not None:
+            other &= ~skipped
+        if other.any():
+            shown = [_float(value, style) for value in array[other].tolist()]
+            out = pc.replace_with_mask(out, pa.array(other), pa.array(shown, pa.string()))
+    return out if skipped is None else pc.if_else(pa.array(skipped), missing, out)
+
+
+def write_block(writer: Any, rows: ColumnRows, columns: Sequence[Any], keys: Sequence[str],
+                footers: Sequence[str]) -> None:
+    """Hand a block of rows held as columns to ``writer`` (a :class:`camtool.render.output.RowWriter`).
+
+    CSV and JSON text is made by :func:`arrow_lines` when pyarrow is
+    installed (the same bytes as the writer's own, several times faster); a
+    table, ``--field`` lines, rows already made into dicts and a block with a
+    NaN to withhold go through the writer itself.
+    """
+    fast = not (writer.fields or writer.fmt not in ("csv", "json") or rows.materialised or arrow() is None
+                or _has_nan(rows, writer.keys or keys))
+    for index, footer in enumerate(footers or [""]):  # the first fixes the keys (and writes a CSV header)
+        writer.write([] if fast or index else rows, columns, keys, footer)
+    if not fast:
+        return
+    text = arrow_lines(rows, writer.keys, writer.fmt, list(rows.errors or [None] * rows.size))
+    if writer.fmt == "json":
+        text = ("[\n" if not writer.started else ",\n") + text[2:]
+        writer.started = True
+    writer.stream.write(text)
+
+
+def _has_nan(rows: ColumnRows, keys: Sequence[str]) -> bool:
+    """Whether a computed float column holds a NaN (the writer then withholds those rows, naming the keys)."""
+    import numpy as np
+
+    for key in keys:
+        values = rows.columns.get(key)
+        if isinstance(values, Masked):
+            values = values.values[values.present]
+        if key in rows.kept or getattr(values, "dtype", None) is None or values.dtype.kind != "f":
+            if isinstance(values, float) and values != values and key not in rows.kept:
+                return True
+            continue
+        if np.isnan(values).any():
+            return True
+    return False
