@@ -44,8 +44,7 @@ from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, f
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
-from camtool.core.records import Chunk, chunks, open_source
-from camtool.core.units import UnitError
+from camtool.core.records import Chunk, chunks, group_rows, open_source, unit_column
 from camtool.render.columnar import ColumnRows, values_of, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
@@ -253,7 +252,11 @@ class _Batch:
             if np.isnan(array).any():
                 array = None  # "nan" typed in a cell: an error, found below
         except (ValueError, TypeError):
-            array, factor = _suffixed(cells, param) or (None, factor)
+            array, suffix = unit_column(cells) or (None, "")
+            try:
+                factor = float(param.type.parse("1" + suffix)) if suffix else factor  # type: ignore[attr-defined]
+            except (ValueError, TypeError):  # not a unit of this option (a UnitError): each cell says why
+                array = None
         overflow = None
         if array is not None:
             if factor != 1.0:
@@ -345,12 +348,7 @@ class _Batch:
                 for index in np.flatnonzero(missing).tolist():
                     if errors[index] is None:
                         errors[index] = f"--batch row {numbers[index]}: no value for {param.opts[-1]}"
-        settings = [name for name in values if isinstance(values[name], list)]
-        groups: dict[tuple[Any, ...], list[int]] = {}
-        for index in range(len(numbers)):
-            if errors[index] is None:
-                key = tuple(_hashable(values[name][index]) for name in settings)
-                groups.setdefault(key, []).append(index)
+        groups = group_rows([column for column in values.values() if isinstance(column, list)], errors)
         results: list[tuple[list[int], Output]] = []
         for members in groups.values():
             self._solve(members, values, numbers, errors, results)
@@ -547,28 +545,6 @@ def _numeric(value: Any) -> bool:
     return getattr(value, "dtype", None) is not None and value.dtype.kind in "fiub"
 
 
-def _suffixed(cells: Sequence[Any], param: click.Parameter) -> tuple[Any, float] | None:
-    """Cells that all end in the same unit (``3.2m``): the numbers and the size of the unit in the option's; None
-    otherwise."""
-    import numpy as np
-
-    first = cells[0] if cells else None
-    if not isinstance(first, str):
-        return None
-    text = first.rstrip()
-    suffix = text[len(text.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")):]
-    if not suffix or not all(isinstance(cell, str) and cell.rstrip().endswith(suffix) for cell in cells):
-        return None
-    try:
-        scale = float(param.type.parse("1" + suffix))  # type: ignore[attr-defined]
-        array = np.array([cell.rstrip()[:-len(suffix)] for cell in cells], dtype=float)
-    except (ValueError, TypeError, UnitError):
-        return None
-    if np.isnan(array).any():
-        return None
-    return array, scale
-
-
 def _valid(kind: click.ParamType, array: Any) -> Any:
     """Which values pass the option's range check (the check of :mod:`camtool.cli.params`, on arrays)."""
     import numpy as np
@@ -586,10 +562,6 @@ def _valid(kind: click.ParamType, array: Any) -> Any:
         if check is _ListType.check:
             return (array > 0) & np.isfinite(array)
     return np.array([value != value or kind.check(value) for value in array.tolist()], dtype=bool)  # type: ignore[attr-defined]
-
-
-def _hashable(value: Any) -> Any:
-    return tuple(value) if isinstance(value, list) else value
 
 
 def _single(value: Any, name: str) -> Any:

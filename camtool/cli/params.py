@@ -286,6 +286,8 @@ class PupilMagnificationType(click.ParamType):
 
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
     """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
+    if isinstance(values, (list, tuple)) and len(values) == 1 and isinstance(values[0], list):
+        return list(values[0])  # one list (a --batch column): copied whole
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]
 
 

@@ -350,3 +350,57 @@ class _Prefixed:
         if line.endswith("\n") or (limit > 0 and len(line) >= limit):
             return line
         return line + self.source.readline(limit - len(line) if limit > 0 else -1)
+
+
+def unit_column(cells: Sequence[Any]) -> tuple[Any, str] | None:
+    """A column whose cells all end in the same unit (``3.2m``): its numbers and the unit; None otherwise.
+
+    >>> unit_column(["3.2m", "10m"])
+    (array([ 3.2, 10. ]), 'm')
+    >>> unit_column(["3.2m", "10ft"]) is None
+    True
+    """
+    import numpy as np
+
+    first = cells[0] if cells else None
+    if not isinstance(first, str):
+        return None
+    text = first.rstrip()
+    suffix = text[len(text.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")):]
+    if not suffix:
+        return None
+    try:
+        joined = "\n".join(cells) + "\n"
+    except TypeError:  # JSON values: numbers among the strings
+        return None
+    if joined.count("\n") != len(cells) or any(space in joined for space in " \t\v\f\r"):
+        if not all(isinstance(cell, str) and cell.rstrip().endswith(suffix) for cell in cells):
+            return None
+        numbers = [cell.rstrip()[:-len(suffix)] for cell in cells]
+    elif joined.count(suffix + "\n") == len(cells):  # every cell (one a line) ends in the unit
+        numbers = joined.replace(suffix + "\n", "\n").split("\n")[:-1]
+    else:
+        return None
+    try:
+        array = np.array(numbers, dtype=float)
+    except (ValueError, TypeError):
+        return None
+    if np.isnan(array).any():
+        return None
+    return array, suffix
+
+
+def group_rows(settings: Sequence[Sequence[Any]], errors: Sequence[str | None]) -> dict[tuple[Any, ...], list[int]]:
+    """The indices of the rows without an error, grouped by their values of the ``settings`` columns.
+
+    >>> group_rows([["a", "b", "a"]], [None, None, "row 3: bad"])
+    {('a',): [0], ('b',): [1]}
+    """
+    good = [i for i, error in enumerate(errors) if error is None] if any(errors) else list(range(len(errors)))
+    if not settings:
+        return {(): good} if good else {}
+    groups: dict[tuple[Any, ...], list[int]] = {}
+    for index in good:
+        key = tuple(tuple(v) if isinstance(v := column[index], list) else v for column in settings)
+        groups.setdefault(key, []).append(index)
+    return groups

@@ -301,8 +301,11 @@ def _arrow_texts(values: Any, count: int, style: str, skipped: Any, missing: Any
         out = pc.cast(pa.array(array), pa.string())
         out = pc.if_else(pc.match_substring(out, "."), out, pc.binary_join_element_wise(out, ".0", ""))
         size = np.abs(array)
-        with np.errstate(invalid="ignore"):
-            other = ~(((size >= 1e-4) & (size < 1e10)) | (array == 0.0))  # pyarrow writes 1e+10, Python 10000000000.0
+        infinite = size == np.inf
+        if infinite.any():
+            out = pc.if_else(pa.array(infinite), INFINITY[style], out)
+        with np.errstate(invalid="ignore"):  # pyarrow writes 1e+10 where Python writes 10000000000.0
+            other = ~(((size >= 1e-4) & (size < 1e10)) | (array == 0.0) | infinite)
         if skipped is not None:
             other &= ~skipped
         if other.any():
