@@ -210,16 +210,23 @@ def _other(value: Any, style: str) -> str:
     return _string(str(value), style)
 
 
+SLICE = 10_000
+"""Rows turned to text at a time by pyarrow (the text of one slice in memory)."""
+
+
 def arrow() -> Any:
     """pyarrow's compute module when the ``batch`` extra is installed, else None (the text is then made in Python)."""
     try:
+        import pyarrow
         import pyarrow.compute
     except ImportError:  # pragma: no cover - the test environment has the extra
         return None
+    # malloc's pool: memory freed by a slice is reused by the next (pyarrow's own pool keeps more of it)
+    pyarrow.set_memory_pool(pyarrow.system_memory_pool())
     return pyarrow.compute
 
 
-def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Sequence[str | None]) -> str:
+def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Sequence[str | None]) -> Any:
     """The rows as CSV lines (each ending in a newline) or JSON objects (each after ``,\\n``), made by pyarrow.
 
     Byte for byte what the row writer makes of the same rows: each float as
@@ -234,7 +241,7 @@ def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Seque
     import pyarrow.compute as pc
 
     count = rows.size
-    skipped = np.array([e is not None for e in errors], dtype=bool) if any(e is not None for e in errors) else None
+    skipped = np.array([e is not None for e in errors], dtype=bool) if any(errors) else None
     missing = pa.scalar(MISSING[style])
     cells: list[Any] = []
     for key in keys:
@@ -242,8 +249,9 @@ def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Seque
         skip = None if key in rows.kept else skipped
         cells.append(_arrow_texts(values, count, style, skip, missing))
     if style == "csv":
-        line = pc.binary_join_element_wise(*cells, ",") if cells else pa.scalar("")
-        line = pc.binary_join_element_wise(line, "\n", "")
+        parts = [part for cell in cells for part in (cell, ",")]
+        parts[-1:] = ["\n"]
+        line = pc.binary_join_element_wise(*parts, "") if cells else pa.scalar("\n")
     else:
         parts: list[Any] = []
         for index, key in enumerate(keys):
@@ -259,17 +267,18 @@ def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Seque
             parts.append("}")
         line = pc.binary_join_element_wise(",\n", *parts, "")
     if isinstance(line, pa.Scalar):  # every cell the same: no array to join
-        return str(line.as_py()) * count
+        return (str(line.as_py()) * count).encode()
     return _joined(line)
 
 
-def _joined(array: Any) -> str:
-    """The concatenated text of a string array (no nulls): its data buffer between the first and last offsets."""
+def _joined(array: Any) -> memoryview:
+    """The concatenated UTF-8 text of a string array (no nulls): its data buffer between the first and last offsets."""
     import numpy as np
 
+    if not len(array):
+        return memoryview(b"")
     offsets = np.frombuffer(array.buffers()[1], dtype=np.int32)[array.offset:array.offset + len(array) + 1]
-    data = array.buffers()[2]
-    return data.to_pybytes()[int(offsets[0]):int(offsets[-1])].decode("utf-8") if len(array) else ""
+    return memoryview(array.buffers()[2])[int(offsets[0]):int(offsets[-1])]
 
 
 def _arrow_texts(values: Any, count: int, style: str, skipped: Any, missing: Any) -> Any:
@@ -299,13 +308,18 @@ def _arrow_texts(values: Any, count: int, style: str, skipped: Any, missing: Any
     else:
         array = np.ascontiguousarray(array, dtype=float)
         out = pc.cast(pa.array(array), pa.string())
-        out = pc.if_else(pc.match_substring(out, "."), out, pc.binary_join_element_wise(out, ".0", ""))
         size = np.abs(array)
+        with np.errstate(invalid="ignore"):  # pyarrow writes 1e+10 where Python writes 10000000000.0
+            plain = ((size >= 1e-4) & (size < 1e10)) | (array == 0.0)
+            whole = plain & (array == np.trunc(array))  # 35.0: pyarrow writes 35
+        if whole.all():
+            out = pc.binary_join_element_wise(out, ".0", "")
+        elif whole.any():
+            out = pc.if_else(pa.array(whole), pc.binary_join_element_wise(out, ".0", ""), out)
         infinite = size == np.inf
         if infinite.any():
             out = pc.if_else(pa.array(infinite), INFINITY[style], out)
-        with np.errstate(invalid="ignore"):  # pyarrow writes 1e+10 where Python writes 10000000000.0
-            other = ~(((size >= 1e-4) & (size < 1e10)) | (array == 0.0) | infinite)
+        other = ~(plain | infinite)
         if skipped is not None:
             other &= ~skipped
         if other.any():
@@ -329,11 +343,19 @@ def write_block(writer: Any, rows: ColumnRows, columns: Sequence[Any], keys: Seq
         writer.write([] if fast or index else rows, columns, keys, footer)
     if not fast:
         return
-    text = arrow_lines(rows, writer.keys, writer.fmt, list(rows.errors or [None] * rows.size))
-    if writer.fmt == "json":
-        text = ("[\n" if not writer.started else ",\n") + text[2:]
-        writer.started = True
-    writer.stream.write(text)
+    for start in range(0, rows.size, SLICE):  # a slice at a time: the text of one slice in memory
+        part = rows.slice(start, start + SLICE) if rows.size > SLICE else rows
+        text = arrow_lines(part, writer.keys, writer.fmt, list(part.errors or [None] * part.size))
+        if writer.fmt == "json":
+            writer.stream.write("[\n" if not writer.started else ",\n")
+            text = text[2:]
+            writer.started = True
+        binary = getattr(writer.stream, "buffer", None)
+        if binary is not None:  # the bytes as pyarrow made them, not copied into a str
+            writer.stream.flush()
+            binary.write(text)
+        else:
+            writer.stream.write(bytes(text).decode("utf-8"))
 
 
 def _has_nan(rows: ColumnRows, keys: Sequence[str]) -> bool:
