@@ -32,7 +32,6 @@ output, is reported on standard error in row order, and the run exits 1.
 
 from __future__ import annotations
 
-import difflib
 import math
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -111,6 +110,8 @@ class _Columns:
             return self.aliases[key[:-2]][0], "mm"
         if key in self.ignored:
             return None
+        import difflib
+
         near = difflib.get_close_matches(key, list(self.aliases), n=1, cutoff=0.85)
         if near and key:
             option = self.params[self.aliases[near[0]][0]].opts[-1]
