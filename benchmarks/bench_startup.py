@@ -31,7 +31,7 @@ CASES = {
                                                            "--format", "json"],
     "camtool --help": [CAMTOOL, "--help"],
     "camtool presets list": [CAMTOOL, "presets", "list"],
-    "camtool dof --lens mp-e-65 ... --format json": [CAMTOOL, "dof", "--lens", "mp-e-65", "-N", "8", "-s", "0.3",
+    "camtool dof --lens canon-rf-50mm-f1.8-stm ... --format json": [CAMTOOL, "dof", "--lens", "canon-rf-50mm-f1.8-stm", "-N", "8", "-s", "3",
                                                      "--format", "json"],
 }
 BUDGETS = [
@@ -41,7 +41,7 @@ BUDGETS = [
     ("camtool dof -f 50 -N 2.8,4,5.6 -s 3m --format json", "python -c 'import click'", 1.6),
     ("camtool --help", "python -c 'import click'", 1.6),
     ("camtool presets list", "python -c 'import click'", 1.6),
-    ("camtool dof --lens mp-e-65 ... --format json", "python -c 'import click'", 1.6),
+    ("camtool dof --lens canon-rf-50mm-f1.8-stm ... --format json", "python -c 'import click'", 1.6),
 ]
 
 
