@@ -43,8 +43,8 @@ from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, f
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
-from camtool.core.records import Chunk, chunks, group_rows, open_source, unit_column
-from camtool.render.columnar import ColumnRows, values_of, write_block
+from camtool.core.records import Chunk, chunks, floats, group_rows, open_source, unit_column
+from camtool.render.columnar import ColumnRows, placed, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
 
@@ -249,7 +249,7 @@ class _Batch:
         factor = self.factors[key]
         array = None
         try:
-            array = np.array(cells, dtype=float)
+            array = floats(cells)
             if np.isnan(array).any():
                 array = None  # "nan" typed in a cell: an error, found below
         except (ValueError, TypeError):
@@ -433,31 +433,11 @@ class _Batch:
     def _write_columns(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
                        errors: list[str | None]) -> None:
         """The chunk as one block of columns: each group's columns put in its rows' places."""
-        import numpy as np
-
         count = len(errors)
         columns, keys = self._shape(results[0][1])
-        whole = len(results) == 1 and len(results[0][0]) == count
-        data: dict[str, Any] = {}
-        for key in keys:
-            if key in passed:
-                data[key] = passed[key]
-                continue
-            parts = [(members, out.rows.columns.get(key)) for members, out in results]  # type: ignore[attr-defined]
-            same = all(isinstance(v, str) or v is None for _, v in parts) and len({v for _, v in parts}) == 1
-            if whole or same:
-                data[key] = parts[0][1]
-            elif all(_numeric(v) for _, v in parts):
-                column = np.zeros(count)  # a skipped row's cell is never written: no NaN to withhold
-                for members, value in parts:
-                    column[members] = np.asarray(value, dtype=float).reshape(-1) if not isinstance(
-                        value, (int, float)) else value
-                data[key] = column
-            else:
-                column = np.empty(count, dtype=object)
-                for members, value in parts:
-                    column[members] = values_of(value, len(members)) if value is not None else None
-                data[key] = column
+        data = {key: passed[key] if key in passed else placed(
+            count, [(members, out.rows.columns.get(key)) for members, out in results])  # type: ignore[attr-defined]
+            for key in keys}
         skipped = errors if any(error is not None for error in errors) else None
         rows = ColumnRows(count, data, skipped, kept=frozenset(passed))
         write_block(self.writer, rows, columns, keys, [out.footer for _, out in results])
@@ -538,12 +518,6 @@ def _vector(param: click.Parameter) -> bool:
     distinct cell is one group, converted and checked as the option is.
     """
     return isinstance(param.type, _ListType) and getattr(param, "callback", None) is None
-
-
-def _numeric(value: Any) -> bool:
-    if isinstance(value, (int, float)):
-        return True
-    return getattr(value, "dtype", None) is not None and value.dtype.kind in "fiub"
 
 
 def _valid(kind: click.ParamType, array: Any) -> Any:

@@ -382,7 +382,7 @@ def unit_column(cells: Sequence[Any]) -> tuple[Any, str] | None:
     else:
         return None
     try:
-        array = np.array(numbers, dtype=float)
+        array = floats(numbers)
     except (ValueError, TypeError):
         return None
     if np.isnan(array).any():
@@ -404,3 +404,28 @@ def group_rows(settings: Sequence[Sequence[Any]], errors: Sequence[str | None]) 
         key = tuple(tuple(v) if isinstance(v := column[index], list) else v for column in settings)
         groups.setdefault(key, []).append(index)
     return groups
+
+
+def floats(cells: Sequence[Any]) -> Any:
+    """A column of cells as a float array, as ``numpy.array(cells, dtype=float)`` reads it (ValueError if it cannot).
+
+    pyarrow's parser reads a column of number strings several times faster;
+    what it accepts it reads to the same correctly rounded value as Python's
+    ``float`` (only its NaN spellings go further, and a NaN is refused by
+    every caller), and anything it refuses (spaces, ``1_000``, numbers that
+    are not strings) is read by numpy as before.
+
+    >>> floats(["50", "1e3", "2.5"]).tolist()
+    [50.0, 1000.0, 2.5]
+    """
+    import numpy as np
+
+    try:
+        import pyarrow as pa
+        import pyarrow.compute as pc
+    except ImportError:  # pragma: no cover - the test environment has the batch extra
+        return np.array(cells, dtype=float)
+    try:
+        return pc.cast(pa.array(cells, pa.string()), pa.float64()).to_numpy(zero_copy_only=False, writable=True)
+    except (ValueError, TypeError, pa.ArrowException):
+        return np.array(cells, dtype=float)

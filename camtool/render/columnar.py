@@ -58,6 +58,48 @@ def values_of(values: Any, count: int) -> list[Any]:
     return [float(v) for v in flat]
 
 
+def placed(count: int, parts: Sequence[tuple[Sequence[int], Any]]) -> Any:
+    """One column of ``count`` rows from the columns of groups of them: each part's values put in its rows' places.
+
+    Rows no part covers (skipped rows) get a value that is never written
+    (0, or an empty name): no NaN to withhold.
+
+    >>> import numpy as np
+    >>> placed(3, [([0, 2], np.array([1.5, 2.5])), ([1], 4.0)]).tolist()
+    [1.5, 4.0, 2.5]
+    >>> placed(3, [([0, 2], "thin"), ([1], np.array(["approx"]))]).tolist()
+    ['thin', 'approx', 'thin']
+    """
+    import numpy as np
+
+    values = [value for _, value in parts]
+    if len(parts) == 1 and len(parts[0][0]) == count or (
+            all(isinstance(v, str) or v is None for v in values) and len(set(values)) == 1):
+        return values[0]
+    kinds = {"f" if isinstance(v, (int, float)) and not isinstance(v, bool) else "U" if isinstance(v, str)
+             else "M" if isinstance(v, Masked) else getattr(getattr(v, "dtype", None), "kind", "O") for v in values}
+    if kinds <= set("fiubM"):  # numbers, some with holes
+        column = np.zeros(count)
+        present = np.zeros(count, dtype=bool)
+        for members, value in parts:
+            if isinstance(value, Masked):
+                column[members], present[members] = value.values, value.present
+            else:
+                column[members] = value if isinstance(value, (int, float)) else np.asarray(value, float).reshape(-1)
+                present[members] = True
+        return Masked(column, present) if "M" in kinds else column
+    if kinds == {"U"}:  # names: a string array, written a distinct name at a time
+        width = max(len(v) if isinstance(v, str) else v.dtype.itemsize // 4 for v in values)
+        column = np.full(count, "", dtype=f"<U{max(width, 1)}")
+        for members, value in parts:
+            column[members] = value if isinstance(value, str) else np.asarray(value).reshape(-1)
+        return column
+    column = np.empty(count, dtype=object)
+    for members, value in parts:
+        column[members] = values_of(value, len(members)) if value is not None else None
+    return column
+
+
 class ColumnRows(Sequence[dict[str, Any]]):
     """``count`` rows held as named columns (a float, a string, an array or a list per key).
 
