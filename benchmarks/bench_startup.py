@@ -31,8 +31,8 @@ CASES = {
                                                            "--format", "json"],
     "camtool --help": [CAMTOOL, "--help"],
     "camtool presets list": [CAMTOOL, "presets", "list"],
-    "camtool dof --lens canon-rf-50mm-f1.8-stm ... --format json": [CAMTOOL, "dof", "--lens", "canon-rf-50mm-f1.8-stm", "-N", "8", "-s", "3",
-                                                     "--format", "json"],
+    "camtool dof --lens canon-rf-50mm-f1.8-stm ... --format json": [CAMTOOL, "dof", "--lens", "canon-rf-50mm-f1.8-stm",
+                                                                    "-N", "8", "-s", "3", "--format", "json"],
 }
 BUDGETS = [
     ("camtool dof ... --format json", "python -c 'import click'", 2.0),

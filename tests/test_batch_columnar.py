@@ -47,7 +47,7 @@ def _doubles(count: int, seed: int) -> list[float]:
 @pytest.mark.parametrize("style", ["csv", "json"])
 def test_pyarrow_writes_every_float_as_python_repr(style: str) -> None:
     values = _doubles(120_000, seed=7)
-    array = np.array(values + [math.inf, -math.inf])
+    array = np.array([*values, math.inf, -math.inf])
     made = columnar._arrow_texts(array, len(array), style, None, None).to_pylist()
     infinity = "" if style == "csv" else "null"
     assert made == [repr(v) for v in values] + [infinity, infinity]

@@ -290,7 +290,7 @@ def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
         if len(values) == 1 and type(values[0]) is list:
             return list(values[0])
         if list not in set(map(type, values)):
-            return list(values)  # type: ignore[arg-type]
+            return list(values)
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]
 
 

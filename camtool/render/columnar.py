@@ -73,7 +73,7 @@ def placed(count: int, parts: Sequence[tuple[Sequence[int], Any]]) -> Any:
     import numpy as np
 
     values = [value for _, value in parts]
-    if len(parts) == 1 and len(parts[0][0]) == count or (
+    if (len(parts) == 1 and len(parts[0][0]) == count) or (
             all(isinstance(v, str) or v is None for v in values) and len(set(values)) == 1):
         return values[0]
     kinds = {"f" if isinstance(v, (int, float)) and not isinstance(v, bool) else "U" if isinstance(v, str)
@@ -290,12 +290,12 @@ def arrow_lines(rows: ColumnRows, keys: Sequence[str], style: str, errors: Seque
         values = rows.columns.get(key)
         skip = None if key in rows.kept else skipped
         cells.append(_arrow_texts(values, count, style, skip, missing))
+    parts: list[Any] = []
     if style == "csv":
         parts = [part for cell in cells for part in (cell, ",")]
         parts[-1:] = ["\n"]
         line = pc.binary_join_element_wise(*parts, "") if cells else pa.scalar("\n")
     else:
-        parts: list[Any] = []
         for index, key in enumerate(keys):
             parts += [("{" if index == 0 else ", ") + _ENCODER.encode(key) + ": ", cells[index]]
         if not keys:
@@ -405,13 +405,14 @@ def _has_nan(rows: ColumnRows, keys: Sequence[str]) -> bool:
     import numpy as np
 
     for key in keys:
-        values = rows.columns.get(key)
+        values: Any = rows.columns.get(key)
+        if key in rows.kept:
+            continue
         if isinstance(values, Masked):
             values = values.values[values.present]
-        if key in rows.kept or getattr(values, "dtype", None) is None or values.dtype.kind != "f":
-            if isinstance(values, float) and values != values and key not in rows.kept:
+        if isinstance(values, float):
+            if values != values:
                 return True
-            continue
-        if np.isnan(values).any():
+        elif getattr(values, "dtype", None) is not None and values.dtype.kind == "f" and np.isnan(values).any():
             return True
     return False
