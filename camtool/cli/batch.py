@@ -247,15 +247,20 @@ class _Batch:
         if key not in self.factors:
             self.factors[key] = float(param.type.parse("1" + (unit or "")))  # type: ignore[attr-defined]
         factor = self.factors[key]
-        array = None
+        array, suffix = None, ""
+        first = cells[0] if cells else None  # 3.2m: a unit column (no float ends in a unit)
+        if isinstance(first, str) and first.rstrip()[-1:].isalpha() and "inf" not in first.lower():
+            array, suffix = unit_column(cells) or (None, "")
         try:
-            array = floats(cells)
-            if np.isnan(array).any():
-                array = None  # "nan" typed in a cell: an error, found below
+            if array is None:
+                array = floats(cells)
+                if np.isnan(array).any():
+                    array = None  # "nan" typed in a cell: an error, found below
         except (ValueError, TypeError):
             array, suffix = unit_column(cells) or (None, "")
+        if suffix:
             try:
-                factor = float(param.type.parse("1" + suffix)) if suffix else factor  # type: ignore[attr-defined]
+                factor = float(param.type.parse("1" + suffix))  # type: ignore[attr-defined]
             except (ValueError, TypeError):  # not a unit of this option (a UnitError): each cell says why
                 array = None
         overflow = None
@@ -354,7 +359,7 @@ class _Batch:
         for members in groups.values():
             self._solve(members, values, numbers, errors, results)
         self.total += len(numbers)
-        bad = [index for index, error in enumerate(errors) if error is not None]
+        bad = [index for index, error in enumerate(errors) if error is not None] if any(errors) else []
         if bad and self.on_error == "stop":
             self._write_rows(results, passed, errors, bad[0])
             raise BatchRowError(str(errors[bad[0]]))
@@ -392,13 +397,15 @@ class _Batch:
 
         merged = dict(self.params)
         zipped = False
+        chunk = len(next(iter(values.values()), []))
+        every: Any = slice(None) if len(members) == chunk else members  # one group of the whole chunk: no gather
         for name, column in values.items():
             param = self.columns.params[name]
             if isinstance(column, list):  # settings, and an -N column holding T-stops (one value a group)
                 if column[members[0]] is not None:
                     merged[name] = [[column[members[0]]]] if _vector(param) else column[members[0]]
             elif isinstance(param.type, _ListType):
-                chosen = column[members]
+                chosen = column[every]
                 missing = np.isnan(chosen)
                 if missing.all():
                     continue
@@ -415,7 +422,7 @@ class _Batch:
         self.ctx.meta[ZIP] = True
         self.ctx.meta[CELLS] = frozenset(name for name, column in values.items()
                                          if (column[members[0]] is not None if isinstance(column, list)
-                                             else not np.isnan(column[members]).all()))
+                                             else not np.isnan(column[every]).all()))
         try:
             return self.compute(self.ctx, **merged)
         finally:
