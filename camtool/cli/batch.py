@@ -15,14 +15,16 @@ may carry units (``3m``); bare numbers mean what they mean on the command
 line, except in ``*_mm`` columns, which are millimetres. Options given on the
 command line apply to every row; a column overrides them.
 
-Rows are read in chunks of :data:`CHUNK` rows and parsed a column at a time:
-plain numbers (and cells that all share one unit, ``3.2m``) at once, other
-cells one by one; a validity mask finds the bad cells, which alone are
-parsed again for their messages. Within a chunk, rows sharing the same
+Rows are read in chunks of at most :data:`CHUNK` rows (plain CSV split
+into columns a block at a time: :func:`camtool.core.records.chunks`) and
+parsed a column at a time: plain numbers (and cells that all share one unit,
+``3.2m``) at once, other cells one by one; a validity mask finds the bad
+cells, which alone are parsed again for their messages. Within a chunk, rows sharing the same
 non-numeric settings (sensor, model, ...) are computed in one vectorised
 call (a failing call is bisected to find its bad rows), and the output
-keeps the input order, written column by column. Output goes through the one
-:class:`~camtool.render.output.RowWriter`: memory stays bounded for JSON, CSV
+keeps the input order, written column by column (by pyarrow when the batch
+extra is installed: :func:`camtool.render.columnar.write_block`). Output goes
+through the one :class:`~camtool.render.output.RowWriter`: memory stays bounded for JSON, CSV
 and ``--field`` output; a table is drawn once at the end from every row.
 
 A bad row stops the run (exit 2) after the rows before it are written (JSON
