@@ -227,7 +227,7 @@ def _chain(first: str, rest: Iterator[str]) -> Iterator[str]:
     yield from rest
 
 
-BLOCK = 1 << 18
+BLOCK = 1 << 17
 """Characters :func:`chunks` reads at a time (cut at the block's last line end)."""
 
 
