@@ -153,6 +153,7 @@ def main() -> None:
         print("| measurement | time (s) | against | ratio |\n|---|---:|---|---:|")
         _, small_peak = run([camtool, "dof", "--batch", small, "--format", "csv"])
         _, large_peak = run([camtool, "dof", "--batch", large, "--format", "csv"])
+        _, json_peak = run([camtool, "dof", "--batch", large, "--format", "json"])
         times = paired({"arrow": [sys.executable, __file__, "--arrow", large],
                         "csv": [camtool, "dof", "--batch", large, "--format", "csv", "--model", "thin"],
                         "json": [camtool, "dof", "--batch", large, "--format", "json", "--model", "thin"]},
@@ -161,8 +162,9 @@ def main() -> None:
             print(f"| camtool dof --batch, {rows:,} rows, {fmt.upper()} | {times[fmt]:.2f} | pyarrow pipeline "
                   f"{times['arrow']:.2f} s | {times[fmt] / times['arrow']:.2f} |")
         print(f"| rows per second, CSV | {rows / times['csv']:,.0f} | | |")
-        print(f"| peak memory, {rows:,} rows | {large_peak:.0f} MiB | {rows // 10:,} rows {small_peak:.0f} MiB | "
+        print(f"| peak memory, {rows:,} rows, CSV | {large_peak:.0f} MiB | {rows // 10:,} rows {small_peak:.0f} MiB | "
               f"{large_peak / small_peak:.2f} |")
+        print(f"| peak memory, {rows:,} rows, JSON | {json_peak:.0f} MiB | | |")
         bad = os.path.join(tmp, "bad.csv")
         write_scenes(bad, rows // 10, bad_every=20_000)
         for mode in ("stop", "skip"):
