@@ -166,6 +166,7 @@ WRONG_TEXT = [None, 1, 1.5, True, b"thin", ["thin"], "", "THIN", "d/0", "d/-5", 
 INFINITE_OK = {"subject_distance_mm", "front_mm", "far_mm", "rear_mm", "total_mm", "distance_mm", "hyperfocal_mm", "lens_distance_mm",
                "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
                "radius_mm",  # a prescription's flat surface
+               "y",  # a chart curve's far limit beyond the hyperfocal distance
                "step_mm", "extension_step_mm", "covered_mm",  # a rail frame sharp to infinity: one frame covers all
                "focus_distance_mm", "focus_distance_max_mm", "far_max_mm", "far_min_mm",  # a photo focused at infinity
                "far_limit_mm"}  # a CoC map focused beyond the hyperfocal distance

@@ -608,7 +608,8 @@ def check(outcome: Outcome) -> str:
         return f"internal error: {stderr.strip()[:200]}"
     if outcome.code not in (0, 1, 2):
         return f"exit status: {outcome.code}"
-    if CONTROL.search(stdout):
+    image = argv[:1] == ["chart"] and stdout.startswith(("\ufffdPNG", "%PDF", "<?xml"))  # -o -: the chart itself
+    if CONTROL.search(stdout) and not image:
         return f"control character in output: {CONTROL.search(stdout).group()!r}"  # type: ignore[union-attr]
     if CONTROL.search(stderr.replace("\n", "")):
         return f"control character in an error: {stderr[:200]!r}"

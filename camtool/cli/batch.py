@@ -15,14 +15,16 @@ may carry units (``3m``); bare numbers mean what they mean on the command
 line, except in ``*_mm`` columns, which are millimetres. Options given on the
 command line apply to every row; a column overrides them.
 
-Rows are read in chunks of :data:`CHUNK` rows and parsed a column at a time:
-plain numbers (and cells that all share one unit, ``3.2m``) at once, other
-cells one by one; a validity mask finds the bad cells, which alone are
-parsed again for their messages. Within a chunk, rows sharing the same
+Rows are read in chunks of at most :data:`CHUNK` rows (plain CSV split
+into columns a block at a time: :func:`camtool.core.records.chunks`) and
+parsed a column at a time: plain numbers (and cells that all share one unit,
+``3.2m``) at once, other cells one by one; a validity mask finds the bad
+cells, which alone are parsed again for their messages. Within a chunk, rows sharing the same
 non-numeric settings (sensor, model, ...) are computed in one vectorised
 call (a failing call is bisected to find its bad rows), and the output
-keeps the input order, written column by column. Output goes through the one
-:class:`~camtool.render.output.RowWriter`: memory stays bounded for JSON, CSV
+keeps the input order, written column by column (by pyarrow when the batch
+extra is installed: :func:`camtool.render.columnar.write_block`). Output goes
+through the one :class:`~camtool.render.output.RowWriter`: memory stays bounded for JSON, CSV
 and ``--field`` output; a table is drawn once at the end from every row.
 
 A bad row stops the run (exit 2) after the rows before it are written (JSON
@@ -32,7 +34,6 @@ output, is reported on standard error in row order, and the run exits 1.
 
 from __future__ import annotations
 
-import difflib
 import math
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -44,9 +45,8 @@ from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, f
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
-from camtool.core.records import open_source, records
-from camtool.core.units import UnitError
-from camtool.render.columnar import ColumnRows, values_of
+from camtool.core.records import Chunk, chunks, floats, group_rows, open_source, unit_column
+from camtool.render.columnar import ColumnRows, placed, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
 
@@ -112,6 +112,8 @@ class _Columns:
             return self.aliases[key[:-2]][0], "mm"
         if key in self.ignored:
             return None
+        import difflib
+
         near = difflib.get_close_matches(key, list(self.aliases), n=1, cutoff=0.85)
         if near and key:
             option = self.params[self.aliases[near[0]][0]].opts[-1]
@@ -161,23 +163,8 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
         raise BatchFileError(f"--batch {unreadable}") from None
     try:
         with stream:
-            header: list[str] | None = None
-            numbers: list[int] = []
-            rows: list[Any] = []
-            errors: list[str | None] = []
-            for number, record, problem in records(stream, name):
-                if number == 0:
-                    header = record
-                    continue
-                numbers.append(number)
-                rows.append(record)
-                errors.append(None if problem is None else f"--batch row {number}: {problem}")
-                if problem is not None and on_error == "stop":
-                    break
-                if len(numbers) >= CHUNK:
-                    batch.run(header, numbers, rows, errors)
-                    numbers, rows, errors = [], [], []
-            batch.run(header, numbers, rows, errors)
+            for chunk in chunks(stream, name, CHUNK, stop=on_error == "stop"):
+                batch.run(chunk)
     except FileProblem as unreadable:
         batch.end(failed=True)
         raise BatchFileError(f"--batch {unreadable}") from None
@@ -205,15 +192,17 @@ class _Batch:
 
     # -- parsing: a column at a time ------------------------------------------------------------
 
-    def _parse(self, header: list[str] | None, numbers: list[int], records: list[Any],
-               errors: list[str | None]) -> tuple[dict[str, Any], dict[str, list[Any]]]:
+    def _parse(self, chunk: Chunk, errors: list[str | None]) -> tuple[dict[str, Any], dict[str, list[Any]]]:
         """Parameter values by name (float arrays, NaN where a cell is empty; lists for the others) and
         the passed-through cells by column; a bad cell's message goes to ``errors`` (the first per row)."""
-        if header is not None:
+        header, numbers, records = chunk.header, chunk.numbers, chunk.rows or []
+        if chunk.columns is not None:
+            data: dict[str, Sequence[Any]] = dict(zip(header or [], chunk.columns))
+        elif header is not None:
             width = len(header)
             rows = [cells if cells is not None and len(cells) == width
                     else [*(cells or []), *[""] * (width - len(cells or []))] for cells in records]
-            data: dict[str, Sequence[Any]] = dict(zip(header, zip(*rows))) if width else {}
+            data = dict(zip(header, zip(*rows))) if width else {}
         else:
             keys = dict.fromkeys(key for record in records if record for key in record)
             data = {key: [record.get(key) if record else None for record in records] for key in keys}
@@ -239,7 +228,7 @@ class _Batch:
             values[name] = parsed
         return values, passed
 
-    def _merge(self, param: click.Parameter, first: Any, second: Any, numbers: list[int],
+    def _merge(self, param: click.Parameter, first: Any, second: Any, numbers: Sequence[int],
                errors: list[str | None]) -> Any:
         """One option given by two columns: each row takes the one it fills; a row that fills both is bad."""
         import numpy as np
@@ -258,7 +247,7 @@ class _Batch:
         return merged
 
     def _numbers(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
-                 numbers: list[int], errors: list[str | None]) -> Any:
+                 numbers: Sequence[int], errors: list[str | None]) -> Any:
         """One list-option column as floats: plain numbers parsed at once, cells with units one by one."""
         import numpy as np
 
@@ -266,20 +255,29 @@ class _Batch:
         if key not in self.factors:
             self.factors[key] = float(param.type.parse("1" + (unit or "")))  # type: ignore[attr-defined]
         factor = self.factors[key]
-        array = None
+        array, suffix = None, ""
+        first = cells[0] if cells else None  # 3.2m: a unit column (no float ends in a unit)
+        if isinstance(first, str) and first.rstrip()[-1:].isalpha() and "inf" not in first.lower():
+            array, suffix = unit_column(cells) or (None, "")
         try:
-            array = np.array(cells, dtype=float)
-            if np.isnan(array).any():
-                array = None  # "nan" typed in a cell: an error, found below
+            if array is None:
+                array = floats(cells)
+                if np.isnan(array).any():
+                    array = None  # "nan" typed in a cell: an error, found below
         except (ValueError, TypeError):
-            array = _suffixed(cells, param)
-            factor = 1.0 if array is not None else factor
+            array, suffix = unit_column(cells) or (None, "")
+        if suffix:
+            try:
+                factor = float(param.type.parse("1" + suffix))  # type: ignore[attr-defined]
+            except (ValueError, TypeError):  # not a unit of this option (a UnitError): each cell says why
+                array = None
         overflow = None
-        if array is not None and factor != 1.0:
-            with np.errstate(over="ignore"):
-                scaled = array * factor
-            overflow = np.isinf(scaled) & np.isfinite(array)  # 1e308 m: no finite length, as on the command line
-            array = scaled
+        if array is not None:
+            if factor != 1.0:
+                with np.errstate(over="ignore"):
+                    scaled = array * factor
+                overflow = np.isinf(scaled) & np.isfinite(array)  # 1e308 m: no finite length, as on the command line
+                array = scaled
         else:
             array = np.empty(len(cells))
             for index, cell in enumerate(cells):
@@ -312,7 +310,7 @@ class _Batch:
             return math.nan
 
     def _settings(self, param: click.Parameter, unit: str | None, column: str, cells: Sequence[Any],
-                  numbers: list[int], errors: list[str | None]) -> list[Any]:
+                  numbers: Sequence[int], errors: list[str | None]) -> list[Any]:
         """A column of other options (sensor, model, ...): each distinct cell converted once."""
         known: dict[str, Any] = {}
         out: list[Any] = [None] * len(cells)
@@ -337,15 +335,17 @@ class _Batch:
 
     # -- computing: one call per group of rows sharing their settings ------------------------------
 
-    def run(self, header: list[str] | None, numbers: list[int], records: list[Any],
-            errors: list[str | None]) -> None:
+    def run(self, chunk: Chunk) -> None:
         """Compute one chunk and write its rows; in stop mode, the rows before the first bad one, then raise."""
+        numbers = chunk.numbers
         if not numbers:
             return
         import numpy as np
 
-        errors = list(errors)
-        values, passed = self._parse(header, numbers, records, errors)
+        errors: list[str | None] = [None if problem is None else f"--batch row {number}: {problem}"
+                                    for number, problem in zip(numbers, chunk.problems)] if chunk.problems \
+            else [None] * len(numbers)
+        values, passed = self._parse(chunk, errors)
         if self.fields and not self.total:  # a --field no row can have: refused before any row's message
             from camtool.cli.rows import DYNAMIC_KEYS, check_fields
 
@@ -362,17 +362,12 @@ class _Batch:
                 for index in np.flatnonzero(missing).tolist():
                     if errors[index] is None:
                         errors[index] = f"--batch row {numbers[index]}: no value for {param.opts[-1]}"
-        settings = [name for name in values if isinstance(values[name], list)]
-        groups: dict[tuple[Any, ...], list[int]] = {}
-        for index in range(len(numbers)):
-            if errors[index] is None:
-                key = tuple(_hashable(values[name][index]) for name in settings)
-                groups.setdefault(key, []).append(index)
+        groups = group_rows([column for column in values.values() if isinstance(column, list)], errors)
         results: list[tuple[list[int], Output]] = []
         for members in groups.values():
             self._solve(members, values, numbers, errors, results)
         self.total += len(numbers)
-        bad = [index for index, error in enumerate(errors) if error is not None]
+        bad = [index for index, error in enumerate(errors) if error is not None] if any(errors) else []
         if bad and self.on_error == "stop":
             self._write_rows(results, passed, errors, bad[0])
             raise BatchRowError(str(errors[bad[0]]))
@@ -386,7 +381,7 @@ class _Batch:
         else:
             self._write_rows(results, passed, errors, len(numbers))
 
-    def _solve(self, members: list[int], values: dict[str, Any], numbers: list[int], errors: list[str | None],
+    def _solve(self, members: list[int], values: dict[str, Any], numbers: Sequence[int], errors: list[str | None],
                results: list[tuple[list[int], Output]]) -> None:
         """Compute a group in one call; if it fails, halve it until the bad rows are found."""
         try:
@@ -410,13 +405,15 @@ class _Batch:
 
         merged = dict(self.params)
         zipped = False
+        chunk = len(next(iter(values.values()), []))
+        every: Any = slice(None) if len(members) == chunk else members  # one group of the whole chunk: no gather
         for name, column in values.items():
             param = self.columns.params[name]
             if isinstance(column, list):  # settings, and an -N column holding T-stops (one value a group)
                 if column[members[0]] is not None:
                     merged[name] = [[column[members[0]]]] if _vector(param) else column[members[0]]
             elif isinstance(param.type, _ListType):
-                chosen = column[members]
+                chosen = column[every]
                 missing = np.isnan(chosen)
                 if missing.all():
                     continue
@@ -433,7 +430,7 @@ class _Batch:
         self.ctx.meta[ZIP] = True
         self.ctx.meta[CELLS] = frozenset(name for name, column in values.items()
                                          if (column[members[0]] is not None if isinstance(column, list)
-                                             else not np.isnan(column[members]).all()))
+                                             else not np.isnan(column[every]).all()))
         try:
             return self.compute(self.ctx, **merged)
         finally:
@@ -451,35 +448,14 @@ class _Batch:
     def _write_columns(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
                        errors: list[str | None]) -> None:
         """The chunk as one block of columns: each group's columns put in its rows' places."""
-        import numpy as np
-
         count = len(errors)
         columns, keys = self._shape(results[0][1])
-        whole = len(results) == 1 and len(results[0][0]) == count
-        data: dict[str, Any] = {}
-        for key in keys:
-            if key in passed:
-                data[key] = passed[key]
-                continue
-            parts = [(members, out.rows.columns.get(key)) for members, out in results]  # type: ignore[attr-defined]
-            same = all(isinstance(v, str) or v is None for _, v in parts) and len({v for _, v in parts}) == 1
-            if whole or same:
-                data[key] = parts[0][1]
-            elif all(_numeric(v) for _, v in parts):
-                column = np.full(count, np.nan)
-                for members, value in parts:
-                    column[members] = np.asarray(value, dtype=float).reshape(-1) if not isinstance(
-                        value, (int, float)) else value
-                data[key] = column
-            else:
-                column = np.empty(count, dtype=object)
-                for members, value in parts:
-                    column[members] = values_of(value, len(members)) if value is not None else None
-                data[key] = column
+        data = {key: passed[key] if key in passed else placed(
+            count, [(members, out.rows.columns.get(key)) for members, out in results])  # type: ignore[attr-defined]
+            for key in keys}
         skipped = errors if any(error is not None for error in errors) else None
         rows = ColumnRows(count, data, skipped, kept=frozenset(passed))
-        for _, out in results:
-            self.writer.write(rows if out is results[0][1] else [], columns, keys, out.footer)
+        write_block(self.writer, rows, columns, keys, [out.footer for _, out in results])
 
     def _write_rows(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
                     errors: list[str | None], end: int) -> None:
@@ -538,6 +514,11 @@ def _t_stops(ctx: click.Context, param: click.Parameter, cells: Sequence[Any]) -
     from camtool.cli.common import T_STOP_COLUMN
     from camtool.core.units import parse_t_stop
 
+    try:  # a CSV column: one look at its text finds that no cell holds a T
+        if "t" not in "".join(cells).lower():
+            return False
+    except TypeError:  # JSON values: numbers among the strings
+        pass
     found = any(isinstance(cell, str) and parse_t_stop(cell) is not None for cell in cells)
     if found:
         ctx.meta[T_STOP_COLUMN] = True
@@ -552,33 +533,6 @@ def _vector(param: click.Parameter) -> bool:
     distinct cell is one group, converted and checked as the option is.
     """
     return isinstance(param.type, _ListType) and getattr(param, "callback", None) is None
-
-
-def _numeric(value: Any) -> bool:
-    if isinstance(value, (int, float)):
-        return True
-    return getattr(value, "dtype", None) is not None and value.dtype.kind in "fiub"
-
-
-def _suffixed(cells: Sequence[Any], param: click.Parameter) -> Any:
-    """Cells that all end in the same unit (``3.2m``), as numbers in the option's unit; None otherwise."""
-    import numpy as np
-
-    first = cells[0] if cells else None
-    if not isinstance(first, str):
-        return None
-    text = first.rstrip()
-    suffix = text[len(text.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")):]
-    if not suffix or not all(isinstance(cell, str) and cell.rstrip().endswith(suffix) for cell in cells):
-        return None
-    try:
-        scale = float(param.type.parse("1" + suffix))  # type: ignore[attr-defined]
-        array = np.array([cell.rstrip()[:-len(suffix)] for cell in cells], dtype=float)
-    except (ValueError, TypeError, UnitError):
-        return None
-    if np.isnan(array).any():
-        return None
-    return array * scale
 
 
 def _valid(kind: click.ParamType, array: Any) -> Any:
@@ -598,10 +552,6 @@ def _valid(kind: click.ParamType, array: Any) -> Any:
         if check is _ListType.check:
             return (array > 0) & np.isfinite(array)
     return np.array([value != value or kind.check(value) for value in array.tolist()], dtype=bool)  # type: ignore[attr-defined]
-
-
-def _hashable(value: Any) -> Any:
-    return tuple(value) if isinstance(value, list) else value
 
 
 def _single(value: Any, name: str) -> Any:

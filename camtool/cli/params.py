@@ -309,6 +309,11 @@ class PupilMagnificationType(click.ParamType):
 
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
     """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
+    if isinstance(values, (list, tuple)):  # a --batch column (one list, or its values already flat): copied whole
+        if len(values) == 1 and type(values[0]) is list:
+            return list(values[0])
+        if list not in set(map(type, values)):
+            return list(values)
     return [v for group in values or () for v in (group if isinstance(group, list) else [group])]
 
 

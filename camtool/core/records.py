@@ -30,8 +30,9 @@ import json
 import os
 import stat
 import sys
-from collections.abc import Iterator
-from typing import IO, Any
+from collections.abc import Iterator, Sequence
+from itertools import repeat
+from typing import IO, Any, NamedTuple
 
 from camtool.core.files import FileProblem
 
@@ -107,7 +108,7 @@ def _open_nonblocking(source: str) -> IO[bytes]:
         raise
 
 
-def lines(source: IO[str], name: str) -> Iterator[str]:
+def lines(source: IO[str] | _Prefixed, name: str) -> Iterator[str]:
     """The lines of ``source``, none longer than :data:`LINE_LIMIT` (memory stays bounded).
 
     An over-long line is cut, its rest dropped, and ends in a newline; text
@@ -164,20 +165,7 @@ def records(source: IO[str], name: str) -> Iterator[Record]:
     if "\x00" in first:
         raise FileProblem(name, "looks like UTF-16 text without a byte-order mark; save it as UTF-8 (in Excel: CSV UTF-8)")
     if first.lstrip().startswith("{"):
-        number = 0
-        for line in _chain(first, rows):
-            if not line.strip():
-                continue
-            number += 1
-            try:
-                record = json.loads(line)
-            except json.JSONDecodeError as error:
-                yield number, None, f"not valid JSON ({error.msg})"
-                continue
-            if not isinstance(record, dict):
-                yield number, None, "expected a JSON object"
-                continue
-            yield number, record, None
+        yield from _json_rows(_chain(first, rows))
     else:
         reader = csv.reader(_chain(first, rows))
         try:
@@ -185,23 +173,45 @@ def records(source: IO[str], name: str) -> Iterator[Record]:
         except csv.Error as error:
             raise FileProblem(name, f"the header row is {csv_message(error)}") from None
         yield 0, header, None
-        number = 0
-        while True:
-            try:
-                cells = next(reader)
-            except StopIteration:
-                return
-            except csv.Error as error:
-                number += 1
-                yield number, None, csv_message(error)
-                continue
-            if not cells:
-                continue
+        yield from _csv_rows(reader, len(header), 0)
+
+
+def _json_rows(lines: Iterator[str]) -> Iterator[Record]:
+    """The records of JSON lines, numbered from 1 (blank lines passed over)."""
+    number = 0
+    for line in lines:
+        if not line.strip():
+            continue
+        number += 1
+        try:
+            record = json.loads(line)
+        except json.JSONDecodeError as error:
+            yield number, None, f"not valid JSON ({error.msg})"
+            continue
+        if not isinstance(record, dict):
+            yield number, None, "expected a JSON object"
+            continue
+        yield number, record, None
+
+
+def _csv_rows(reader: Iterator[list[str]], width: int, number: int) -> Iterator[Record]:
+    """The records of CSV rows after the header (``width`` columns), numbered on from ``number``."""
+    while True:
+        try:
+            cells = next(reader)
+        except StopIteration:
+            return
+        except csv.Error as error:
             number += 1
-            if len(cells) > len(header):
-                yield number, None, f"{len(cells)} cells, more than the {len(header)} header columns"
-                continue
-            yield number, cells, None
+            yield number, None, csv_message(error)
+            continue
+        if not cells:
+            continue
+        number += 1
+        if len(cells) > width:
+            yield number, None, f"{len(cells)} cells, more than the {width} header columns"
+            continue
+        yield number, cells, None
 
 
 def csv_message(error: csv.Error) -> str:
@@ -215,3 +225,207 @@ def csv_message(error: csv.Error) -> str:
 def _chain(first: str, rest: Iterator[str]) -> Iterator[str]:
     yield first
     yield from rest
+
+
+BLOCK = 1 << 17
+"""Characters :func:`chunks` reads at a time (cut at the block's last line end)."""
+
+
+class Chunk(NamedTuple):
+    """Rows of a file of records, at most a chunk's worth.
+
+    ``numbers`` are the rows' numbers (1 = the first data row). Either
+    ``rows`` holds each row's record (a list of cells, a dict, or None for a
+    bad row, whose problem is in ``problems``), or, for plain CSV rows that
+    are all good and all as wide as the header, ``columns`` holds the cells a
+    column at a time (in header order) and ``problems`` is None.
+    """
+
+    header: list[str] | None
+    numbers: Sequence[int]
+    rows: list[Any] | None
+    columns: list[Sequence[str]] | None
+    problems: list[str | None] | None
+
+
+def chunks(source: IO[str], name: str, size: int, stop: bool = False) -> Iterator[Chunk]:
+    """The records of ``source`` (as :func:`records` reads them) in chunks of at most ``size`` rows.
+
+    Plain CSV (no quotes, no carriage returns, every line as wide as the
+    header) is split a block at a time into columns, without a row object
+    per line; any other block is read row by row, with the same records and
+    problems as :func:`records`. With ``stop``, the chunk holding the first
+    bad row is the last.
+
+    >>> import io
+    >>> [c.columns for c in chunks(io.StringIO("f,N\\n50,8\\n35,2\\n"), "scenes.csv", 10)]
+    [[['50', '35'], ['8', '2']]]
+    """
+    rows = lines(source, name)
+    first = ""
+    for line in rows:
+        if line.strip():
+            first = line
+            break
+    if not first:
+        return
+    if "\x00" in first:
+        raise FileProblem(name, "looks like UTF-16 text without a byte-order mark; save it as UTF-8 (in Excel: CSV UTF-8)")
+    if first.lstrip().startswith("{"):
+        yield from _gather(_json_rows(_chain(first, rows)), None, size, stop)
+        return
+    reader = csv.reader(_chain(first, rows) if '"' in first or "\r" in first else [first])
+    try:
+        header = next(reader)
+    except csv.Error as error:
+        raise FileProblem(name, f"the header row is {csv_message(error)}") from None
+    if '"' in first or "\r" in first:
+        yield from _gather(_csv_rows(reader, len(header), 0), header, size, stop)
+        return
+    width, number, pending = len(header), 0, ""
+    while True:
+        try:
+            text = source.read(BLOCK)
+        except UnicodeDecodeError as error:
+            raise _not_utf8(name, error) from None
+        except OSError as error:
+            raise FileProblem(name, f"cannot read it ({error.strerror or error})") from None
+        end = text.rfind("\n") + 1
+        if text and not end and len(pending) + len(text) <= LINE_LIMIT:
+            pending += text
+            continue
+        body, pending = (pending + text[:end], text[end:]) if end else (pending + text, "")
+        found = body.split("\n")
+        if found and not found[-1]:
+            found.pop()
+        longest = max(map(len, found), default=0)
+        if '"' in body or "\r" in body or "\x00" in body or (text and not end) or longest >= LINE_LIMIT - 1:
+            rest = lines(_Prefixed(body + pending, source), name)  # row by row from here on, as records() reads
+            yield from _gather(_csv_rows(csv.reader(rest), width, number), header, size, stop)
+            return
+        for start in range(0, len(found), size):
+            part = found[start:start + size]
+            if "" not in part and longest < CELL_LIMIT and \
+                    set(map(str.count, part, repeat(","))) == {width - 1}:
+                flat = ",".join(part).split(",")
+                yield Chunk(header, range(number + 1, number + 1 + len(part)), None,
+                            [flat[column::width] for column in range(width)], None)
+                number += len(part)
+                continue
+            for chunk in _gather(_csv_rows(csv.reader(part), width, number), header, size, stop):
+                number = chunk.numbers[-1]
+                yield chunk
+                if stop and any(problem is not None for problem in chunk.problems or ()):
+                    return
+        if not text:
+            return
+
+
+def _gather(found: Iterator[Record], header: list[str] | None, size: int, stop: bool) -> Iterator[Chunk]:
+    """Records in chunks of at most ``size`` rows; with ``stop``, the chunk of the first bad row is the last."""
+    numbers: list[int] = []
+    rows: list[Any] = []
+    problems: list[str | None] = []
+    for number, record, problem in found:
+        numbers.append(number)
+        rows.append(record)
+        problems.append(problem)
+        if (problem is not None and stop) or len(numbers) >= size:
+            yield Chunk(header, numbers, rows, None, problems)
+            if problem is not None and stop:
+                return
+            numbers, rows, problems = [], [], []
+    if numbers:
+        yield Chunk(header, numbers, rows, None, problems)
+
+
+class _Prefixed:
+    """Text already read, then the rest of a stream, read a line at a time (as :func:`lines` reads)."""
+
+    def __init__(self, text: str, source: IO[str]) -> None:
+        self.head, self.source = io.StringIO(text), source
+
+    def readline(self, limit: int = -1) -> str:
+        line = self.head.readline(limit)
+        if line.endswith("\n") or (limit > 0 and len(line) >= limit):
+            return line
+        return line + self.source.readline(limit - len(line) if limit > 0 else -1)
+
+
+def unit_column(cells: Sequence[Any]) -> tuple[Any, str] | None:
+    """A column whose cells all end in the same unit (``3.2m``): its numbers and the unit; None otherwise.
+
+    >>> unit_column(["3.2m", "10m"])
+    (array([ 3.2, 10. ]), 'm')
+    >>> unit_column(["3.2m", "10ft"]) is None
+    True
+    """
+    import numpy as np
+
+    first = cells[0] if cells else None
+    if not isinstance(first, str):
+        return None
+    text = first.rstrip()
+    suffix = text[len(text.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")):]
+    if not suffix:
+        return None
+    try:
+        joined = "\n".join(cells) + "\n"
+    except TypeError:  # JSON values: numbers among the strings
+        return None
+    if joined.count("\n") != len(cells) or any(space in joined for space in " \t\v\f\r"):
+        if not all(isinstance(cell, str) and cell.rstrip().endswith(suffix) for cell in cells):
+            return None
+        numbers = [cell.rstrip()[:-len(suffix)] for cell in cells]
+    elif joined.count(suffix + "\n") == len(cells):  # every cell (one a line) ends in the unit
+        numbers = joined.replace(suffix + "\n", "\n").split("\n")[:-1]
+    else:
+        return None
+    try:
+        array = floats(numbers)
+    except (ValueError, TypeError):
+        return None
+    if np.isnan(array).any():
+        return None
+    return array, suffix
+
+
+def group_rows(settings: Sequence[Sequence[Any]], errors: Sequence[str | None]) -> dict[tuple[Any, ...], list[int]]:
+    """The indices of the rows without an error, grouped by their values of the ``settings`` columns.
+
+    >>> group_rows([["a", "b", "a"]], [None, None, "row 3: bad"])
+    {('a',): [0], ('b',): [1]}
+    """
+    good = [i for i, error in enumerate(errors) if error is None] if any(errors) else list(range(len(errors)))
+    if not settings:
+        return {(): good} if good else {}
+    groups: dict[tuple[Any, ...], list[int]] = {}
+    for index in good:
+        key = tuple(tuple(v) if isinstance(v := column[index], list) else v for column in settings)
+        groups.setdefault(key, []).append(index)
+    return groups
+
+
+def floats(cells: Sequence[Any]) -> Any:
+    """A column of cells as a float array, as ``numpy.array(cells, dtype=float)`` reads it (ValueError if it cannot).
+
+    pyarrow's parser reads a column of number strings several times faster;
+    what it accepts it reads to the same correctly rounded value as Python's
+    ``float`` (only its NaN spellings go further, and a NaN is refused by
+    every caller), and anything it refuses (spaces, ``1_000``, numbers that
+    are not strings) is read by numpy as before.
+
+    >>> floats(["50", "1e3", "2.5"]).tolist()
+    [50.0, 1000.0, 2.5]
+    """
+    import numpy as np
+
+    try:
+        import pyarrow as pa
+        import pyarrow.compute as pc
+    except ImportError:  # pragma: no cover - the test environment has the batch extra
+        return np.array(cells, dtype=float)
+    try:
+        return pc.cast(pa.array(cells, pa.string()), pa.float64()).to_numpy(zero_copy_only=False, writable=True)
+    except (ValueError, TypeError, pa.ArrowException):
+        return np.array(cells, dtype=float)

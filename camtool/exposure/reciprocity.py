@@ -14,6 +14,7 @@ works through :func:`corrected_time_s` with its own p.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import itertools
 import math
@@ -22,7 +23,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.domain import check
-from camtool.core.errors import DomainError, require
+from camtool.core.errors import CamtoolError, DomainError, require
 
 P_RANGE = (1.0, 3.0)
 
@@ -160,12 +161,42 @@ def load_films() -> dict[str, Film]:
     >>> load_films()["ilford-hp5-plus"].p
     1.31
     """
+    data = _film_table()
+    return {entry["id"]: film_from_entry(entry, data["source"]) for entry in data["films"]}
+
+
+def _film_table() -> dict[str, Any]:
+    """``films.yaml`` parsed: from the cache (:mod:`camtool.core.cache`) when its entry is bound to these bytes,
+    else by PyYAML (and the entry written). Every entry is checked by :func:`film_from_entry` either way."""
+    import json
+    import os
     from importlib.resources import files
 
+    from camtool.core import cache
+
+    raw = files("camtool.exposure").joinpath("films.yaml").read_bytes()
+    path = os.path.join(cache.root(), "films.json")
+    source = cache.source_digest(raw) if cache.enabled() else ""
+    payload = cache.read(path, "films", source, 8 * len(raw) + 4096) if source else None
+    if payload is not None:
+        try:
+            data = json.loads(payload)
+        except ValueError:
+            data = None
+        try:  # checked as the fresh table is: an entry that fails is parsed again from the YAML
+            if isinstance(data, dict) and isinstance(data["source"], str):
+                for entry in data["films"]:
+                    film_from_entry(entry, data["source"])
+                return data
+        except (CamtoolError, ValueError, TypeError, KeyError, AttributeError):
+            pass
     import yaml
 
-    data = yaml.safe_load(files("camtool.exposure").joinpath("films.yaml").read_text(encoding="utf-8"))
-    return {entry["id"]: film_from_entry(entry, data["source"]) for entry in data["films"]}
+    data = yaml.safe_load(raw.decode("utf-8"))
+    if source:
+        with contextlib.suppress(ValueError, TypeError):  # a value JSON cannot hold: not cached
+            cache.write(path, "films", source, cache.dumps(data))
+    return data
 
 
 def film_from_entry(entry: dict[str, Any], default_source: str = "") -> Film:

@@ -183,14 +183,24 @@ def _direct(scene: _Scene) -> DofTable:
         "hyperfocal_mm": limits.hyperfocal_mm, "coc_mm": c, "magnification": limits.magnification,
         "model": result.model, "error_estimate": result.error_estimate, "distance_from": plane,
     })
-    close = any(row["magnification"] >= CLOSE_UP for row in rows)
-    for row in rows:  # JSON and CSV always carry the close-up keys (a batch and a single call agree)
-        m = row["magnification"]
-        row["working_f_number"] = row["f_number"] * (1.0 + m / p)
-        row["other_magnification"] = 1.0 / m if plane == "sensor" and 0.0 < m < 1.0 else None
-        row["focal_length_at_focus_mm"] = row["focal_length_mm"]
-    return DofTable(rows, "direct", close, False, _hyperfocal_model(scene.model, scene.lens, rows), frozenset(),
-                    False, False, "")
+    m = limits.magnification
+    if isinstance(m, float):
+        close = m >= CLOSE_UP
+        rows.columns["working_f_number"] = n * (1.0 + m / p)
+        rows.columns["other_magnification"] = 1.0 / m if plane == "sensor" and 0.0 < m < 1.0 else None
+    else:  # JSON and CSV always carry the close-up keys (a batch and a single call agree), a column each
+        import numpy as np
+
+        from camtool.render.columnar import Masked
+
+        m = np.broadcast_to(np.asarray(m, dtype=float), (rows.size,))
+        close = bool((m >= CLOSE_UP).any())
+        rows.columns["working_f_number"] = np.asarray(n, dtype=float) * (1.0 + m / p)
+        other = (m > 0.0) & (m < 1.0) if plane == "sensor" else np.zeros(rows.size, dtype=bool)
+        rows.columns["other_magnification"] = Masked(1.0 / np.where(other, m, 1.0), other)
+    rows.columns["focal_length_at_focus_mm"] = f
+    return DofTable(rows, "direct", close, False, _hyperfocal_model(scene.model, scene.lens, [result.model]),
+                    frozenset(), False, False, "")
 
 
 def _closeup_rows(scene: _Scene, model: str) -> tuple[list[dict[str, Any]], bool]:
@@ -232,9 +242,22 @@ def _closeup_table(scene: _Scene, model: str) -> DofTable:
 def _hyperfocal_model(model: str, lens: Any, rows: Any) -> str | None:
     """Under auto, when some row's limits came from a cheaper rung: the one rung the H column is computed by."""
     rung = hyperfocal_rung(lens)
-    if model != "auto" or all(str(row["model"]).split("+")[0] in (rung, "wave") for row in rows):  # wave: its own H
+    if model != "auto" or all(name.split("+")[0] in (rung, "wave") for name in _model_names(rows)):  # wave: its own H
         return None
     return rung
+
+
+def _model_names(rows: Any) -> set[str]:
+    """The names of the rungs the rows ran: from row dicts, or from the model columns (a name or an array of them)."""
+    names: set[str] = set()
+    for item in rows:
+        if isinstance(item, dict):
+            names.add(str(item["model"]))
+        elif isinstance(item, str):
+            names.add(item)
+        else:
+            names.update(str(name) for name in set(item.reshape(-1).tolist()))
+    return names
 
 
 def _direct_all(scene: _Scene) -> DofTable:

@@ -475,7 +475,7 @@ def apertures(values: Sequence[float], *, exact_stops: bool = False, lens: Any =
     flat = list(values)
     if exact_stops:
         flat = [TStop(exact_f_number(n)) if isinstance(n, TStop) else exact_f_number(n) for n in flat]
-    if not t_stops and not any(isinstance(n, TStop) for n in flat):
+    if not t_stops and TStop not in set(map(type, flat)):  # TStop has no subclass: its type is the test
         return Apertures(flat, None)
     from camtool.exposure.ev import resolve_f_number
 
