@@ -236,3 +236,25 @@ def test_footers_of_many_chunks_are_said_once(monkeypatch) -> None:
     assert footer[0] == "thin model · CoC 0.03 mm · the branch at m = 0"
     assert footer[1].startswith("later rows: the branch at m = 1 · ") and f"… and {86 - LATER_NOTES} more" in footer[1]
     assert footer[2:] == [""]
+
+
+def test_a_skipping_batch_names_the_first_rows_and_counts_the_rest(tmp_path) -> None:
+    rows = "".join(f"50,{'x' if i % 3 == 0 else 8},3\n" for i in range(30_000))
+    source = tmp_path / "scenes.csv"
+    source.write_text("focal-length,f-number,distance\n" + rows)
+    result = subprocess.run([sys.executable, "-m", "camtool", "dof", "--batch", str(source), "--on-error", "skip",
+                             "--format", "csv"], capture_output=True, text=True)
+    lines = result.stderr.splitlines()
+    assert result.returncode == 1 and len(lines) == 6
+    assert lines[0].startswith("Error: --batch row 1, column 'f-number'")
+    assert lines[-1] == ("camtool: 10,000 of 30,000 rows skipped (the first 5 above; --format json gives each "
+                         "row's error in its place)")
+    assert len(result.stdout.splitlines()) == 30_001  # every row keeps its place
+
+
+def test_a_long_batch_shows_progress_on_a_terminal(tmp_path) -> None:
+    source = tmp_path / "scenes.csv"
+    source.write_text("focal-length,f-number,distance\n" + "".join(f"50,8,{1 + i % 50}\n" for i in range(60_000)))
+    drawn, status = _stderr_on_a_terminal(["dof", "--batch", str(source), "--format", "csv"], tmp_path / "out.csv")
+    assert status == 0 and "camtool dof --batch: rows" in drawn
+    assert len((tmp_path / "out.csv").read_text().splitlines()) == 60_001

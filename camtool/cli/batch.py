@@ -50,6 +50,8 @@ from camtool.render.columnar import ColumnRows, placed, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
 
+SKIPS_SHOWN = 5
+"""Skipped rows named on stderr one by one; the rest are counted in the run's last line."""
 CHUNK = GRID_CHUNK  # one chunk size for batch files and option grids
 CONTROL = {"fmt", "units", "preset_files", "fields", "batch", "on_error"}
 PASS = ("", None)
@@ -161,10 +163,20 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
         stream, name = open_source(source)
     except FileProblem as unreadable:
         raise BatchFileError(f"--batch {unreadable}") from None
+    from contextlib import ExitStack
+
+    from camtool.render.progress import progress
+
     try:
-        with stream:
+        with stream, ExitStack() as shown:
+            bar = None
             for chunk in chunks(stream, name, CHUNK, stop=on_error == "stop"):
+                if bar is None and batch.total:  # a second chunk: long work, shown on a terminal
+                    bar = shown.enter_context(progress(f"camtool {ctx.info_name} --batch: rows"))
+                    bar.advance(batch.total)
                 batch.run(chunk)
+                if bar is not None:
+                    bar.advance(len(chunk.numbers))
     except FileProblem as unreadable:
         batch.end(failed=True)
         raise BatchFileError(f"--batch {unreadable}") from None
@@ -173,7 +185,9 @@ def run_batch(ctx: click.Context, compute: Callable[..., Output], params: dict[s
         raise
     batch.end()
     if batch.skipped:
-        click.echo(f"camtool: {batch.skipped} of {batch.total} rows skipped", err=True)
+        more = f" (the first {SKIPS_SHOWN} above; --format json gives each row's error in its place)" \
+            if batch.skipped > SKIPS_SHOWN else ""
+        click.echo(f"camtool: {batch.skipped:,} of {batch.total:,} rows skipped{more}", err=True)
         ctx.exit(1)
 
 
@@ -371,7 +385,7 @@ class _Batch:
         if bad and self.on_error == "stop":
             self._write_rows(results, passed, errors, bad[0])
             raise BatchRowError(str(errors[bad[0]]))
-        for index in bad:
+        for index in bad[:max(0, SKIPS_SHOWN - self.skipped)]:  # the first few; the end of the run counts them all
             click.echo(f"Error: {errors[index]} (skipped)", err=True)
         self.skipped += len(bad)
         if bad:
