@@ -97,21 +97,26 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
     index = photo.PresetIndex(lambda: open_presets(ctx, preset_files))
     for answer in answers:
         _warn(answer)
-    for path in found.files:
-        try:
-            reading = read_file(path)
-        except UnreadableFile as error:
-            answer = photo.unreadable_answer(path, str(error))
-        else:
-            answer = photo.photo_answer(
-                reading, path=path, distance_mm=distance, coc_mm=coc, coc_rule=coc_rule,
-                pixel_pitch_mm=pixel_pitch[0] if isinstance(pixel_pitch, list) else pixel_pitch,
-                distance_from=distance_from, model=model, tolerance=tolerance, diffraction=diffraction,
-                wavelength_nm=wavelength, pupil_magnification=pupil_mag, hiatus_mm=hiatus,
-                lens_preset=ctx.meta.get(LENS), presets=index, convention="exiftool" if exiftool else "camtool",
-                **settings)
-        _warn(answer)
-        answers.append(answer)
+    from camtool.render.progress import progress
+
+    with progress("camtool exif: files", total=len(found.files) if len(found.files) > 100 else 0) as bar:
+        for number, path in enumerate(found.files, 1):
+            try:
+                reading = read_file(path)
+            except UnreadableFile as error:
+                answer = photo.unreadable_answer(path, str(error))
+            else:
+                answer = photo.photo_answer(
+                    reading, path=path, distance_mm=distance, coc_mm=coc, coc_rule=coc_rule,
+                    pixel_pitch_mm=pixel_pitch[0] if isinstance(pixel_pitch, list) else pixel_pitch,
+                    distance_from=distance_from, model=model, tolerance=tolerance, diffraction=diffraction,
+                    wavelength_nm=wavelength, pupil_magnification=pupil_mag, hiatus_mm=hiatus,
+                    lens_preset=ctx.meta.get(LENS), presets=index, convention="exiftool" if exiftool else "camtool",
+                    **settings)
+            _warn(answer)
+            answers.append(answer)
+            if number % 100 == 0:  # a step per hundred files: drawing costs more than reading one
+                bar.advance(100)
     if not all(answer.ok for answer in answers):
         ctx.call_on_close(_exit_one)
     note = ""

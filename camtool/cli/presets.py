@@ -150,11 +150,17 @@ def import_lensfun(dirs: tuple[str, ...], out: str | None) -> None:
     """
     from camtool.presets.lensfun import LensfunImportError
     from camtool.presets.lensfun import import_lensfun as run_import
+    from camtool.render.progress import progress
 
-    try:
-        result = run_import(list(dirs) or None, out)
-    except LensfunImportError as error:
-        raise click.ClickException(str(error)) from None
+    with progress("camtool presets import-lensfun: files") as bar:
+        def on_files(done: int, total: int) -> None:
+            bar.grow(total)
+            bar.advance(done - bar.done)
+
+        try:
+            result = run_import(list(dirs) or None, out, on_files)
+        except LensfunImportError as error:
+            raise click.ClickException(str(error)) from None
     click.echo(f"imported {result.cameras} cameras and {result.lenses} lenses from {result.files} files "
                f"into {result.path}; skipped {result.skipped_total}")
     for reason, count in sorted(result.skipped.items()):

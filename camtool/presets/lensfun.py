@@ -59,6 +59,7 @@ import math
 import os
 import re
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -550,18 +551,22 @@ def _element_range(lens: ElementTree.Element, tag: str) -> tuple[float, float] |
     return (low, high) if high >= low else (high, low)
 
 
-def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | None = None
+def read_lensfun(dirs: list[Path] | None = None, taken: dict[str, set[str]] | None = None,
+                 on_files: Callable[[int, int], None] | None = None
                  ) -> tuple[list[dict[str, Any]], list[dict[str, Any]], ImportResult]:
     """Read every ``*.xml`` of ``dirs`` (default :func:`default_dirs`); return cameras, lenses, result.
 
     ``taken`` maps a kind to lookup keys that must not be reused (camtool's
-    shipped presets); clashing entries are skipped and counted.
+    shipped presets); clashing entries are skipped and counted. ``on_files(done, total)`` is told after
+    each file (a progress bar's hook).
     """
     directories = default_dirs() if dirs is None else [Path(d) for d in dirs]
     files = [f for d in directories for f in sorted(Path(d).glob("*.xml"))]
     collector = _Collector(taken or {})
     parsed = []
-    for path in files:
+    for done, path in enumerate(files):
+        if on_files is not None:
+            on_files(done, len(files))
         try:  # through the guarded reader: a FIFO or device named *.xml is refused at once, not waited on
             root = ElementTree.fromstring(read_bytes(path, MAX_XML_BYTES))
         except FileProblem as problem:
@@ -620,8 +625,8 @@ def _shipped_keys() -> dict[str, set[str]]:
     return keys
 
 
-def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.PathLike[str] | None = None
-                   ) -> ImportResult:
+def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.PathLike[str] | None = None,
+                   on_files: Callable[[int, int], None] | None = None) -> ImportResult:
     """Read the system's lensfun database and write it as a camtool preset file, atomically.
 
     ``dirs`` defaults to :func:`default_dirs`, ``out`` to
@@ -636,7 +641,7 @@ def import_lensfun(dirs: list[Path] | list[str] | None = None, out: str | os.Pat
         where = ", ".join(map(str, directories)) or "the usual places"
         raise LensfunImportError(
             f"no lensfun XML files found in {where} (install liblensfun-data-v1 or give --dir)")
-    cameras, lenses, result = read_lensfun(directories, _shipped_keys())
+    cameras, lenses, result = read_lensfun(directories, _shipped_keys(), on_files)
     if not cameras and not lenses:
         raise LensfunImportError(f"nothing imported from {', '.join(map(str, directories))}")
     _write_atomically(target, _render(cameras, lenses, directories))

@@ -38,7 +38,7 @@ class Progress:
         self._task: Any = None
 
     def __enter__(self) -> Progress:
-        if _shows(self.stream):
+        if self.total != 0 and _shows(self.stream):  # a total of 0: too little work to show
             from rich.console import Console
             from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeElapsedColumn
             from rich.progress import Progress as Bar
