@@ -22,7 +22,7 @@ from camtool.cli.params import NumberType
 from camtool.core import ranges
 from camtool.plans import closeup
 from camtool.plans.closeup import CLOSE_UP
-from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
+from camtool.render.views.closeup import CLOSEUP_COLUMNS, CLOSEUP_KEYS, DIFFRACTION_COLUMNS, DIFFRACTION_KEYS
 
 MAGNIFICATION = NumberType(*ranges.MAGNIFICATION)
 """Any magnification above 0, to 1000:1 (the formulas hold far past the tested 20:1)."""
@@ -41,16 +41,6 @@ closeup_options = stack(
     teleconverter_option,
 )
 """``--extension`` and ``--teleconverter``."""
-
-CLOSEUP_KEYS = ["working_f_number", "other_magnification", "focal_length_at_focus_mm"]
-DIFFRACTION_KEYS = ["airy_mm", "diffraction_limit_f_number", "wave_dof_mm", "depth_dominated_by", "reason"]
-CLOSEUP_COLUMNS = [Column("magnification", "m", NUMBER), Column("working_f_number", "working N", FNUMBER)]
-FOCUS_COLUMN = Column("focal_length_at_focus_mm", "f at focus", SMALL)
-DIFFRACTION_COLUMNS = [
-    Column("airy_mm", "Airy", SMALL),
-    Column("diffraction_limit_f_number", "diffr. limit", FNUMBER),
-    Column("wave_dof_mm", "wave depth"),
-]
 
 
 def has_focus_model(ctx: click.Context) -> bool:

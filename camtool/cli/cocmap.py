@@ -14,16 +14,8 @@ from camtool.cli.exposure import single
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import DISTANCE_M, FOCAL_MM, coc_options, library_errors, sensor_options
 from camtool.cli.params import FNumberType, LengthType, NumberType, one_value
-from camtool.render.columns import NUMBER, SMALL, TEXT, Column
+from camtool.render.views.cocmap import COLUMNS, KEYS
 
-KEYS = ["frame", "depth_file", "map_file", "mode", "width_px", "height_px", "depth_unit_mm", "focus_mm", "focus_from",
-        "f_number", "f_number_from", "focal_length_mm", "focal_length_from", "pupil_offset_mm", "pupil_magnification",
-        "sensor_width_mm", "coc_mm", "sharp_fraction", "sharp_near_mm", "sharp_far_mm", "near_limit_mm",
-        "far_limit_mm", "max_coc_mm", "max_radius_px"]
-COLUMNS = [Column("depth_file", "depth", TEXT), Column("sharp_fraction", "sharp", NUMBER),
-           Column("sharp_near_mm", "sharp from"), Column("sharp_far_mm", "sharp to"),
-           Column("near_limit_mm", "near"), Column("far_limit_mm", "far"), Column("max_coc_mm", "max CoC", SMALL),
-           Column("max_radius_px", "max radius (px)", NUMBER)]
 ONE: dict[str, Any] = {"callback": one_value}
 
 

@@ -10,6 +10,7 @@ import click
 from camtool.cli.params import flatten
 from camtool.cli.params import one_value as one_value  # the option callback, where the commands import it
 from camtool.render.columnar import ColumnRows
+from camtool.render.views.common import T_STOP_COLUMN
 
 
 def single(ctx: click.Context, values: Any, option: str) -> Any:
@@ -30,7 +31,6 @@ def required(ctx: click.Context, values: Sequence[Any], option: str) -> list[Any
 
 
 CHOICES = "camtool.f_number_choices"  # ctx.meta: the FNumberChoice of each typed aperture, for keys and footer
-T_STOP_COLUMN = "camtool.t_stop_column"  # ctx.meta: a --batch -N column holds T-stops (every row gets the keys)
 
 
 def f_numbers(values: Sequence[list[float]], exact: bool) -> list[float]:

@@ -11,7 +11,6 @@ from camtool.cli.closeup import (
     CLOSEUP_KEYS,
     DIFFRACTION_COLUMNS,
     DIFFRACTION_KEYS,
-    FOCUS_COLUMN,
     branch_note,
     closeup_options,
     magnification_option,
@@ -35,38 +34,10 @@ from camtool.cli.rows import ZIP
 from camtool.dof.ladder import focal_lengths, model_choices, model_help
 from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
 from camtool.plans.dof import DofTable, dof_table, lens_behind_converter
-from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
+from camtool.render.views.closeup import FOCUS_COLUMN
+from camtool.render.views.dof import ALL_COLUMNS, ANAMORPHIC_COLUMNS, COLUMNS, FAR_KEYS, KEYS
 
-KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
-        "hyperfocal_mm", "coc_mm", "magnification", "model", "error_estimate", "distance_from"]
-FAR_KEYS = [*KEYS, "difference_pct", "time_per_evaluation_s"]
-"""``--model all`` away from close-up: what every rung computes (no close-up or diffraction columns to leave null)."""
 ALL_KEYS = [*FAR_KEYS, *CLOSEUP_KEYS, *DIFFRACTION_KEYS]
-COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("f_number", "N", FNUMBER),
-    Column("distance_mm", "focus"),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("total_mm", "depth"),
-    Column("front_mm", "front"),
-    Column("rear_mm", "rear"),
-    Column("hyperfocal_mm", "H"),
-    Column("sharp_zone", "sharp zone", TEXT, legend="┃ focus, H hyperfocal, ▶ ∞"),
-]
-ALL_COLUMNS = [
-    Column("model", "model", TEXT),
-    Column("focal_length_mm", "f", SMALL),
-    Column("f_number", "N", FNUMBER),
-    Column("distance_mm", "focus"),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("total_mm", "depth"),
-    Column("difference_shown", "difference", TEXT),
-    Column("estimate_shown", "est. error", TEXT),
-    Column("time_shown", "time/eval", TEXT),
-]
-ANAMORPHIC_COLUMNS = [Column("near_horizontal_mm", "near horiz."), Column("far_horizontal_mm", "far horiz.")]
 MODEL_HELP = model_help()
 
 

@@ -12,18 +12,7 @@ from camtool.cli.equipment import FULL_FRAME, resolve_sensor
 from camtool.cli.exposure import single
 from camtool.cli.options import focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
-from camtool.render.columns import NUMBER, SMALL, TEXT, Column
-
-KEYS = ["focal_length_mm", "f_number", "iso", "equivalent_focal_length_mm", "equivalent_f_number",
-        "equivalent_iso", "ratio", "aperture_diameter_mm", "light_stops", "converter"]
-COLUMNS = [
-    Column("given", "given", TEXT),
-    Column("equivalent_focal_length_mm", "f", SMALL),
-    Column("aperture", "N", TEXT),
-    Column("equivalent_iso", "ISO", NUMBER),
-    Column("aperture_diameter_mm", "aperture", SMALL),
-    Column("light_stops", "light", NUMBER),
-]
+from camtool.render.views.equiv import COLUMNS, KEYS
 
 
 @camtool_command("equiv", keys=KEYS)

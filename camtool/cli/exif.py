@@ -20,12 +20,7 @@ from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, 
 from camtool.core.text import printable
 from camtool.dof.ladder import model_choices
 from camtool.plans.photo import KEYS, names_from_lines
-from camtool.render.columns import ANGLE, FNUMBER, NUMBER, SMALL, TEXT, Column
-
-COLUMNS = [Column("file", "file", TEXT), Column("focal_length_mm", "f", SMALL), Column("f_number", "N", FNUMBER),
-           Column("focus_distance_mm", "focus"), Column("near_mm", "near"), Column("far_mm", "far"),
-           Column("total_mm", "depth"), Column("hyperfocal_mm", "H"), Column("horizontal_deg", "h. angle", ANGLE),
-           Column("ev100", "EV100", NUMBER)]
+from camtool.render.views.exif import COLUMNS
 
 
 @camtool_command("exif", keys=KEYS, batch=False)

@@ -16,43 +16,22 @@ from camtool.core import ranges
 from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
 from camtool.render.columns import ANGLE as ANGLE_KIND
-from camtool.render.columns import NUMBER, TEXT, Column
+from camtool.render.columns import Column
+from camtool.render.views.exposure import (
+    EQUIVALENT_COLUMNS,
+    EQUIVALENT_KEYS,
+    LOSS_COLUMNS,
+    METERED_COLUMNS,
+    RECIPROCITY_COLUMNS,
+    SETTINGS_COLUMNS,
+)
 
 LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
 """Lux in one foot-candle (one lumen per square foot; the foot is 0.3048 m exactly): 10.7639."""
 
-EQUIVALENT_KEYS = ["f_number", "f_number_nominal", "shutter_s", "shutter_nominal_s", "shutter_exact_s", "ev",
-                   "iso", "ev100"]
-EQUIVALENT_COLUMNS = [
-    Column("aperture", "N", TEXT),
-    Column("time", "time", TEXT),
-    Column("exact", "exact time", TEXT),
-    Column("ev", "EV", NUMBER),
-]
-SETTINGS_COLUMNS = [
-    Column("aperture", "N", TEXT),
-    Column("time", "time", TEXT),
-    Column("iso_text", "ISO", TEXT),
-    Column("ev", "EV", NUMBER),
-    Column("ev100", "EV100", NUMBER),
-    Column("nominal", "nearest stops", TEXT),
-]
-METERED_COLUMNS = [
-    Column("metered", "metered", TEXT),
-    Column("nd_stops", "ND", NUMBER),
-    Column("bellows_stops", "bellows", NUMBER),
-    Column("iso_change_stops", "ISO change", NUMBER),
-    Column("aperture_change_stops", "aperture change", NUMBER),
-    Column("reciprocity_stops", "reciprocity", NUMBER),
-    Column("aperture", "N", TEXT),
-    Column("iso_text", "ISO", TEXT),
-    Column("corrected", "time to set", TEXT),
-]
-LOSS_COLUMNS = [Column("nd_stops", "ND stops", NUMBER), Column("bellows_stops", "bellows stops", NUMBER)]
 ANGLE = [Column("shutter_angle_deg", "shutter angle", ANGLE_KIND)]
 KEYS = [*ROW_KEYS, *(key for key in EQUIVALENT_KEYS if key not in ROW_KEYS)]
 """Every key a row of the command can carry: a worked-out exposure's, then what --equivalents adds."""
-RECIPROCITY_COLUMNS = [Column("corrected", "with reciprocity", TEXT)]
 SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
 
 

@@ -10,16 +10,8 @@ from camtool.cli.exposure import single
 from camtool.cli.options import DISTANCE_M, library_errors
 from camtool.cli.params import FNumberType, NumberType, _ListType, flatten
 from camtool.core.units import parse_guide_number
-from camtool.render.columns import TEXT, Column
+from camtool.render.views.flash import COLUMNS, KEYS
 
-KEYS = ["guide_number_m", "guide_number_at_iso_m", "distance_mm", "f_number", "iso", "solved"]
-COLUMNS = [
-    Column("gn", "GN (ISO 100)", TEXT),
-    Column("gn_iso", "GN at ISO", TEXT),
-    Column("distance", "distance", TEXT),
-    Column("aperture", "N", TEXT),
-    Column("iso_text", "ISO", TEXT),
-]
 FEET_PER_METRE = 1 / 0.3048
 SOLVED = {"guide_number": "guide number", "distance": "distance", "f_number": "f-number", "iso": "ISO"}
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from camtool.cli.closeup import FOCUS_COLUMN, branch_note, closeup_options
+from camtool.cli.closeup import branch_note, closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from, t_stop_columns
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
@@ -23,55 +23,20 @@ from camtool.cli.params import NumberType, WavelengthType, flatten
 from camtool.core import ranges
 from camtool.plans import focus as plans
 from camtool.plans.equipment import solved_t_stops
-from camtool.render.columns import FNUMBER, NUMBER, SMALL, Column
-
-FORWARD_KEYS = ["focal_length_mm", "distance_mm", "image_distance_mm", "extension_mm", "magnification",
-                "f_number", "working_f_number", "closest_focus_mm", "distance_from", "other_magnification",
-                "focal_length_at_focus_mm"]
-FORWARD_COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("distance_mm", "focus"),
-    Column("image_distance_mm", "image dist.", SMALL),
-    Column("extension_mm", "extension", SMALL),
-    Column("magnification", "m", NUMBER),
-    Column("working_f_number", "working N", FNUMBER),
-]
-INVERSE_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "f_number", "coc_mm", "distance_from"]
-FIXED_KEYS = ["wanted_near_mm", "wanted_far_mm", "needed_f_number"]
-OPTIMUM_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "magnification", "focus_spread_mm",
-                "f_number", "working_f_number", "blur_mm", "blur_sum_mm", "distance_from"]
-OPTIMUM_COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("distance_mm", "focus at"),
-    Column("magnification", "m", NUMBER),
-    Column("focus_spread_mm", "spread", SMALL),
-    Column("f_number", "optimum N", FNUMBER),
-    Column("working_f_number", "working N", FNUMBER),
-    Column("blur_mm", "blur", SMALL),
-]
-DEPTH_KEYS = ["magnification", "depth_mm", "f_number", "coc_mm", "working_f_number"]
-DEPTH_COLUMNS = [
-    Column("magnification", "m", NUMBER),
-    Column("depth_mm", "depth"),
-    Column("f_number", "N", FNUMBER),
-    Column("coc_mm", "CoC", SMALL),
-    Column("working_f_number", "working N", FNUMBER),
-]
-INVERSE_COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("distance_mm", "focus at"),
-    Column("f_number", "N", FNUMBER),
-]
-
-
-CONTRAST_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "magnification", "f_number",
-                 "working_f_number", "mtf", "frequency_lpmm", "defocus_waves", "mtf_level", "distance_from"]
-CONTRAST_COLUMNS = [*OPTIMUM_COLUMNS[:5], OPTIMUM_COLUMNS[6], OPTIMUM_COLUMNS[7], Column("mtf", "MTF", NUMBER),
-                    Column("frequency_lpmm", "at lp/mm", NUMBER)]
+from camtool.render.views.closeup import FOCUS_COLUMN
+from camtool.render.views.focus import (
+    CONTRAST_COLUMNS,
+    CONTRAST_KEYS,
+    DEPTH_COLUMNS,
+    DEPTH_KEYS,
+    FIXED_KEYS,
+    FORWARD_COLUMNS,
+    FORWARD_KEYS,
+    INVERSE_COLUMNS,
+    INVERSE_KEYS,
+    OPTIMUM_COLUMNS,
+    OPTIMUM_KEYS,
+)
 
 
 @camtool_command("focus", keys=list(dict.fromkeys([*FORWARD_KEYS, *INVERSE_KEYS, *FIXED_KEYS, *OPTIMUM_KEYS, *DEPTH_KEYS,

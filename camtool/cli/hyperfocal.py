@@ -19,16 +19,7 @@ from camtool.cli.options import (
 )
 from camtool.dof.ladder import hyperfocal_choices, hyperfocal_help
 from camtool.plans.depth import hyperfocal_plan
-from camtool.render.columns import FNUMBER, SMALL, Column
-
-KEYS = ["focal_length_mm", "f_number", "hyperfocal_mm", "near_mm", "coc_mm", "model", "distance_from"]
-COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("f_number", "N", FNUMBER),
-    Column("hyperfocal_mm", "hyperfocal"),
-    Column("near_mm", "sharp from"),
-    Column("coc_mm", "CoC", SMALL),
-]
+from camtool.render.views.hyperfocal import COLUMNS, KEYS
 
 
 @camtool_command("hyperfocal", keys=KEYS)

@@ -11,16 +11,7 @@ from camtool.cli.options import DISTANCE_M, FOCAL_MM, library_errors, sensor_opt
 from camtool.cli.params import NumberType, one_value
 from camtool.core import ranges
 from camtool.plans.pinhole import DEFAULT_LEVEL, pinhole_plan
-from camtool.render.columns import FNUMBER, NUMBER, SMALL, TEXT, Column
-
-KEYS = ["method", "constant", "pinhole_mm", "f_number", "geometric_blur_mm", "airy_mm", "defocus_waves",
-        "resolution_lpmm", "mtf_level", "best_at_level", "shutter_s", "film_distance_mm", "subject_distance_mm",
-        "wavelength_nm", "horizontal_deg", "vertical_deg", "diagonal_deg"]
-COLUMNS = [Column("method", "rule", TEXT), Column("constant", "k", NUMBER), Column("pinhole_mm", "pinhole", SMALL),
-           Column("f_number", "N", FNUMBER), Column("geometric_blur_mm", "shadow", SMALL),
-           Column("airy_mm", "Airy", SMALL), Column("defocus_waves", "W₂₀ (waves)", NUMBER),
-           Column("resolution_lpmm", "lp/mm at level", NUMBER), Column("best_at_level", "best at", NUMBER),
-           Column("shutter_s", "time (s)", NUMBER)]
+from camtool.render.views.pinhole import COLUMNS, KEYS
 
 
 @camtool_command("pinhole", keys=KEYS)

@@ -10,13 +10,9 @@ from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
 from camtool.plans import presets as plan
 from camtool.plans.presets import KINDS
-from camtool.render.columns import TEXT, Column
+from camtool.render.views.presets import LIST_COLUMNS, LIST_KEYS, SHOW_COLUMNS
 
 KIND_CHOICE = click.Choice(KINDS)
-LIST_KEYS = ["kind", "id", "name", "summary", "tier", "origin"]
-LIST_COLUMNS = [Column("kind", "kind", TEXT), Column("id", "id", TEXT), Column("summary", "summary", TEXT),
-                Column("tier", "from", TEXT)]
-SHOW_COLUMNS = [Column("key", "key", TEXT), Column("value", "value", TEXT)]
 
 
 @click.group("presets")

@@ -11,6 +11,7 @@ import click
 from camtool.render.columns import Column
 from camtool.render.output import RowWriter
 from camtool.render.serial import field_line
+from camtool.render.views.rows import DYNAMIC_KEYS
 
 __all__ = ["CELLS", "DYNAMIC_KEYS", "ZIP", "Output", "check_fields", "field_line", "open_writer"]
 
@@ -27,9 +28,6 @@ class Output(NamedTuple):
     keys: Sequence[str]
     footer: str = ""
 
-
-DYNAMIC_KEYS = ("t_stop", "f_number_from")
-"""Keys a row gains from what was typed (a T-stop), beyond those the command declares."""
 
 
 def check_fields(fields: Sequence[str], keys: Sequence[str]) -> None:

@@ -28,19 +28,8 @@ from camtool.cli.params import CriterionType, FNumberType, NumberType
 from camtool.core.errors import DomainError, InputError
 from camtool.dof.ladder import model_choices, model_help
 from camtool.plans.stack import DEFAULT_OVERLAP, bracket_rows, bracket_stack, rail_rows, rail_stack, stack_mode
-from camtool.render.columns import NUMBER, TEXT, Column
 from camtool.render.numfmt import length
-
-KEYS = ["frame", "distance_mm", "near_mm", "far_mm", "magnification", "step_mm", "extension_step_mm",
-        "criterion", "mode", "distance_from"]
-COLUMNS = [
-    Column("frame", "frame", TEXT),
-    Column("distance_mm", "focus"),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("magnification", "m", NUMBER),
-    Column("step_mm", "step"),
-]
+from camtool.render.views.stack import COLUMNS, KEYS
 
 
 def _one(ctx: click.Context, values: list[float], option: str, name: str) -> float:

@@ -12,18 +12,7 @@ from camtool.cli.equipment import resolve_sensor
 from camtool.cli.exposure import single
 from camtool.cli.options import PIXEL_PITCH_UM, focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
-from camtool.render.columns import NUMBER, SMALL, TEXT, Column
-
-KEYS = ["focal_length_mm", "f_number", "crop_factor", "pixel_pitch_um", "declination_deg", "rule500_s",
-        "npf_simple_s", "npf_s"]
-COLUMNS = [
-    Column("focal_length_mm", "f", SMALL),
-    Column("aperture", "N", TEXT),
-    Column("declination_deg", "δ (°)", NUMBER),
-    Column("rule500", "500 rule", TEXT),
-    Column("npf_simple", "NPF simple", TEXT),
-    Column("npf", "NPF", TEXT),
-]
+from camtool.render.views.stars import COLUMNS, KEYS
 
 
 @camtool_command("stars", keys=KEYS)
