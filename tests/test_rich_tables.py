@@ -258,3 +258,11 @@ def test_a_long_batch_shows_progress_on_a_terminal(tmp_path) -> None:
     drawn, status = _stderr_on_a_terminal(["dof", "--batch", str(source), "--format", "csv"], tmp_path / "out.csv")
     assert status == 0 and "camtool dof --batch: rows" in drawn
     assert len((tmp_path / "out.csv").read_text().splitlines()) == 60_001
+
+
+def test_a_traced_stack_plan_shows_its_frames_on_a_terminal(tmp_path) -> None:
+    args = ["stack", "--lens", "canon-rf-50mm-f1.2l-usm-patent", "-N", "8", "--near", "0.5m", "--far", "inf",
+            "--model", "raytrace", "--format", "csv"]
+    drawn, status = _stderr_on_a_terminal(args, tmp_path / "out.csv")
+    assert status == 0 and "camtool stack: frames" in drawn
+    assert len((tmp_path / "out.csv").read_text().splitlines()) > 5

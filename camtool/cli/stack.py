@@ -121,7 +121,12 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
                    if isinstance(error, DomainError) and error.param == "depth_mm" else bad_parameter(ctx, error)) \
                 from None
         return _rail(ctx, rail, fmt, coc_origin)
-    with library_errors(ctx):
+    from camtool.core.steps import reporting
+    from camtool.render.progress import progress
+
+    traced = model in ("raytrace", "paraxial") or (lens is not None and lens.prescription is not None)
+    with library_errors(ctx), progress("camtool stack: frames", total=None if traced else 0) as bar, \
+            reporting(bar.advance):
         plan = bracket_stack(focal_length_mm=f, f_number=n, coc_mm=float(cocs[0]), near_mm=float(near),
                              far_mm=float(far), overlap=float(overlap), criterion=criterion, model=model, lens=lens,
                              lens_preset=ctx.meta.get(LENS), pupil_magnification=p, wavelength_nm=wavelength,

@@ -40,6 +40,7 @@ from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from camtool.core.errors import DomainError, require, require_positive
+from camtool.core.steps import step
 from camtool.geometry.closeup import InternalFocus
 
 __all__ = [
@@ -352,6 +353,7 @@ def _chain(frame_for: Callable[[float], BracketFrame], near_mm: float, far_mm: f
         each = frame_for(wanted)
         _check_frame(each, frames[-1] if frames else None)
         frames.append(each)
+        step()  # a traced frame takes a tenth of a second: a progress bar listens
         if each.far_mm >= far_mm:
             return frames
         if len(frames) >= max_frames:
