@@ -145,7 +145,12 @@ def chart_command(name: str, card: bool = False) -> Callable[[Callable[..., Any]
             width, height = figure_size(size_in=size, paper=params.get("paper") or "a6" if card else None)
             if fmt == "png":
                 _inputs(ctx, lambda: check_pixels(size_in=(width, height), dpi=resolution))
-            with library_errors(ctx):
+            from camtool.core.steps import reporting
+            from camtool.render.progress import progress
+
+            # trade times every rung, traced ones included: long work, shown on a terminal
+            with library_errors(ctx), progress(f"camtool chart {name}: models", total=None if name == "trade" else 0) \
+                    as bar, reporting(bar.advance):
                 data = _inputs(ctx, lambda: compute(ctx, **params))
             figure = plot.draw(data, width, height, params["units"])
             notes: list[str] = []

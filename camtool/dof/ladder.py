@@ -19,6 +19,7 @@ from typing import Any, NamedTuple
 from camtool.core.arrays import ops
 from camtool.core.errors import CamtoolError, DomainError, first_bad
 from camtool.core.planes import FOCUS_PLANES, check_plane
+from camtool.core.steps import step
 from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
 from camtool.dof.limits import DofLimits
@@ -693,5 +694,6 @@ def compare_models(
             best = min(best, time.perf_counter() - start)
         else:
             results.append((result, best / count))
+        step()  # a timed, traced rung: a progress bar listens
     reference = results[len(geometric) - 1][0].limits
     return [ModelComparison(result, depth_error(result.limits, reference), seconds) for result, seconds in results]
