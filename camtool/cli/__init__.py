@@ -54,7 +54,7 @@ SUMMARIES = {
     'presets': 'List, show, validate and import presets of sensors, cameras, lenses, prescriptions, scenes and films.',
     'completion': "Print the completion script for SHELL; load it from your shell's start-up file.",
     'exif': 'Depth of field, angle of view and exposure of photos, from the metadata the camera wrote.',
-    'chart': 'Charts of depth of field, background blur, aperture, the model ladder and a printable DOF card.',
+    'chart': 'Charts of depth of field, blur, aperture, the model ladder, a DOF card, a focus-pull sheet and a shot.',
     'stack': 'Plan a focus stack: the frames that cover a depth, with a stated overlap.',
     'cocmap': 'Circle of confusion (mm on the sensor) and blur radius (px) of every pixel of a depth image.',
     'pinhole': 'Pinhole camera: the diameter that resolves the finest detail, beside the published rules.',

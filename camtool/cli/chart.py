@@ -209,7 +209,7 @@ def _coc(ctx: click.Context, coc: Any, coc_rule: Any, chosen: Any, pixel_pitch: 
 
 @click.group("chart", context_settings={"help_option_names": ["-h", "--help"]})
 def chart() -> None:
-    """Charts of depth of field, background blur, aperture, the model ladder and a printable DOF card.
+    """Charts of depth of field, blur, aperture, the model ladder, a DOF card, a focus-pull sheet and a shot.
 
     Each kind writes PNG, SVG or PDF (from the -o file's extension; -o - with
     --image-format writes to standard output) with the inputs, presets, units
