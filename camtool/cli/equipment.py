@@ -10,6 +10,7 @@ the user typed.
 from __future__ import annotations
 
 import contextlib
+import sys
 from collections.abc import Iterator
 from typing import Any
 
@@ -91,18 +92,21 @@ def resolve_coc(
 @contextlib.contextmanager
 def input_errors(ctx: click.Context, preset_files: tuple[str, ...]) -> Iterator[None]:
     """A plan's error as one line on the option typed: an unknown preset, a bad input, a broken preset file."""
-    from camtool.presets import PresetFileError, PresetNotFound
-
     try:
         yield
-    except PresetNotFound as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, error.param)) from None
-    except PresetFileError as error:
-        raise _preset_file_error(ctx, error, preset_files) from None
-    except (InputError, DomainError) as error:
-        from camtool.cli.options import bad_parameter
+    except Exception as error:
+        if "camtool.presets" in sys.modules:  # a preset error can only come from the database once it is loaded
+            from camtool.presets import PresetFileError, PresetNotFound
 
-        raise bad_parameter(ctx, error) from None
+            if isinstance(error, PresetNotFound):
+                raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, error.param)) from None
+            if isinstance(error, PresetFileError):
+                raise _preset_file_error(ctx, error, preset_files) from None
+        if isinstance(error, (InputError, DomainError)):
+            from camtool.cli.options import bad_parameter
+
+            raise bad_parameter(ctx, error) from None
+        raise
 
 
 CAMERA, LENS = "camtool.camera", "camtool.lens"  # where the resolved presets are kept in ctx.meta
