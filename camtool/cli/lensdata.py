@@ -9,6 +9,7 @@ prescription.
 
 from __future__ import annotations
 
+import sys
 from typing import Any
 
 import click
@@ -29,16 +30,18 @@ def lens_data(ctx: click.Context, pupil_mag: float | None = None, hiatus: float 
     from camtool.cli.equipment import open_presets
     from camtool.cli.options import bad_parameter, file_error
     from camtool.core.errors import InputError
-    from camtool.core.files import FileProblem
 
     try:
         return equipment.lens_data(pupil_magnification=pupil_mag, hiatus_mm=hiatus, prescription=prescription_file,
                                    lens_preset=ctx.meta.get(LENS) if preset_lens is None else preset_lens,
                                    database=lambda: open_presets(ctx, tuple(ctx.params.get("preset_files") or ())))
-    except FileProblem as problem:
-        raise file_error(ctx, "prescription_file", problem) from None
-    except InputError as error:
-        raise bad_parameter(ctx, error) from None
+    except Exception as error:
+        files = sys.modules.get("camtool.core.files")  # a file problem only once a file was read: not imported before
+        if files is not None and isinstance(error, files.FileProblem):
+            raise file_error(ctx, "prescription_file", error) from None
+        if isinstance(error, InputError):
+            raise bad_parameter(ctx, error) from None
+        raise
 
 
 pupil_mag_option = click.option(
