@@ -151,3 +151,20 @@ def test_published_cine_lens_f_and_t_give_its_transmittance(tmp_path) -> None:
     assert row["f_number_from"] == "transmittance"
     (wide,) = run_json("dof", "--lens", "zeiss-standard-prime-50", "--presets", str(path), "-N", "T2.1", "-s", "3m")
     assert wide["f_number"] == pytest.approx(2.0, rel=1e-12)  # wide open: the published f-number
+
+
+def test_t_stop_cells_of_a_batch_give_the_rows_the_options_give(tmp_path) -> None:
+    """Per-frame camera data (T-stop cells) stays a column at a time and answers as the options do, row for row."""
+    import json
+
+    from tests.cli_helpers import run
+
+    source = tmp_path / "frames.csv"
+    source.write_text("frame,distance,focal_length,f_number\n1,3m,50,T2\n2,4.5m,75,T2.8\n3,10m,50,f/4\n")
+    batch = json.loads(run("dof", "--batch", str(source), "--camera", "arri-alexa-35", "--format", "json").stdout)
+    for row, (s, f, n) in zip(batch, [("3m", "50", "T2"), ("4.5m", "75", "T2.8"), ("10m", "50", "f/4")]):
+        alone = json.loads(run("dof", "-s", s, "-f", f, "-N", n, "--camera", "arri-alexa-35", "--format",
+                               "json").stdout)[0]
+        # the batch's keys are every row's: an f-number row among T-stop rows has t_stop null, "typed"
+        assert {k: row[k] for k in alone} == alone
+        assert row["t_stop"] == alone.get("t_stop") and row["f_number_from"] == alone.get("f_number_from", "typed")

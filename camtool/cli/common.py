@@ -54,11 +54,22 @@ def t_stop_output(ctx: click.Context, out: Any) -> Any:
     if found is None:
         return out
     choices, lens = found
-    for row, choice in zip(out.rows, t_stop_rows(choices, row_f_numbers=[row.get("f_number") for row in out.rows])):
-        row["t_stop"] = choice.t_stop if choice is not None else None
-        row["f_number_from"] = choice.source if choice is not None else None
+    rows = out.rows
+    if isinstance(rows, ColumnRows) and not rows.materialised:  # a batch chunk or a grid: columns, no row dicts
+        from camtool.render.columnar import values_of
+
+        f_numbers = values_of(rows.columns.get("f_number"), rows.size)
+        chosen = t_stop_rows(choices, row_f_numbers=[None if v is None else float(v) for v in f_numbers])
+        t_stops = [choice.t_stop if choice is not None else None for choice in chosen]
+        rows.columns["t_stop"] = t_stops
+        rows.columns["f_number_from"] = [choice.source if choice is not None else None for choice in chosen]
+        rows.columns["t_stop_label"] = [f"T{t:.3g}" if isinstance(t, float) else "" for t in t_stops]
+    else:
+        for row, choice in zip(rows, t_stop_rows(choices, row_f_numbers=[row.get("f_number") for row in rows])):
+            row["t_stop"] = choice.t_stop if choice is not None else None
+            row["f_number_from"] = choice.source if choice is not None else None
     keys = [*out.keys, *(k for k in ("t_stop", "f_number_from") if k not in out.keys)]
-    columns = t_stop_columns(out.rows, out.columns)
+    columns = t_stop_columns(rows, out.columns)
     if not out.footer:
         return type(out)(out.rows, columns, keys, out.footer)
     note = t_stop_note(choices, lens=lens)
@@ -77,9 +88,10 @@ def t_stop_columns(rows: Any, columns: Sequence[Any]) -> list[Any]:
     headed ``N used``: a typed T-stop is shown as a T-stop (the JSON keys are ``t_stop`` and ``f_number``)."""
     from camtool.render.columns import TEXT, Column
 
-    for row in rows:
-        t = row.get("t_stop")
-        row["t_stop_label"] = f"T{t:.3g}" if isinstance(t, float) else ""
+    if not (isinstance(rows, ColumnRows) and not rows.materialised):  # (columns have their labels already)
+        for row in rows:
+            t = row.get("t_stop")
+            row["t_stop_label"] = f"T{t:.3g}" if isinstance(t, float) else ""
     found = [i for i, c in enumerate(columns) if c.key == "f_number"]
     if not found:
         return list(columns)
