@@ -60,9 +60,10 @@ def t_stop_output(ctx: click.Context, out: Any) -> Any:
 
         f_numbers = values_of(rows.columns.get("f_number"), rows.size)
         chosen = t_stop_rows(choices, row_f_numbers=[None if v is None else float(v) for v in f_numbers])
-        t_stops = [choice.t_stop if choice is not None else None for choice in chosen]
-        rows.columns["t_stop"] = t_stops
-        rows.columns["f_number_from"] = [choice.source if choice is not None else None for choice in chosen]
+        if len(chosen) == rows.size:  # (no choice per row: a T-stop the plan solved stays as it is)
+            rows.columns["t_stop"] = [choice.t_stop if choice is not None else None for choice in chosen]
+            rows.columns["f_number_from"] = [choice.source if choice is not None else None for choice in chosen]
+        t_stops = values_of(rows.columns.get("t_stop"), rows.size)
         rows.columns["t_stop_label"] = [f"T{t:.3g}" if isinstance(t, float) else "" for t in t_stops]
     else:
         for row, choice in zip(rows, t_stop_rows(choices, row_f_numbers=[row.get("f_number") for row in rows])):
@@ -88,7 +89,13 @@ def t_stop_columns(rows: Any, columns: Sequence[Any]) -> list[Any]:
     headed ``N used``: a typed T-stop is shown as a T-stop (the JSON keys are ``t_stop`` and ``f_number``)."""
     from camtool.render.columns import TEXT, Column
 
-    if not (isinstance(rows, ColumnRows) and not rows.materialised):  # (columns have their labels already)
+    if isinstance(rows, ColumnRows) and not rows.materialised:  # columns: the labels as one more column
+        if "t_stop_label" not in rows.columns:
+            from camtool.render.columnar import values_of
+
+            rows.columns["t_stop_label"] = [f"T{t:.3g}" if isinstance(t, float) else ""
+                                            for t in values_of(rows.columns.get("t_stop"), rows.size)]
+    else:
         for row in rows:
             t = row.get("t_stop")
             row["t_stop_label"] = f"T{t:.3g}" if isinstance(t, float) else ""
