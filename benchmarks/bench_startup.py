@@ -16,7 +16,7 @@ import os
 import shutil
 import sys
 
-from timing import interleaved_medians
+from timing import interleaved_medians, report
 
 PY = sys.executable
 CAMTOOL = shutil.which("camtool") or ""
@@ -61,13 +61,7 @@ def main() -> None:
     if not CAMTOOL:
         sys.exit("camtool is not on PATH: install the project first")
     medians = measure(args.repeat)
-    print("| command | median wall time (ms) |\n|---|---:|")
-    for name, value in medians.items():
-        print(f"| `{name}` | {value * 1000:.1f} |")
-    print("\n| budget | ratio | limit | verdict |\n|---|---:|---:|---|")
-    for name, reference, limit in BUDGETS:
-        ratio = medians[name] / medians[reference]
-        print(f"| `{name}` / `{reference}` | {ratio:.2f} | {limit:.1f} | {'ok' if ratio <= limit else 'OVER'} |")
+    report(medians, BUDGETS)
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@ import os
 import shutil
 import sys
 
-from timing import interleaved_medians
+from timing import interleaved_medians, report
 
 PY = sys.executable
 CAMTOOL = shutil.which("camtool") or ""
@@ -55,13 +55,7 @@ def main() -> None:
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "NO_COLOR")}
     env.update(FORCE_COLOR="1", COLUMNS="120")
     medians = interleaved_medians(CASES, args.repeat, env)
-    print("| command | median wall time (ms) |\n|---|---:|")
-    for name, value in medians.items():
-        print(f"| `{name}` | {value * 1000:.1f} |")
-    print("\n| budget | ratio | limit | verdict |\n|---|---:|---:|---|")
-    for name, reference, limit in BUDGETS:
-        ratio = medians[name] / medians[reference]
-        print(f"| `{name}` / `{reference}` | {ratio:.2f} | {limit:.1f} | {'ok' if ratio <= limit else 'OVER'} |")
+    report(medians, BUDGETS)
 
 
 if __name__ == "__main__":

@@ -32,3 +32,14 @@ def interleaved_medians(cases: dict[str, list[str]], repeat: int, env: dict[str,
             subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, env=env)
             times[name].append(time.perf_counter() - start)
     return {name: statistics.median(values) for name, values in times.items()}
+
+
+def report(medians: dict[str, float], budgets: list[tuple[str, str, float]]) -> None:
+    """Print the medians (ms) and each budget's ratio and verdict as Markdown tables."""
+    print("| command | median wall time (ms) |\n|---|---:|")
+    for name, value in medians.items():
+        print(f"| `{name}` | {value * 1000:.1f} |")
+    print("\n| budget | ratio | limit | verdict |\n|---|---:|---:|---|")
+    for name, reference, limit in budgets:
+        ratio = medians[name] / medians[reference]
+        print(f"| `{name}` / `{reference}` | {ratio:.2f} | {limit:.1f} | {'ok' if ratio <= limit else 'OVER'} |")
