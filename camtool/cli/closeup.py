@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator
 from typing import Any
 
 import click
@@ -76,24 +76,12 @@ def unreachable_errors(ctx: click.Context) -> Iterator[None]:
                                  ctx=ctx, param=param_named(ctx, "magnification")) from None
 
 
-def branch_note(rows: Sequence[dict[str, Any]]) -> str:
-    """Footer text naming the other magnification of a sensor-plane distance (close-up rows only)."""
-    others = [(r["distance_mm"], r["other_magnification"]) for r in rows
-              if r.get("other_magnification") is not None and r["magnification"] >= CLOSE_UP
-              and r["other_magnification"] > r["magnification"] * 1.0001]
-    if not others:
-        return ""
-    shown = ", ".join(list(dict.fromkeys(f"{m:.3g}" for _, m in others))[:3])
-    return f"the same distance is also reached at m = {shown} (give -m for that branch)"
-
-
 __all__ = [
     "CLOSEUP_COLUMNS",
     "CLOSEUP_KEYS",
     "CLOSE_UP",
     "DIFFRACTION_COLUMNS",
     "DIFFRACTION_KEYS",
-    "branch_note",
     "closeup_options",
     "focus_models",
     "has_focus_model",

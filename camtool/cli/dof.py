@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 import click
 
 from camtool.cli.closeup import (
@@ -11,7 +9,6 @@ from camtool.cli.closeup import (
     CLOSEUP_KEYS,
     DIFFRACTION_COLUMNS,
     DIFFRACTION_KEYS,
-    branch_note,
     closeup_options,
     magnification_option,
     unreachable_errors,
@@ -33,9 +30,10 @@ from camtool.cli.options import (
 from camtool.cli.rows import ZIP
 from camtool.dof.ladder import focal_lengths, model_choices, model_help
 from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
-from camtool.plans.dof import DofTable, dof_table, lens_behind_converter
+from camtool.plans.closeup import CLOSE_UP
+from camtool.plans.dof import dof_table, lens_behind_converter
 from camtool.render.views.closeup import FOCUS_COLUMN
-from camtool.render.views.dof import ALL_COLUMNS, ANAMORPHIC_COLUMNS, COLUMNS, FAR_KEYS, KEYS
+from camtool.render.views.dof import ALL_COLUMNS, ANAMORPHIC_COLUMNS, COLUMNS, FAR_KEYS, KEYS, comparison_note, dof_footer
 
 ALL_KEYS = [*FAR_KEYS, *CLOSEUP_KEYS, *DIFFRACTION_KEYS]
 MODEL_HELP = model_help()
@@ -116,7 +114,7 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
             if table.focus_column:
                 columns[2:2] = [FOCUS_COLUMN]
         timed = ", focus planning included" if table.path == "closeup" else ""
-        note = _comparison_note(rows, table.reference_model, timed, where) if fmt == "table" else ""
+        note = comparison_note(rows, table.reference_model, timed, where) if fmt == "table" else ""
         return Output(rows, columns, ALL_KEYS if table.path == "closeup" else FAR_KEYS, note)
     keys = [*KEYS, *CLOSEUP_KEYS, *(DIFFRACTION_KEYS if table.path == "closeup" and diffraction else []),
             *(ANAMORPHIC_KEYS if squeeze else [])]
@@ -127,55 +125,4 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
         columns[1:1] = [FOCUS_COLUMN]
     if table.path == "closeup" and diffraction:
         columns[-1:-1] = DIFFRACTION_COLUMNS
-    return Output(rows, columns, keys, _footer(table, rows, where) if fmt == "table" else "")
-
-
-def _footer(table: DofTable, rows: Any, where: str) -> str:
-    """The sharp-zone bars and the footer: the models used, their worst estimate, the facts of the rows."""
-    from camtool.render.bar import axis_range, sharp_zone_bar
-
-    answered = [r for r in rows if r["near_mm"] is not None]
-    low, high = axis_range([v for r in answered for v in (r["near_mm"], r["far_mm"], r["hyperfocal_mm"])])
-    for row in rows:
-        row["sharp_zone"] = (sharp_zone_bar(row["near_mm"], row["distance_mm"], row["far_mm"], row["hyperfocal_mm"],
-                                            low, high, width=24) if row["near_mm"] is not None else row["reason"])
-    # The estimate is of what the model leaves out of the lens data given; 0 (nothing left out) is not shown.
-    worst = max(row["error_estimate"] for row in answered)
-    used = " / ".join(dict.fromkeys(row["model"] for row in answered))
-    label = (f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
-             + (f"; H by the {table.hyperfocal_model} model" if table.hyperfocal_model else ""))
-    closeup = table.path == "closeup"
-    extra = " · ".join(part for part in (
-        branch_note(rows) if (table.close and not closeup) or (closeup and not table.by_magnification) else "",
-        "-s is the lens's own focus setting; focus is where the subject then is" if table.lens_focus_setting else "",
-        _dominance(table.dominated_by) if table.dominated_by else "") if part)
-    return label + " · " + where + (" · " + extra if extra else "")
-
-
-def _dominance(kinds: frozenset[str]) -> str:
-    if kinds == {"wave"}:
-        return "wave-optics depth λ/NA² exceeds the geometric depth"
-    if kinds == {"geometric"}:
-        return "geometric depth exceeds the wave-optics depth λ/NA²"
-    return "depth dominated by the wave-optics or geometric term, row by row"
-
-
-def _percent(fraction: float | None) -> str:
-    if fraction is None:  # a row with no depth of field (diffraction fills the CoC): no estimate either
-        return "—"
-    return f"{fraction:.2%}".replace("%", " %") if fraction >= 1e-4 else "0.01 %" if fraction > 0 else "0 %"
-
-
-def _comparison_note(rows: list[dict[str, Any]], most: str, timed: str, where: str) -> str:
-    """Fill the shown columns of ``--model all`` rows and return the table's footer."""
-    for row in rows:
-        row["difference_shown"] = "—" if row["difference_pct"] is None else f"{row['difference_pct']:.3g} %"
-        row["estimate_shown"] = _percent(row["error_estimate"])
-        row["time_shown"] = _duration(row["time_per_evaluation_s"])
-    return f"difference from {most}, the most complete model; time per evaluation{timed} · " + where
-
-
-def _duration(seconds: float) -> str:
-    if seconds >= 1e-3:
-        return f"{seconds * 1e3:.3g} ms"
-    return f"{seconds * 1e6:.3g} µs"
+    return Output(rows, columns, keys, dof_footer(table, rows, where, CLOSE_UP) if fmt == "table" else "")

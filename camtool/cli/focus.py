@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from camtool.cli.closeup import branch_note, closeup_options
+from camtool.cli.closeup import closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, footer, required, rows_from, t_stop_columns
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
@@ -22,8 +22,9 @@ from camtool.cli.options import (
 from camtool.cli.params import NumberType, WavelengthType, flatten
 from camtool.core import ranges
 from camtool.plans import focus as plans
+from camtool.plans.closeup import CLOSE_UP
 from camtool.plans.equipment import solved_t_stops
-from camtool.render.views.closeup import FOCUS_COLUMN
+from camtool.render.views.closeup import FOCUS_COLUMN, branch_note
 from camtool.render.views.focus import (
     CONTRAST_COLUMNS,
     CONTRAST_KEYS,
@@ -165,10 +166,10 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
             "internal focus (docs/closeup.md)" if found.internal_focus else "unit focusing",
             f"extension {extension:g} mm" if extension else "", f"teleconverter ×{teleconverter:g}" if teleconverter else "",
             "-s is the lens's own focus setting; focus is where the subject then is" if found.lens_focus_setting else "",
-            branch_note(rows)) if x)
+            branch_note(rows, CLOSE_UP)) if x)
     note = footer("thick" if lens_note else "thin", None, "", how, distance_from, lens_note)
     if not found.planned:
-        note = " · ".join(part for part in (note, branch_note(rows)) if part)
+        note = " · ".join(part for part in (note, branch_note(rows, CLOSE_UP)) if part)
     return Output(rows, columns, keys, note)
 
 

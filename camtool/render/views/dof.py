@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from camtool.render.columns import FNUMBER, SMALL, TEXT, Column
+from camtool.render.views.closeup import branch_note
 
 KEYS = ["focal_length_mm", "f_number", "distance_mm", "near_mm", "far_mm", "total_mm", "front_mm", "rear_mm",
         "hyperfocal_mm", "coc_mm", "magnification", "model", "error_estimate", "distance_from"]
@@ -37,3 +40,54 @@ ALL_COLUMNS = [
 ]
 
 ANAMORPHIC_COLUMNS = [Column("near_horizontal_mm", "near horiz."), Column("far_horizontal_mm", "far horiz.")]
+
+
+def dof_footer(table: Any, rows: Any, where: str, close_up: float) -> str:
+    """The sharp-zone bars and the footer: the models used, their worst estimate, the facts of the rows."""
+    from camtool.render.bar import axis_range, sharp_zone_bar
+
+    answered = [r for r in rows if r["near_mm"] is not None]
+    low, high = axis_range([v for r in answered for v in (r["near_mm"], r["far_mm"], r["hyperfocal_mm"])])
+    for row in rows:
+        row["sharp_zone"] = (sharp_zone_bar(row["near_mm"], row["distance_mm"], row["far_mm"], row["hyperfocal_mm"],
+                                            low, high, width=24) if row["near_mm"] is not None else row["reason"])
+    # The estimate is of what the model leaves out of the lens data given; 0 (nothing left out) is not shown.
+    worst = max(row["error_estimate"] for row in answered)
+    used = " / ".join(dict.fromkeys(row["model"] for row in answered))
+    label = (f"{used} model" + (f" (est. error ≤ {_percent(worst)})" if worst > 0 else "")
+             + (f"; H by the {table.hyperfocal_model} model" if table.hyperfocal_model else ""))
+    closeup = table.path == "closeup"
+    extra = " · ".join(part for part in (
+        branch_note(rows, close_up) if (table.close and not closeup) or (closeup and not table.by_magnification) else "",
+        "-s is the lens's own focus setting; focus is where the subject then is" if table.lens_focus_setting else "",
+        _dominance(table.dominated_by) if table.dominated_by else "") if part)
+    return label + " · " + where + (" · " + extra if extra else "")
+
+
+def _dominance(kinds: frozenset[str]) -> str:
+    if kinds == {"wave"}:
+        return "wave-optics depth λ/NA² exceeds the geometric depth"
+    if kinds == {"geometric"}:
+        return "geometric depth exceeds the wave-optics depth λ/NA²"
+    return "depth dominated by the wave-optics or geometric term, row by row"
+
+
+def _percent(fraction: float | None) -> str:
+    if fraction is None:  # a row with no depth of field (diffraction fills the CoC): no estimate either
+        return "—"
+    return f"{fraction:.2%}".replace("%", " %") if fraction >= 1e-4 else "0.01 %" if fraction > 0 else "0 %"
+
+
+def comparison_note(rows: list[dict[str, Any]], most: str, timed: str, where: str) -> str:
+    """Fill the shown columns of ``--model all`` rows and return the table's footer."""
+    for row in rows:
+        row["difference_shown"] = "—" if row["difference_pct"] is None else f"{row['difference_pct']:.3g} %"
+        row["estimate_shown"] = _percent(row["error_estimate"])
+        row["time_shown"] = _duration(row["time_per_evaluation_s"])
+    return f"difference from {most}, the most complete model; time per evaluation{timed} · " + where
+
+
+def _duration(seconds: float) -> str:
+    if seconds >= 1e-3:
+        return f"{seconds * 1e3:.3g} ms"
+    return f"{seconds * 1e6:.3g} µs"
