@@ -26,7 +26,7 @@ from typing import Any
 import click
 
 from camtool.cli.command import equipment_options, presets_option
-from camtool.cli.common import f_numbers, footer, required, single
+from camtool.cli.common import f_numbers, required, single
 from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import WavelengthType, criterion_option, lens_data, model_options, pupil_mag_option
 from camtool.cli.options import (
@@ -60,6 +60,7 @@ from camtool.plans.chart import (
     shot_chart,
     trade_chart,
 )
+from camtool.render.views.common import footer
 
 INSTALL_HINT = "camtool chart needs matplotlib, an optional extra: pip install 'camtool[chart]' (or pip install matplotlib)"
 PAPER_HELP = "a6 (148 × 105 mm) or letter-quarter (5.5 × 4.25 in), landscape"

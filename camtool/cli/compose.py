@@ -8,7 +8,7 @@ import click
 
 from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, footer, rows_from, single
+from camtool.cli.common import f_numbers, rows_from, single
 from camtool.cli.equipment import resolve_coc, resolve_sensor
 from camtool.cli.options import (
     DISTANCE_M,
@@ -25,6 +25,7 @@ from camtool.plans import compose as plans
 from camtool.plans.cine import desqueezed_width_mm
 from camtool.plans.compose import lenses
 from camtool.render.columns import NUMBER, SMALL, Column
+from camtool.render.views.common import footer
 from camtool.render.views.compose import APERTURE_COLUMNS, COLUMNS, KEYS
 
 SIZE_M = LengthType("m")

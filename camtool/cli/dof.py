@@ -14,7 +14,7 @@ from camtool.cli.closeup import (
     unreachable_errors,
 )
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, flatten, footer, required
+from camtool.cli.common import f_numbers, flatten, required
 from camtool.cli.equipment import LENS, input_errors, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import criterion_option, lens_data, model_options
 from camtool.cli.options import (
@@ -33,6 +33,7 @@ from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
 from camtool.plans.closeup import CLOSE_UP
 from camtool.plans.dof import dof_table, lens_behind_converter
 from camtool.render.views.closeup import FOCUS_COLUMN
+from camtool.render.views.common import footer
 from camtool.render.views.dof import ALL_COLUMNS, ANAMORPHIC_COLUMNS, COLUMNS, FAR_KEYS, KEYS, comparison_note, dof_footer
 
 ALL_KEYS = [*FAR_KEYS, *CLOSEUP_KEYS, *DIFFRACTION_KEYS]

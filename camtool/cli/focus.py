@@ -6,7 +6,7 @@ import click
 
 from camtool.cli.closeup import closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, footer, required, rows_from, t_stop_columns
+from camtool.cli.common import f_numbers, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import criterion_option, lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
@@ -25,6 +25,7 @@ from camtool.plans import focus as plans
 from camtool.plans.closeup import CLOSE_UP
 from camtool.plans.equipment import solved_t_stops
 from camtool.render.views.closeup import FOCUS_COLUMN, branch_note
+from camtool.render.views.common import footer, t_stop_columns
 from camtool.render.views.focus import (
     CONTRAST_COLUMNS,
     CONTRAST_KEYS,

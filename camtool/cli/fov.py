@@ -6,7 +6,7 @@ import click
 
 from camtool.cli.closeup import closeup_options, magnification_option
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import footer, required, rows_from
+from camtool.cli.common import required, rows_from
 from camtool.cli.equipment import LENS, resolve_sensor
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import (
@@ -20,6 +20,7 @@ from camtool.cli.options import (
 from camtool.cli.params import flatten
 from camtool.geometry.projection import PROJECTIONS
 from camtool.plans.fov import field_of_view
+from camtool.render.views.common import footer
 from camtool.render.views.fov import COLUMNS, DISTANCE_COLUMNS, DISTANCE_KEYS, KEYS
 
 

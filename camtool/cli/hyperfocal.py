@@ -6,7 +6,7 @@ import click
 
 from camtool.cli.closeup import teleconverter_option
 from camtool.cli.command import Output, camtool_command, combine_params
-from camtool.cli.common import f_numbers, footer, required, rows_from
+from camtool.cli.common import f_numbers, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import criterion_option, diffraction_options, lens_data, lens_geometry_options
 from camtool.cli.options import (
@@ -19,6 +19,7 @@ from camtool.cli.options import (
 )
 from camtool.dof.ladder import hyperfocal_choices, hyperfocal_help
 from camtool.plans.depth import hyperfocal_plan
+from camtool.render.views.common import footer
 from camtool.render.views.hyperfocal import COLUMNS, KEYS
 
 

@@ -9,7 +9,7 @@ import click
 
 from camtool.cli.closeup import MAGNIFICATION
 from camtool.cli.command import GRID, MAX_TABLE_ROWS, Output, camtool_command
-from camtool.cli.common import f_numbers, flatten, footer, one_value, required
+from camtool.cli.common import f_numbers, flatten, one_value, required
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import lens_data, model_options, pupil_and_hiatus
 from camtool.cli.options import (
@@ -29,6 +29,7 @@ from camtool.core.errors import DomainError, InputError
 from camtool.dof.ladder import model_choices, model_help
 from camtool.plans.stack import DEFAULT_OVERLAP, bracket_rows, bracket_stack, rail_rows, rail_stack, stack_mode
 from camtool.render.numfmt import length
+from camtool.render.views.common import footer
 from camtool.render.views.stack import COLUMNS, KEYS
 
 

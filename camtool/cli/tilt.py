@@ -8,7 +8,7 @@ from typing import Any
 import click
 
 from camtool.cli.command import Output, camtool_command
-from camtool.cli.common import f_numbers, footer
+from camtool.cli.common import f_numbers
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import hiatus_option, lens_data, pupil_mag_option
 from camtool.cli.options import (
@@ -25,6 +25,7 @@ from camtool.cli.options import (
 from camtool.cli.params import AngleType, PointType, WavelengthType, flatten
 from camtool.plans.tilt import KEYS
 from camtool.render.columns import Column
+from camtool.render.views.common import footer
 from camtool.render.views.tilt import AT_COLUMNS, COLUMNS, MODEL_COLUMN, NEED_COLUMNS, OPTIMUM_COLUMNS
 
 
