@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from typing import Any
 
 import click
@@ -15,24 +14,16 @@ from camtool.cli.params import FNumberType, NumberType, PupilMagnificationType, 
 from camtool.core import ranges
 from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
-from camtool.render.columns import ANGLE as ANGLE_KIND
-from camtool.render.columns import Column
 from camtool.render.views.exposure import (
-    EQUIVALENT_COLUMNS,
     EQUIVALENT_KEYS,
-    LOSS_COLUMNS,
-    METERED_COLUMNS,
-    RECIPROCITY_COLUMNS,
-    SETTINGS_COLUMNS,
+    exposure_view,
 )
 
 LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
 """Lux in one foot-candle (one lumen per square foot; the foot is 0.3048 m exactly): 10.7639."""
 
-ANGLE = [Column("shutter_angle_deg", "shutter angle", ANGLE_KIND)]
 KEYS = [*ROW_KEYS, *(key for key in EQUIVALENT_KEYS if key not in ROW_KEYS)]
 """Every key a row of the command can carry: a worked-out exposure's, then what --equivalents adds."""
-SOLVED_NAMES = {"f_number": "f-number", "shutter_s": "time", "iso": "ISO", "ev100": "scene EV100"}
 
 
 class ApertureType(FNumberType):
@@ -194,8 +185,7 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, shutter_angle
       camtool exposure --ev100 10 -N T2.8 --iso 800 --fps 24
     """
     from camtool.cli.equipment import LENS
-    from camtool.exposure.calculator import KEYS, work_out
-    from camtool.exposure.timefmt import format_time
+    from camtool.exposure.calculator import work_out
     from camtool.plans.cine import shutter_angles, shutter_times
     from camtool.plans.equipment import exposure_apertures
 
@@ -226,55 +216,8 @@ def exposure(ctx: click.Context, f_number, exact_stops, shutter_s, shutter_angle
     time_key = "shutter_exact_s" if answer.mode == "equivalents" else "corrected_shutter_s"
     angles = {"shutter_angle_deg": shutter_angles(answer.values[time_key], fps=fps[0])} if fps else {}
     rows = rows_from(answer.rows, {**answer.values, **angles})
-    mark = "T" if t_stop else "f/"
-    if answer.mode == "equivalents":
-        for row in rows:
-            row["aperture"] = f"{mark}{row['f_number_nominal']:g}"
-            row["time"], row["exact"] = format_time(row["shutter_nominal_s"]), format_time(row["shutter_exact_s"])
-        note = f"{answer.notes[0]} · {step} stops · exact time before snapping"
-        return Output(rows, EQUIVALENT_COLUMNS + ANGLE[:len(angles)], [*EQUIVALENT_KEYS, *angles],
-                      note if fmt == "table" else "")
-    for row in rows:
-        row["aperture"] = f"{mark}{row['f_number']:.3g}"
-        row["time"] = format_time(row["shutter_s"])
-        row["iso_text"] = f"{row['iso']:.4g}"
-        row["nominal"] = (f"{mark}{row['f_number_nominal']:g} {format_time(row['shutter_nominal_s'])} "
-                          f"ISO {row['iso_nominal']:g}")
-        row["corrected"] = format_time(row["corrected_shutter_s"])
-        if answer.mode == "metered":
-            row["metered"] = (f"{mark}{row['metered_f_number']:.3g} {format_time(row['metered_shutter_s'])} "
-                              f"ISO {row['metered_iso']:.4g}")
-    footer = _footer(answer, step, film_data, t_stop) + lens_note
-    return Output(rows, _columns(answer, rows) + ANGLE[:len(angles)], [*KEYS, *angles], footer if fmt == "table" else "")
-
-
-def _columns(answer: Any, rows: Sequence[dict[str, Any]]) -> list[Column]:
-    """The table's columns: the corrections that are not zero, then the answer."""
-    if answer.mode == "metered":
-        optional = {"nd_stops", "bellows_stops", "iso_change_stops", "aperture_change_stops", "reciprocity_stops"}
-        return [c for c in METERED_COLUMNS
-                if c.key not in optional or any(abs(float(r[c.key])) > 1e-12 for r in rows)]
-    shown = list(SETTINGS_COLUMNS)
-    if answer.mode == "scene" and any(float(r["nd_stops"]) or float(r["bellows_stops"]) for r in rows):
-        shown += LOSS_COLUMNS
-    if answer.film is not None or any(abs(float(r["reciprocity_stops"])) > 1e-12 for r in rows):
-        shown += RECIPROCITY_COLUMNS
-    return shown
-
-
-def _footer(answer: Any, step: str, film: Any, t_stop: bool) -> str:
-    if answer.mode == "metered":
-        note = (f"metered settings without the filters · answer: {SOLVED_NAMES[answer.solved]} · "
-                "corrections in stops · bulb times (> 30 s) exact")
-    else:
-        note = (f"EV = log2(N²/t) of the settings · EV100 = the scene at ISO 100 · "
-                f"solved: {SOLVED_NAMES[answer.solved]} · nearest {step} stops")
-    if t_stop:
-        note += " · T-stops: exposure uses them as given"
-    if film is not None:
-        model = f"p = {film.p:g}" if film.p is not None else f"published table to {film.points[-1][0]:g} s"
-        note += f" · {film.name}, {model}"
-    return note
+    shown, keys, note = exposure_view(answer, rows, t_stop=t_stop, step=step, film=film_data, angles=list(angles))
+    return Output(rows, shown, keys, note + (lens_note if answer.mode != "equivalents" else "") if fmt == "table" else "")
 
 
 def _film(ctx: click.Context, name: str, preset_files: tuple[str, ...]) -> Any:
