@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import click
@@ -28,9 +27,8 @@ from camtool.cli.params import CriterionType, FNumberType, NumberType
 from camtool.core.errors import DomainError, InputError
 from camtool.dof.ladder import model_choices, model_help
 from camtool.plans.stack import DEFAULT_OVERLAP, bracket_rows, bracket_stack, rail_rows, rail_stack, stack_mode
-from camtool.render.numfmt import length
 from camtool.render.views.common import footer
-from camtool.render.views.stack import COLUMNS, KEYS
+from camtool.render.views.stack import COLUMNS, KEYS, bracket_note, rail_note
 
 
 def _one(ctx: click.Context, values: list[float], option: str, name: str) -> float:
@@ -133,15 +131,9 @@ def stack(ctx: click.Context, focal_length, f_number, exact_stops, magnification
                              lens_preset=ctx.meta.get(LENS), pupil_magnification=p, wavelength_nm=wavelength,
                              diffraction=diffraction, tolerance=tolerance, distance_from=distance_from,
                              lens_name=ctx.params.get("lens"))
-    note = ""
-    if fmt == "table":
-        what = f"{plan.criterion} depth" + (" (λ/NA², as a CoC of 2λN)" if plan.criterion == "wave" else "")
-        units = ctx.params.get("units", "metric")
-        if plan.focal_range_mm is not None:
-            what += f" · the lens focuses internally: f {plan.focal_range_mm[0]:.4g} to {plan.focal_range_mm[1]:.4g} mm"
-        note = (f"{len(plan.frames)} frames · {length(near, units)} to {length(far, units)} · {what} · "
-                f"{plan.model} model · overlap {overlap:g} · "
-                + footer(None, cocs if plan.criterion == "classic" else None, coc_origin, chosen.label, distance_from))
+    note = bracket_note(plan, near, far, overlap, ctx.params.get("units", "metric"), footer(
+        None, cocs if plan.criterion == "classic" else None, coc_origin, chosen.label, distance_from)) \
+        if fmt == "table" else ""
     return Output(bracket_rows(plan), COLUMNS, KEYS, note)
 
 
@@ -161,20 +153,5 @@ def _rail(ctx: click.Context, rail: Any, fmt: str, coc_origin: str) -> Output:
             grid.count = plan.frames
         start, stop = grid.start, grid.stop
     rows = rail_rows(rail, start=start, stop=stop)
-    note = ""
-    if fmt == "table":
-        units = ctx.params.get("units", "metric")
-        frame_depth = plan.front_mm + plan.rear_mm
-        what = (f"{rail.criterion} depth " + ("λ/NA²" if rail.criterion == "wave"
-                                                 else f"(CoC {rail.coc_mm:.3g} mm, {coc_origin})"))
-        if math.isinf(plan.rear_mm):
-            note = (f"1 frame · sharp from {length(plan.front_mm, units, False)} in front of its focus to infinity "
-                    f"behind it (the subject at {rail.magnification:g}× is at or beyond the hyperfocal distance): it "
-                    f"covers any depth · total depth {length(depth, units, False)} · {what} · positions along the "
-                    "subject from its nearest point")
-        else:
-            note = (f"{plan.frames} frames · step {length(plan.step_mm, units, False)} at the subject "
-                    f"({length(plan.extension_step_mm, units, False)} of lens extension) · total depth "
-                    f"{length(depth, units, False)} · {what} · frame depth {length(frame_depth, units, False)}, "
-                    f"overlap {rail.overlap:g} · positions along the subject from its nearest point")
+    note = rail_note(rail, coc_origin, ctx.params.get("units", "metric")) if fmt == "table" else ""
     return Output(rows, COLUMNS, KEYS, note)
