@@ -1,4 +1,4 @@
-"""What each command shows: its table columns and its JSON/CSV keys, one module a command.
+"""What each command shows: its table columns, its JSON/CSV keys, its cells' text and its footers, one module a command.
 
 A command module in ``camtool/cli/`` declares options and calls its plan; what its rows look like —
 the columns a table shows, their kinds and the keys scripts get — is declared here, beside the
