@@ -71,11 +71,16 @@ def cocmap(ctx: click.Context, depth, output, mode, distance, f_number, focal_le
                else None)
     settings = Settings(mode, single(ctx, distance), single(ctx, [apertures]), f, pupil_offset, p, chosen.width_mm,
                         cocs[0], depth_unit, f_stop, max_blur, z_scale, math, size, maximum, channel)
+    from camtool.core.files import FileProblem
+
     with library_errors(ctx):
         found = list_frames(depth)
         if not found:
             raise click.BadParameter(f"no depth images match {depth!r}", ctx=ctx, param_hint="'DEPTH'")
-        rows = list(run_frames(frames=found, outputs=output_names(found, output), settings=settings,
-                               jobs=jobs or os.cpu_count() or 1, scheduler=scheduler))
+        try:
+            rows = list(run_frames(frames=found, outputs=output_names(found, output), settings=settings,
+                                   jobs=jobs or os.cpu_count() or 1, scheduler=scheduler))
+        except FileProblem as problem:  # a depth file that cannot be read: named as DEPTH, exit 1
+            raise click.ClickException(f"'DEPTH' {problem}") from None
     return Output(rows, COLUMNS, KEYS, f"{mode} mode · CoC {cocs[0]:.4g} mm · {chosen.label} · depths from the "
                   "entrance pupil" if fmt == "table" else "")
