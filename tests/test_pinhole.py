@@ -131,3 +131,13 @@ def test_the_command() -> None:
     assert run("pinhole", "-f", "0.1mm").exit_code == 2
     table = run("pinhole", "-f", "150", "-s", "2m")
     assert table.exit_code == 0 and "rayleigh" in table.stdout
+
+
+def test_a_scene_or_camera_preset_with_pinhole_answers_or_refuses_in_one_line() -> None:
+    """pinhole's -s takes one value: the equipment checks read it as a list of one (a deep fuzz found a traceback)."""
+    from tests.cli_helpers import run
+
+    for scene in ("landscape-24", "macro-1to1"):
+        result = run("pinhole", "--camera", "apple-iphone-15-pro", "--scene", scene, "--format", "csv",
+                     "--film-distance", "1")
+        assert result.exit_code in (0, 2) and "Traceback" not in result.output

@@ -308,7 +308,9 @@ class PupilMagnificationType(click.ParamType):
 
 
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:
-    """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list."""
+    """Join the lists of a repeatable list option (``-N 2.8,4 -N 8``) into one list (one value: a list of one)."""
+    if isinstance(values, (int, float)):  # an option that takes one value (pinhole's -s), as the equipment checks see it
+        return [float(values)]
     if isinstance(values, (list, tuple)):  # a --batch column (one list, or its values already flat): copied whole
         if len(values) == 1 and type(values[0]) is list:
             return list(values[0])
