@@ -454,8 +454,8 @@ def chart_shot(ctx: click.Context, frames, sensor, crop, coc, coc_rule, pixel_pi
 
     try:
         shot = read_shot(frames)
-    except FileProblem as error:
-        raise click.ClickException(str(error)) from None
+    except FileProblem as error:  # named as --batch names its file: the option, then the file and its problem
+        raise click.ClickException(f"--frames {error}") from None
     found = apertures(shot.apertures, lens=ctx.meta.get(LENS))
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
