@@ -229,3 +229,9 @@ def test_chart_dof_squeeze_adds_the_horizontal_limits_of_f_over_squeeze() -> Non
     assert vertical_far.y == [float(v) for v in thin_dof(100.0, 2.8, 0.025, np.asarray(near.x), "sensor").far_mm]
     with pytest.raises(DomainError):
         dof_chart(focal_lengths_mm=[100.0], f_numbers=[2.8], coc_mm=0.025, squeeze=9.0)
+
+
+def test_an_unreadable_frames_file_is_one_line_naming_the_option(tmp_path) -> None:
+    result = run("chart", "shot", "-o", str(tmp_path / "shot.svg"), "--frames", str(tmp_path / "none.csv"))
+    assert result.exit_code == 1
+    assert result.stderr.startswith("Error: --frames ") and len(result.stderr.splitlines()) == 1
