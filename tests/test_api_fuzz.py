@@ -167,6 +167,7 @@ INFINITE_OK = {"subject_distance_mm", "front_mm", "far_mm", "rear_mm", "total_mm
                "sensor_distance_mm", "object_distance_mm", "image_distance_mm",
                "radius_mm",  # a prescription's flat surface
                "y",  # a chart curve's far limit beyond the hyperfocal distance
+               "distances_mm",  # a DOF card's last row, focused at infinity
                "step_mm", "extension_step_mm", "covered_mm",  # a rail frame sharp to infinity: one frame covers all
                "focus_distance_mm", "focus_distance_max_mm", "far_max_mm", "far_min_mm",  # a photo focused at infinity
                "far_limit_mm"}  # a CoC map focused beyond the hyperfocal distance
