@@ -183,7 +183,7 @@ def argument(name: str, function: str = "") -> st.SearchStrategy[Any]:
     valid = VALID_IN.get(function, {}).get(name, VALID[name])
     if name in ("model", "distance_from", "projection", "rule", "diffraction", "prescription", "film", "kind",
                 "name", "lens", "along", "angles_from", "hinge_from", "path", "coc_rule", "hyperfocal", "optimum",
-                "points", "criterion", "sensor_label", "fill_axis", "units", "data", "output"):
+                "points", "criterion", "contrast_criterion", "sensor_label", "fill_axis", "units", "data", "output"):
         bad = st.sampled_from(WRONG_TEXT) | st.text(max_size=12) | st.sampled_from(HOSTILE)
     else:
         bad = (st.sampled_from(HOSTILE) | st.floats() | st.integers(-(10**400), 10**400) | hostile_arrays()
