@@ -155,15 +155,9 @@ def records(source: IO[str], name: str) -> Iterator[Record]:
     :class:`FileProblem`.
     """
     rows = lines(source, name)
-    first = ""
-    for line in rows:
-        if line.strip():
-            first = line
-            break
+    first = _first_line(rows, name)
     if not first:
         return
-    if "\x00" in first:
-        raise FileProblem(name, "looks like UTF-16 text without a byte-order mark; save it as UTF-8 (in Excel: CSV UTF-8)")
     if first.lstrip().startswith("{"):
         yield from _json_rows(_chain(first, rows))
     else:
@@ -222,6 +216,14 @@ def csv_message(error: csv.Error) -> str:
     return f"not valid CSV ({text})"
 
 
+def _first_line(rows: Iterator[str], name: str) -> str:
+    """The first line of ``rows`` that is not blank ('' for none); one holding a NUL is UTF-16 without a BOM."""
+    first = next((line for line in rows if line.strip()), "")
+    if "\x00" in first:
+        raise FileProblem(name, "looks like UTF-16 text without a byte-order mark; save it as UTF-8 (in Excel: CSV UTF-8)")
+    return first
+
+
 def _chain(first: str, rest: Iterator[str]) -> Iterator[str]:
     yield first
     yield from rest
@@ -262,15 +264,9 @@ def chunks(source: IO[str], name: str, size: int, stop: bool = False) -> Iterato
     [[['50', '35'], ['8', '2']]]
     """
     rows = lines(source, name)
-    first = ""
-    for line in rows:
-        if line.strip():
-            first = line
-            break
+    first = _first_line(rows, name)
     if not first:
         return
-    if "\x00" in first:
-        raise FileProblem(name, "looks like UTF-16 text without a byte-order mark; save it as UTF-8 (in Excel: CSV UTF-8)")
     if first.lstrip().startswith("{"):
         yield from _gather(_json_rows(_chain(first, rows)), None, size, stop)
         return
