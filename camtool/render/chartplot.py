@@ -327,9 +327,14 @@ def _card(figure: Figure, data: ChartData, units: str) -> None:
     cells = [[_row_label(s, units), *(_card_cell(a, b, units) for a, b in zip(near, far))]
              for s, near, far in zip(extra["distances_mm"], extra["near_mm"], extra["far_mm"])]
     cells.append(["H", *(short(h) for h in extra["hyperfocal_mm"])])
+    _print_table(axes, cells, header, 6.5)
+
+
+def _print_table(axes: Any, cells: list[list[str]], header: list[str], fontsize: float) -> None:
+    """A printed table filling ``axes``: bold header row and first column, every other row shaded."""
     table = axes.table(cellText=cells, colLabels=header, bbox=Bbox.from_bounds(0.0, 0.0, 1.0, 1.0), cellLoc="center")
     table.auto_set_font_size(False)
-    table.set_fontsize(6.5)
+    table.set_fontsize(fontsize)
     for (row, col), cell in table.get_celld().items():
         cell.set_linewidth(0.4)
         if row == 0 or col == 0:
@@ -354,16 +359,7 @@ def _marks(figure: Figure, data: ChartData, units: str) -> None:
 
     cells = [[shown(mark), *(f"{shown(a)} – {shown(b)}" for a, b in zip(near, far))]
              for mark, near, far in zip(extra["marks_mm"], extra["near_mm"], extra["far_mm"])]
-    table = axes.table(cellText=cells, colLabels=["mark", *extra["lenses"]], bbox=Bbox.from_bounds(0.0, 0.0, 1.0, 1.0),
-                       cellLoc="center")
-    table.auto_set_font_size(False)
-    table.set_fontsize(7)
-    for (row, col), cell in table.get_celld().items():
-        cell.set_linewidth(0.4)
-        if row == 0 or col == 0:
-            cell.set_text_props(fontweight="bold")
-        if row > 0 and row % 2 == 0:
-            cell.set_facecolor("#f0f0f0")
+    _print_table(axes, cells, ["mark", *extra["lenses"]], 7)
 
 
 def _shot(figure: Figure, data: ChartData, units: str) -> None:
