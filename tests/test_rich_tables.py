@@ -172,31 +172,23 @@ def _stderr_on_a_terminal(args: list[str], out: Path, interrupt_after: bytes | N
     """Run camtool with stdout to ``out`` and stderr on a pseudo-terminal: what the terminal got, and the status."""
     import pty
     import signal
-    import time
 
-    from test_shell import CAMTOOL, ENV
+    from test_shell import CAMTOOL, ENV, drain
 
     pid, fd = pty.fork()
     if pid == 0:  # child: stdout to the file, stderr stays on the terminal
         target = os.open(out, os.O_WRONLY | os.O_CREAT | os.O_TRUNC)
         os.dup2(target, 1)
         os.execve(CAMTOOL, [CAMTOOL, *args], {**ENV, "TERM": "xterm-256color", "COLUMNS": "100"})
-    chunks: list[bytes] = []
-    sent = False
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline:
-        try:
-            data = os.read(fd, 65536)
-        except OSError:
-            break
-        if not data:
-            break
-        chunks.append(data)
-        if interrupt_after is not None and not sent and interrupt_after in b"".join(chunks):
+    sent = []
+
+    def interrupt(drawn: bytes) -> None:
+        if interrupt_after is not None and not sent and interrupt_after in drawn:
             os.kill(pid, signal.SIGINT)
-            sent = True
-    _, status = os.waitpid(pid, 0)
-    return b"".join(chunks).decode(errors="replace"), os.waitstatus_to_exitcode(status)
+            sent.append(True)
+
+    drawn, status = drain(pid, fd, interrupt)
+    return drawn.decode(errors="replace"), status
 
 
 def test_progress_shows_on_a_terminal_only_on_stderr(tmp_path) -> None:

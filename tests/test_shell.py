@@ -9,6 +9,7 @@ import re
 import shutil
 import subprocess
 import sys
+from collections.abc import Callable
 
 import pytest
 
@@ -46,8 +47,19 @@ def _in_terminal(args: list[str], env: dict[str, str]) -> str:
     pid, fd = pty.fork()
     if pid == 0:  # child
         os.execve(CAMTOOL, [CAMTOOL, *args], {**ENV, "COLUMNS": "200", "TERM": "xterm-256color", **env})
-    chunks = []
-    while True:
+    return drain(pid, fd)[0].decode()
+
+
+def drain(pid: int, fd: int, on_data: Callable[[bytes], None] | None = None) -> tuple[bytes, int]:
+    """What a child on a pseudo-terminal drew, until it closes it (60 s at most), and its exit status.
+
+    ``on_data`` is called with everything drawn so far after each read (to send a signal, say).
+    """
+    import time
+
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:
         try:
             data = os.read(fd, 65536)
         except OSError:
@@ -55,8 +67,10 @@ def _in_terminal(args: list[str], env: dict[str, str]) -> str:
         if not data:
             break
         chunks.append(data)
-    os.waitpid(pid, 0)
-    return b"".join(chunks).decode()
+        if on_data is not None:
+            on_data(b"".join(chunks))
+    _, status = os.waitpid(pid, 0)
+    return b"".join(chunks), os.waitstatus_to_exitcode(status)
 
 
 def test_no_color_is_honoured_on_a_terminal() -> None:
