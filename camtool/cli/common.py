@@ -63,8 +63,6 @@ def t_stop_output(ctx: click.Context, out: Any) -> Any:
         if len(chosen) == rows.size:  # (no choice per row: a T-stop the plan solved stays as it is)
             rows.columns["t_stop"] = [choice.t_stop if choice is not None else None for choice in chosen]
             rows.columns["f_number_from"] = [choice.source if choice is not None else None for choice in chosen]
-        t_stops = values_of(rows.columns.get("t_stop"), rows.size)
-        rows.columns["t_stop_label"] = [f"T{t:.3g}" if isinstance(t, float) else "" for t in t_stops]
     else:
         for row, choice in zip(rows, t_stop_rows(choices, row_f_numbers=[row.get("f_number") for row in rows])):
             row["t_stop"] = choice.t_stop if choice is not None else None

@@ -16,11 +16,10 @@ def t_stop_columns(rows: Any, columns: Sequence[Any]) -> list[Any]:
     from camtool.render.columns import TEXT, Column
 
     if isinstance(rows, ColumnRows) and not rows.materialised:  # columns: the labels as one more column
-        if "t_stop_label" not in rows.columns:
-            from camtool.render.columnar import values_of
+        from camtool.render.columnar import values_of
 
-            rows.columns["t_stop_label"] = [f"T{t:.3g}" if isinstance(t, float) else ""
-                                            for t in values_of(rows.columns.get("t_stop"), rows.size)]
+        rows.columns["t_stop_label"] = [f"T{t:.3g}" if isinstance(t, float) else ""
+                                        for t in values_of(rows.columns.get("t_stop"), rows.size)]
     else:
         for row in rows:
             t = row.get("t_stop")
