@@ -52,6 +52,9 @@ from camtool.core.ranges import (
     PUPIL_MAGNIFICATION,
     SENSOR_SIDE_MM,
     SHUTTER_ANGLE_DEG,
+    TILT_DEG,
+    TOLERANCE,
+    WAVELENGTH_NM,
     describe,
 )
 from camtool.dof.ladder import LensData
@@ -178,10 +181,10 @@ MagnificationOrZero = Annotated[Any, _Kind("number", bounds=(0.0, MAGNIFICATION[
 """A magnification, or 0 for a subject at infinity (closed at 0, unlike :data:`Magnification`)."""
 PupilMagnification = Annotated[Any, _Kind("number", bounds=PUPIL_MAGNIFICATION)]
 OptionalPupilMagnification = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=PUPIL_MAGNIFICATION)]
-Wavelength = Annotated[Any, _Kind("number", bounds=(200.0, 2000.0), unit="nm")]
+Wavelength = Annotated[Any, _Kind("number", bounds=WAVELENGTH_NM, unit="nm")]
 """A wavelength, as ``--wavelength`` takes it: near ultraviolet to near infrared."""
-Tolerance = Annotated[float, _Kind("number", scalar=True, bounds=(0.0, 1.0))]
-"""A relative tolerance, one number above 0 (up to 1, 100 %)."""
+Tolerance = Annotated[float, _Kind("number", scalar=True, bounds=TOLERANCE)]
+"""A relative tolerance, one number above 0 and below 1 (100 %)."""
 PixelPitch = Annotated[Any, _Kind("number", scalar=True, optional=True,
                                   bounds=(PIXEL_PITCH_UM[0] / 1000.0, PIXEL_PITCH_UM[1] / 1000.0), unit="mm")]
 Flag = Annotated[bool, _Kind("flag")]
@@ -206,8 +209,7 @@ ContrastLevel = Annotated[float, _Kind("number", scalar=True, bounds=MTF_LEVEL)]
 RealFilmDistance = Annotated[float, _Kind("number", scalar=True, bounds=FOCAL_LENGTH_MM, unit="mm")]
 EV100 = Annotated[float, _Kind("number", scalar=True, bounds=(-10.0, 25.0), zero_ok=True)]
 Text = Annotated[str, _Kind("text")]
-OptionalAngle = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=(-89.9, 89.9), unit="°",
-                                     zero_ok=True)]
+OptionalAngle = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=TILT_DEG, unit="°", zero_ok=True)]
 OptionalDistance = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=DISTANCE_MM, unit="mm")]
 OptionalDistanceOrInf = Annotated[Any, _Kind("number", scalar=True, optional=True, allow_inf=True,
                                              bounds=DISTANCE_MM, unit="mm")]
@@ -228,7 +230,7 @@ RealDistance = Annotated[float, _Kind("number", scalar=True, bounds=DISTANCE_MM,
 RealDistanceOrInf = Annotated[float, _Kind("number", scalar=True, allow_inf=True, bounds=DISTANCE_MM, unit="mm")]
 RealFNumber = Annotated[float, _Kind("number", scalar=True, bounds=F_NUMBER)]
 RealPupilMagnification = Annotated[float, _Kind("number", scalar=True, bounds=PUPIL_MAGNIFICATION)]
-RealWavelength = Annotated[float, _Kind("number", scalar=True, bounds=(200.0, 2000.0), unit="nm")]
+RealWavelength = Annotated[float, _Kind("number", scalar=True, bounds=WAVELENGTH_NM, unit="nm")]
 OptionalSensorSide = Annotated[Any, _Kind("number", scalar=True, optional=True, bounds=SENSOR_SIDE_MM, unit="mm")]
 OptionalText = Annotated[Any, _Kind("text", optional=True)]
 OptionalPrescription = Annotated[Any, _Kind("prescription", optional=True)]

@@ -18,7 +18,7 @@ import pytest
 import camtool
 from camtool import api
 from camtool.cli import cli
-from camtool.cli.params import FNumberType, LengthType, NumberType, PupilMagnificationType
+from camtool.cli.params import AngleType, FNumberType, LengthType, NumberType, Parsed
 from camtool.core.errors import DomainError
 
 # API argument -> (command, option parameter name)
@@ -40,6 +40,11 @@ STANDS_FOR = {
     "film_distance_mm": ("pinhole", "film_distance"),
     "contrast_level": ("pinhole", "contrast"),
     "ev100": ("pinhole", "ev100"),
+    "wavelength_nm": ("dof", "wavelength"),
+    "tolerance": ("dof", "tolerance"),
+    "tilt_deg": ("tilt", "tilt"),
+    "swing_deg": ("tilt", "swing"),
+    "overlap": ("stack", "overlap"),
 }
 
 
@@ -56,10 +61,8 @@ def _option_bounds(command: str, name: str) -> tuple[float, float] | None:
         return F_NUMBER
     if isinstance(kind, NumberType):
         return kind.low, kind.high
-    if isinstance(kind, PupilMagnificationType):
-        from camtool.core.ranges import PUPIL_MAGNIFICATION
-
-        return PUPIL_MAGNIFICATION
+    if isinstance(kind, (Parsed, AngleType)) and kind.bounds is not None:
+        return kind.bounds
     if isinstance(kind, click.FloatRange):
         return kind.min, kind.max
     return None
@@ -127,8 +130,6 @@ def test_every_pupil_magnification_option_takes_one_range() -> None:
 
 def _option_bounds_of(param: click.Parameter) -> tuple[float, float] | None:
     kind = param.type
-    if isinstance(kind, PupilMagnificationType):
-        from camtool.core.ranges import PUPIL_MAGNIFICATION
-
-        return PUPIL_MAGNIFICATION
+    if isinstance(kind, Parsed):
+        return kind.bounds
     return (kind.low, kind.high) if isinstance(kind, NumberType) else None

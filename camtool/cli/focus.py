@@ -24,7 +24,6 @@ from camtool.core import ranges
 from camtool.plans import focus as plans
 from camtool.plans.closeup import CLOSE_UP
 from camtool.plans.equipment import solved_t_stops
-from camtool.render.views.closeup import FOCUS_COLUMN, branch_note
 from camtool.render.views.common import footer, t_stop_columns
 from camtool.render.views.focus import (
     CONTRAST_COLUMNS,
@@ -32,12 +31,13 @@ from camtool.render.views.focus import (
     DEPTH_COLUMNS,
     DEPTH_KEYS,
     FIXED_KEYS,
-    FORWARD_COLUMNS,
     FORWARD_KEYS,
     INVERSE_COLUMNS,
     INVERSE_KEYS,
     OPTIMUM_COLUMNS,
     OPTIMUM_KEYS,
+    forward_view,
+    hansma_note,
 )
 
 
@@ -112,10 +112,8 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
         with library_errors(ctx):
             values = plans.spread_optimum(focus_spread_mm=d, magnification=m, pupil_magnification=p,
                                           wavelength_nm=wavelength)
-        keys = list(values)
-        note = f"optimum aperture (Hansma): defocus = diffraction at {wavelength:g} nm; blur: root-sum-square"
-        return Output(rows_from(count, values), [c for c in OPTIMUM_COLUMNS if c.key in keys], keys,
-                      note if fmt == "table" else "")
+        return Output(rows_from(count, values), [c for c in OPTIMUM_COLUMNS if c.key in values], list(values),
+                      hansma_note(wavelength) if fmt == "table" else "")
     if optimum and not (near and far):
         raise click.UsageError("--optimum needs --near and --far, or --focus-spread", ctx)
     focal = required(ctx, focal_length, "-f")
@@ -134,8 +132,7 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
         with library_errors(ctx):
             values = plans.optimum(focal_length_mm=f, near_mm=a, far_mm=b, distance_from=distance_from,
                                    pupil_magnification=p, hiatus_mm=delta, wavelength_nm=wavelength)
-        note = footer(None, None, "", f"optimum aperture (Hansma): defocus = diffraction at {wavelength:g} nm; "
-                      "blur: root-sum-square", distance_from, lens_note) if fmt == "table" else ""
+        note = footer(None, None, "", hansma_note(wavelength), distance_from, lens_note) if fmt == "table" else ""
         return Output(rows_from(count, values), OPTIMUM_COLUMNS, OPTIMUM_KEYS, note)
     if near or far:
         return _inverse(ctx, focal, near, far, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, fmt,
@@ -152,25 +149,9 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
                               pupil_magnification=p, hiatus_mm=delta, lens_preset=ctx.meta.get(LENS),
                               extension_mm=extension, teleconverter=teleconverter)
     rows = found.rows if found.rows is not None else rows_from(count, found.values or {})
-    keys, columns = list(FORWARD_KEYS), list(FORWARD_COLUMNS)
-    if found.focus_column:
-        columns.insert(1, FOCUS_COLUMN)
-    if not given_n:
-        keys = [k for k in keys if k not in ("f_number", "working_f_number")]
-        columns = [c for c in columns if c.key != "working_f_number"]
-    if fmt != "table":
-        return Output(rows, columns, keys, "")
-    if not found.planned:
-        how = "unit focusing, m = v/u"
-    else:
-        how = " · ".join(x for x in (
-            "internal focus (docs/closeup.md)" if found.internal_focus else "unit focusing",
-            f"extension {extension:g} mm" if extension else "", f"teleconverter ×{teleconverter:g}" if teleconverter else "",
-            "-s is the lens's own focus setting; focus is where the subject then is" if found.lens_focus_setting else "",
-            branch_note(rows, CLOSE_UP)) if x)
-    note = footer("thick" if lens_note else "thin", None, "", how, distance_from, lens_note)
-    if not found.planned:
-        note = " · ".join(part for part in (note, branch_note(rows, CLOSE_UP)) if part)
+    columns, keys, note = forward_view(found, rows, f_number_given=bool(given_n), table=fmt == "table",
+                                       close_up=CLOSE_UP, extension=extension, teleconverter=teleconverter,
+                                       lens_note=lens_note, distance_from=distance_from)
     return Output(rows, columns, keys, note)
 
 

@@ -9,15 +9,14 @@ are flattened by :func:`flatten`. Bad values fail with click's one-line
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Iterable
 from typing import Any
 
 import click
 
-from camtool.core import ranges
+from camtool.core import ranges, units
 from camtool.core.ranges import F_NUMBER
-from camtool.core.units import MM_PER_UNIT, TStop, UnitError, parse_f_number, parse_length, parse_t_stop, parse_time
+from camtool.core.units import UnitError
 
 
 class _ListType(click.ParamType):
@@ -51,14 +50,9 @@ class _ListType(click.ParamType):
             out.append(number)
         return out
 
-
     def decimal_comma(self, value: str, first: str, second: str) -> str | None:
         """A message when ``first,second`` may be one number written with a decimal comma (see the subclasses)."""
         return None
-
-
-_DIGITS = re.compile(r"^[0-9]+$")
-_DIGITS_UNIT = re.compile(r"^([0-9]+)\s*([a-zA-Zµ\"']+)$")
 
 
 class LengthType(_ListType):
@@ -75,7 +69,7 @@ class LengthType(_ListType):
         self.default_unit = default_unit
         self.allow_inf = allow_inf
         self.bounds = bounds
-        scale = MM_PER_UNIT[default_unit]
+        scale = units.MM_PER_UNIT[default_unit]
         shown = "µm" if default_unit == "um" else default_unit
         low, high = bounds[0] / scale, bounds[1] / scale
         low_text = f"> {low:g}" if low == 0 else f"{low:g}"
@@ -83,19 +77,10 @@ class LengthType(_ListType):
             ", or inf" if allow_inf else "")
 
     def parse(self, text: str) -> float:
-        return parse_length(text, self.default_unit)
+        return units.parse_length(text, self.default_unit)
 
     def decimal_comma(self, value: str, first: str, second: str) -> str | None:
-        """``3,5ft``: a bare whole number, then digits with a unit, reads as 3.5 ft written with a decimal comma.
-
-        A list of two bare numbers (``-s 3,5``) stays a list: it gives a row each, in plain sight.
-        """
-        unit = _DIGITS_UNIT.match(second)
-        if not (_DIGITS.match(first) and unit):
-            return None
-        shown = "µm" if self.default_unit == "um" else self.default_unit
-        return (f"{value!r} is ambiguous: {first}.{unit.group(1)} {unit.group(2)} is written {first}.{second} "
-                f"(a decimal point); for the two values {first} {shown} and {second} write {first}{shown},{second}")
+        return units.decimal_comma_length(value, first, second, self.default_unit)
 
     def check(self, value: float) -> bool:
         if value == math.inf:
@@ -114,26 +99,14 @@ class FNumberType(_ListType):
         self.t_stops = t_stops  # also T-stops (T2), returned as TStop
 
     def parse(self, text: str) -> float:
-        t_stop = parse_t_stop(text) if self.t_stops else None
-        return parse_f_number(text) if t_stop is None else TStop(t_stop)
+        t_stop = units.parse_t_stop(text) if self.t_stops else None
+        return units.parse_f_number(text) if t_stop is None else units.TStop(t_stop)
 
     def check(self, value: float) -> bool:
         return F_NUMBER[0] <= value <= F_NUMBER[1]
 
     def decimal_comma(self, value: str, first: str, second: str) -> str | None:
-        """``2,8`` or ``5,6``: two bare digit strings that read as a third-stop f-number with a decimal comma.
-
-        ``8,11`` and ``4,8`` (no third stop) stay lists of two f-numbers.
-        """
-        if not (_DIGITS.match(first) and _DIGITS.match(second)) or len(first) + len(second) > 4:
-            return None  # a third-stop f-number is at most two digits either side of the comma
-        from camtool.exposure.stops import THIRD_STOP_F_NUMBERS
-
-        decimal = float(f"{first}.{second}")
-        if decimal != int(decimal) and decimal in THIRD_STOP_F_NUMBERS:
-            return (f"{value!r} is ambiguous: f/{decimal:g} is written {decimal:g} (a decimal point); for the two "
-                    f"f-numbers f/{first} and f/{second} write f{first},f{second}")
-        return None
+        return units.decimal_comma_f_number(value, first, second)
 
 
 class TimeType(_ListType):
@@ -143,7 +116,7 @@ class TimeType(_ListType):
     valid = "> 0 s (written 1/250, 0.5, 2s, 1m30s)"
 
     def parse(self, text: str) -> float:
-        return parse_time(text)
+        return units.parse_time(text)
 
 
 class NumberType(_ListType):
@@ -165,50 +138,56 @@ class NumberType(_ListType):
         return self.low <= value <= self.high
 
 
-TILT_MAX = 89.0
-
-
-class AngleType(click.ParamType):
-    """Angles in degrees: ``3``, ``3deg``, ``3°``, ``-2.5``; comma-separated lists; |θ| < 89°."""
+class AngleType(_ListType):
+    """Angles in degrees: ``3``, ``3deg``, ``3°``, ``-2.5``; comma-separated lists (:func:`units.parse_angle`)."""
 
     name = "angle"
+    parse = staticmethod(units.parse_angle)
+    bounds = ranges.TILT_DEG
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
-        if isinstance(value, list):
+    def check(self, value: float) -> bool:
+        return True  # parse_angle checks the range
+
+
+class Parsed(click.ParamType):
+    """One value read by a parser of :mod:`camtool.core.units`, which also checks its range."""
+
+    def __init__(self, name: str, parse: Callable[[str], Any], done: type = float,
+                 bounds: tuple[float, float] | None = None) -> None:
+        self.name, self.parse, self.done, self.bounds = name, parse, done, bounds  # bounds: those parse checks
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if isinstance(value, self.done):  # a default or a value already converted
             return value
-        out = []
-        for item in str(value).split(","):
-            text = item.strip().lower().replace("°", "").replace("degrees", "").replace("deg", "").strip()
-            try:
-                number = float(text)
-            except ValueError:
-                self.fail(f"{item.strip()!r} is not an angle (examples: 3, 3deg, 3°, -2.5)", param, ctx)
-            if not (abs(number) <= TILT_MAX and math.isfinite(number)):
-                self.fail(f"{item.strip()} is outside the valid range: -{TILT_MAX:g}° to {TILT_MAX:g}°", param, ctx)
-            out.append(number)
-        return out
-
-
-class PointType(click.ParamType):
-    """A point of the scene, ``DIST@HEIGHT``: distance along the line of sight, height above the lens (metres)."""
-
-    name = "DIST@HEIGHT"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, float]:
-        if isinstance(value, tuple):
-            return value
-        text = str(value).strip()
-        if text.count("@") != 1:
-            self.fail(f"{text!r} is not a point: write DIST@HEIGHT, e.g. 3m@-1.6m (1.6 m below the lens)", param, ctx)
-        left, right = (part.strip() for part in text.split("@"))
         try:
-            distance = parse_length(left, "m")
-            height = (-1.0 if right.startswith("-") else 1.0) * parse_length(right.lstrip("+-") or "x", "m")
+            return self.parse(str(value))
         except UnitError as error:
-            self.fail(f"{text}: {error}", param, ctx)
-        if not (distance > 0 and math.isfinite(distance) and math.isfinite(height)):
-            self.fail(f"{text} is outside the valid range: a finite distance > 0 and a finite height", param, ctx)
-        return distance, height
+            self.fail(str(error), param, ctx)
+
+
+def PointType() -> Parsed:
+    """A point of the scene, ``DIST@HEIGHT``: distance along the line of sight, height above the lens (metres)."""
+    return Parsed("DIST@HEIGHT", units.parse_point, tuple)
+
+
+def ToleranceType() -> Parsed:
+    """A relative tolerance written ``1%`` or ``0.01``: above 0 and below 1 (100 %)."""
+    return Parsed("tolerance", units.parse_tolerance, bounds=ranges.TOLERANCE)
+
+
+def WavelengthType() -> Parsed:
+    """A wavelength in nm: ``550``, ``550nm`` or ``0.55um``; valid 200 to 2000 nm."""
+    return Parsed("wavelength", units.parse_wavelength, bounds=ranges.WAVELENGTH_NM)
+
+
+def SignedLengthType() -> Parsed:
+    """A length of either sign in mm (``-12``, ``3.5mm``, ``-1cm``), e.g. a hiatus."""
+    return Parsed("length", units.parse_signed_length)
+
+
+def PupilMagnificationType() -> Parsed:
+    """Pupil magnification P = exit/entrance pupil diameter, within ``ranges.PUPIL_MAGNIFICATION``."""
+    return Parsed("ratio", units.parse_pupil_magnification, bounds=ranges.PUPIL_MAGNIFICATION)
 
 
 class CriterionType(click.ParamType):
@@ -220,91 +199,15 @@ class CriterionType(click.ParamType):
         self.words = words
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from camtool.core.units import parse_criterion
         from camtool.dof.wave import Criterion
 
         if isinstance(value, Criterion) or (isinstance(value, str) and value.strip().lower() in self.words):
             return value if isinstance(value, Criterion) else value.strip().lower()
         try:
-            return Criterion(*parse_criterion(str(value)))
+            return Criterion(*units.parse_criterion(str(value)))
         except UnitError as error:
             words = f" (or {' or '.join(self.words)})" if self.words else ""
             self.fail(f"{error}{words}", param, ctx)
-
-
-class ToleranceType(click.ParamType):
-    """A relative tolerance written ``1%`` or ``0.01``; valid above 0 and below 1 (100 %)."""
-
-    name = "tolerance"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        text = str(value).strip()
-        try:
-            number = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
-        except ValueError:
-            self.fail(f"{value!r} is not a tolerance (examples: 1%, 0.5%, 0.01)", param, ctx)
-        if not 0.0 < number < 1.0:
-            self.fail(f"{text} is outside the valid range: above 0 and below 100 % (1 % = 0.01)", param, ctx)
-        return number
-
-
-class WavelengthType(click.ParamType):
-    """A wavelength in nm: ``550``, ``550nm`` or ``0.55um``; valid 200 to 2000 nm."""
-
-    name = "wavelength"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        text = str(value).strip().lower()
-        try:
-            nm = float(text[:-2]) if text.endswith("nm") else parse_length(text, "mm") * 1e6 \
-                if any(text.endswith(u) for u in ("um", "µm", "mm")) else float(text)
-        except (ValueError, UnitError):
-            self.fail(f"{value!r} is not a wavelength (examples: 550, 550nm, 0.55um)", param, ctx)
-        if not (200.0 <= nm <= 2000.0 and math.isfinite(nm)):
-            self.fail(f"{value} is outside the valid range: 200 to 2000 nm", param, ctx)
-        return nm
-
-
-class SignedLengthType(click.ParamType):
-    """A length of either sign in mm (``-12``, ``3.5mm``, ``-1cm``), e.g. a hiatus."""
-
-    name = "length"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        text = str(value).strip()
-        sign = -1.0 if text.startswith("-") else 1.0
-        try:
-            mm = sign * parse_length(text.lstrip("+-"), "mm")
-        except UnitError as error:
-            self.fail(str(error), param, ctx)
-        if not math.isfinite(mm):
-            self.fail(f"{text} is outside the valid range: a finite length in mm, either sign", param, ctx)
-        return mm
-
-
-class PupilMagnificationType(click.ParamType):
-    """Pupil magnification P = exit/entrance pupil diameter, within ``ranges.PUPIL_MAGNIFICATION``."""
-
-    name = "ratio"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        try:
-            number = float(str(value).strip())
-        except ValueError:
-            self.fail(f"{value!r} is not a number (examples: 0.6, 1, 2.5)", param, ctx)
-        low, high = ranges.PUPIL_MAGNIFICATION
-        if not low <= number <= high:
-            self.fail(f"{value} is outside the valid range: {low:g} to {high:g} (exit over entrance pupil diameter)",
-                      param, ctx)
-        return number
 
 
 def flatten(values: Iterable[list[float] | float] | None) -> list[float]:

@@ -62,6 +62,15 @@ FRAME_RATE_FPS = (0.01, 100_000.0)
 
 SQUEEZE = (1.0, 4.0)
 """An anamorphic lens's horizontal squeeze factor (1.3, 1.5, 1.8 and 2 are the usual ones; 1 is spherical)."""
+WAVELENGTH_NM = (200.0, 2000.0)
+"""A wavelength of light in nm, as ``--wavelength`` takes it: near ultraviolet to near infrared."""
+
+TILT_DEG = (-89.0, 89.0)
+"""A lens tilt or swing in degrees from the film plane (at 90° the plane of focus would be the axis)."""
+
+TOLERANCE = (0.0, math.nextafter(1.0, 0.0))
+"""A relative tolerance of ``--model auto``: above 0 and below 1 (100 %), both ends open."""
+
 MTF_LEVEL = (0.05, 0.95)
 """A contrast level of a criterion ``mtf:LEVEL@FREQ``: below 5 % the first crossing of a defocused MTF is ill-defined."""
 

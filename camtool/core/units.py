@@ -297,3 +297,151 @@ def parse_criterion(text: str) -> tuple[float, float | None]:
 
 
 _CRITERION = re.compile(rf"^\s*mtf\s*:\s*({_NUMBER})\s*(%?)\s*@\s*(coc|{_NUMBER})\s*(?:lp/mm)?\s*$", re.IGNORECASE)
+
+
+def _bounded(text: str, number: float, bounds: tuple[float, float], unit: str, what: str = "") -> float:
+    """``number`` if it is within ``bounds`` (NaN never), else the one-line range error naming ``text``."""
+    from camtool.core.ranges import describe, in_range
+
+    if not in_range(number, bounds):
+        raise UnitError(f"{text} is outside the valid range: {describe(bounds, unit)}{what}")
+    return number
+
+
+def parse_angle(text: str | float) -> float:
+    """An angle in degrees, ``3``, ``3deg``, ``3°`` or ``-2.5``, within :data:`camtool.core.ranges.TILT_DEG`.
+
+    >>> parse_angle("3°"), parse_angle("-2.5deg")
+    (3.0, -2.5)
+    """
+    from camtool.core.ranges import TILT_DEG
+
+    shown = str(text).strip()
+    bare = shown.lower().replace("°", "").replace("degrees", "").replace("deg", "").strip()
+    try:
+        number = float(bare)
+    except ValueError:
+        raise UnitError(f"{shown!r} is not an angle (examples: 3, 3deg, 3°, -2.5)") from None
+    if not TILT_DEG[0] <= number <= TILT_DEG[1]:
+        raise UnitError(f"{shown} is outside the valid range: {TILT_DEG[0]:g}° to {TILT_DEG[1]:g}°")
+    return number
+
+
+def parse_tolerance(text: str | float) -> float:
+    """A relative tolerance written ``1%`` or ``0.01``, within :data:`camtool.core.ranges.TOLERANCE`.
+
+    >>> parse_tolerance("1%"), parse_tolerance("0.005")
+    (0.01, 0.005)
+    """
+    from camtool.core.ranges import TOLERANCE
+
+    shown = str(text).strip()
+    try:
+        number = float(shown[:-1]) / 100.0 if shown.endswith("%") else float(shown)
+    except ValueError:
+        raise UnitError(f"{text!r} is not a tolerance (examples: 1%, 0.5%, 0.01)") from None
+    if not TOLERANCE[0] < number <= TOLERANCE[1]:
+        raise UnitError(f"{shown} is outside the valid range: above 0 and below 100 % (1 % = 0.01)")
+    return number
+
+
+def parse_wavelength(text: str | float) -> float:
+    """A wavelength in nm, ``550``, ``550nm`` or ``0.55um``, within :data:`camtool.core.ranges.WAVELENGTH_NM`.
+
+    >>> parse_wavelength("550"), parse_wavelength("0.55um")
+    (550.0, 550.0)
+    """
+    from camtool.core.ranges import WAVELENGTH_NM
+
+    shown = str(text).strip().lower()
+    try:
+        nm = float(shown[:-2]) if shown.endswith("nm") else parse_length(shown, "mm") * 1e6 \
+            if any(shown.endswith(u) for u in ("um", "µm", "mm")) else float(shown)
+    except (ValueError, UnitError):
+        raise UnitError(f"{text!r} is not a wavelength (examples: 550, 550nm, 0.55um)") from None
+    return _bounded(str(text), nm, WAVELENGTH_NM, "nm")
+
+
+def parse_signed_length(text: str | float) -> float:
+    """A length of either sign in mm (``-12``, ``3.5mm``, ``-1cm``), e.g. a lens's hiatus.
+
+    >>> parse_signed_length("-1cm"), parse_signed_length("3.5")
+    (-10.0, 3.5)
+    """
+    shown = str(text).strip()
+    mm = (-1.0 if shown.startswith("-") else 1.0) * parse_length(shown.lstrip("+-"), "mm")
+    if not math.isfinite(mm):
+        raise UnitError(f"{shown} is outside the valid range: a finite length in mm, either sign")
+    return mm
+
+
+def parse_pupil_magnification(text: str | float) -> float:
+    """A pupil magnification (exit over entrance pupil diameter) within ``ranges.PUPIL_MAGNIFICATION``.
+
+    >>> parse_pupil_magnification("0.6")
+    0.6
+    """
+    from camtool.core.ranges import PUPIL_MAGNIFICATION
+
+    try:
+        number = float(str(text).strip())
+    except ValueError:
+        raise UnitError(f"{text!r} is not a number (examples: 0.6, 1, 2.5)") from None
+    return _bounded(str(text), number, PUPIL_MAGNIFICATION, "", " (exit over entrance pupil diameter)")
+
+
+def parse_point(text: str) -> tuple[float, float]:
+    """A point of a scene, ``DIST@HEIGHT`` in metres by default: (distance along the sight line, height) in mm.
+
+    >>> parse_point("3m@-1.6m")
+    (3000.0, -1600.0)
+    """
+    shown = str(text).strip()
+    if shown.count("@") != 1:
+        raise UnitError(f"{shown!r} is not a point: write DIST@HEIGHT, e.g. 3m@-1.6m (1.6 m below the lens)")
+    left, right = (part.strip() for part in shown.split("@"))
+    try:
+        distance = parse_length(left, "m")
+        height = (-1.0 if right.startswith("-") else 1.0) * parse_length(right.lstrip("+-") or "x", "m")
+    except UnitError as error:
+        raise UnitError(f"{shown}: {error}") from None
+    if not (distance > 0 and math.isfinite(distance) and math.isfinite(height)):
+        raise UnitError(f"{shown} is outside the valid range: a finite distance > 0 and a finite height")
+    return distance, height
+
+
+_DIGITS = re.compile(r"^[0-9]+$")
+_DIGITS_UNIT = re.compile(r"^([0-9]+)\s*([a-zA-Zµ\"']+)$")
+
+F_NUMBER_THIRD_STOPS = (0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.4, 1.6, 1.8, 2.0, 2.2, 2.5, 2.8, 3.2, 3.5, 4.0,
+                        4.5, 5.0, 5.6, 6.3, 7.1, 8.0, 9.0, 10.0, 11.0, 13.0, 14.0, 16.0, 18.0, 20.0,
+                        22.0, 25.0, 29.0, 32.0, 36.0, 40.0, 45.0, 51.0, 57.0, 64.0)
+"""Nominal f-numbers in third stops, 6·log2(N) from -3 (f/0.7) to 36 (f/64): the marks of lens barrels and camera
+displays (Wikipedia, "F-number", table "Standard full-stop, half-stop and one-third-stop f-number scales")."""
+
+
+def decimal_comma_length(value: str, first: str, second: str, unit: str) -> str | None:
+    """The error for ``3,5ft``: a bare whole number, then digits with a unit, reads as 3.5 ft with a decimal comma.
+
+    A list of two bare numbers (``-s 3,5``) stays a list: it gives a row each, in plain sight.
+    """
+    with_unit = _DIGITS_UNIT.match(second)
+    if not (_DIGITS.match(first) and with_unit):
+        return None
+    shown = "µm" if unit == "um" else unit
+    return (f"{value!r} is ambiguous: {first}.{with_unit.group(1)} {with_unit.group(2)} is written {first}.{second} "
+            f"(a decimal point); for the two values {first} {shown} and {second} write {first}{shown},{second}")
+
+
+def decimal_comma_f_number(value: str, first: str, second: str) -> str | None:
+    """The error for ``2,8`` or ``5,6``: two bare digit strings that read as a third-stop f-number.
+
+    ``8,11`` and ``4,8`` (no third stop) stay lists of two f-numbers.
+    """
+    if not (_DIGITS.match(first) and _DIGITS.match(second)) or len(first) + len(second) > 4:
+        return None  # a third-stop f-number is at most two digits either side of the comma
+    decimal = float(f"{first}.{second}")
+    if decimal != int(decimal) and decimal in F_NUMBER_THIRD_STOPS:
+        return (f"{value!r} is ambiguous: f/{decimal:g} is written {decimal:g} (a decimal point); for the two "
+                f"f-numbers f/{first} and f/{second} write f{first},f{second}")
+    return None

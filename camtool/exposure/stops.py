@@ -23,6 +23,7 @@ from typing import Any, NamedTuple
 
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.errors import DomainError
+from camtool.core.units import F_NUMBER_THIRD_STOPS
 
 STEPS_PER_STOP = {"full": 1, "half": 2, "third": 3}
 """Divisions of a stop for each named step."""
@@ -43,13 +44,8 @@ class Snapped(NamedTuple):
     error_stops: Any
 
 
-# Nominal f-numbers, third stops, index j = 6·log2(N) from j = -3 (f/0.7) to 36 (f/64).
-# Marked values from lens barrels and camera displays; see e.g. Wikipedia, "F-number",
-# table "Standard full-stop, half-stop and one-third-stop f-number scales".
-_F_THIRD = (0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.4, 1.6, 1.8, 2.0, 2.2, 2.5, 2.8, 3.2, 3.5, 4.0,
-            4.5, 5.0, 5.6, 6.3, 7.1, 8.0, 9.0, 10.0, 11.0, 13.0, 14.0, 16.0, 18.0, 20.0,
-            22.0, 25.0, 29.0, 32.0, 36.0, 40.0, 45.0, 51.0, 57.0, 64.0)
-# Half stops, j = 4·log2(N) from j = -2 (f/0.7) to 24 (f/64); same source.
+_F_THIRD = F_NUMBER_THIRD_STOPS
+# Half stops, j = 4·log2(N) from j = -2 (f/0.7) to 24 (f/64); the source of F_NUMBER_THIRD_STOPS.
 _F_HALF = (0.7, 0.84, 1.0, 1.2, 1.4, 1.7, 2.0, 2.4, 2.8, 3.3, 4.0, 4.8, 5.6, 6.7, 8.0, 9.5,
            11.0, 13.0, 16.0, 19.0, 22.0, 27.0, 32.0, 38.0, 45.0, 54.0, 64.0)
 
