@@ -17,11 +17,10 @@ from __future__ import annotations
 
 import functools
 import json
-import re
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import click
 
@@ -41,10 +40,11 @@ from camtool.cli.options import (
     squeeze_option,
     stack,
 )
-from camtool.cli.params import FNumberType, LengthType, NumberType, flatten
+from camtool.cli.params import FNumberType, LengthType, NumberType, Parsed, flatten
 from camtool.core import ranges
 from camtool.core.errors import InputError
 from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
+from camtool.core.units import parse_figure_size
 from camtool.dof.ladder import focal_lengths, model_choices
 from camtool.plans.chart import (
     IMAGE_FORMATS,
@@ -77,34 +77,14 @@ EXAMPLES = {
 """The charts committed under docs/charts/ and shown in the README, by kind."""
 
 
-class SizeType(click.ParamType):
-    """A figure size ``WxH`` in inches (``8x5``), or with a unit: ``20x12cm``, ``160x100mm``, ``8x5in``."""
-
-    name = "size"
-    _pattern = re.compile(r"^\s*(\d+(?:\.\d*)?)\s*[x×X]\s*(\d+(?:\.\d*)?)\s*(in|cm|mm)?\s*$")
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, float]:
-        if isinstance(value, tuple):
-            return value
-        match = self._pattern.match(str(value))
-        if not match:
-            self.fail(f"{value!r} is not a size (examples: 8x5, 8x5in, 20x12cm)", param, ctx)
-        per_inch = {"in": 1.0, None: 1.0, "cm": 2.54, "mm": 25.4}[match.group(3)]
-        w, h = float(match.group(1)) / per_inch, float(match.group(2)) / per_inch
-        low, high = ranges.CHART_SIDE_IN
-        if not (low <= w <= high and low <= h <= high):
-            self.fail(f"{value} is outside the valid range: {low:g} to {high:g} inches a side", param, ctx)
-        return w, h
-
-
 chart_output_options = stack(
     click.option("-o", "--output", required=True, metavar="FILE",
                  help="The chart file: its extension (.png, .svg, .pdf) picks the format; - writes to standard "
                       "output (with --image-format)."),
     click.option("--image-format", type=click.Choice(IMAGE_FORMATS),
                  help="png, svg or pdf; needed with -o -, otherwise taken from the file's extension."),
-    click.option("--size", type=SizeType(), metavar="WxH", help="Figure size in inches (8x5) or with a unit "
-                 "(20x12cm). Default: 8x5 in; for card, the --paper size."),
+    click.option("--size", type=Parsed("size", parse_figure_size, tuple), metavar="WxH",
+                 help="Figure size in inches (8x5) or with a unit (20x12cm). Default: 8x5 in; for card, the --paper size."),
     click.option("--dpi", type=NumberType(*ranges.CHART_DPI), default="150", show_default=True,
                  help="Pixels per inch of a PNG (SVG and PDF are vector); a PNG has at most 144 megapixels "
                       "(40x40 in at 300 dpi)."),
@@ -143,6 +123,7 @@ def chart_command(name: str, card: bool = False) -> Callable[[Callable[..., Any]
             _check_targets(output, data_file)
             plot = plotting(ctx)
             params = apply_equipment(ctx, params)
+            scene = _scene(ctx, params)
             width, height = figure_size(size_in=size, paper=params.get("paper") or "a6" if card else None)
             if fmt == "png":
                 _inputs(ctx, lambda: check_pixels(size_in=(width, height), dpi=resolution))
@@ -152,7 +133,7 @@ def chart_command(name: str, card: bool = False) -> Callable[[Callable[..., Any]
             # trade times every rung, traced ones included: long work, shown on a terminal
             with library_errors(ctx), progress(f"camtool chart {name}: models", total=None if name == "trade" else 0) \
                     as bar, reporting(bar.advance):
-                data = _inputs(ctx, lambda: compute(ctx, **params))
+                data = _inputs(ctx, lambda: compute(ctx, scene, **params))
             figure = plot.draw(data, width, height, params["units"])
             notes: list[str] = []
             image = plot.to_bytes(figure, fmt, resolution, notes)
@@ -201,11 +182,33 @@ def _inputs(ctx: click.Context, decide: Callable[[], Any]) -> Any:
         raise bad_parameter(ctx, error) from None
 
 
-def _coc(ctx: click.Context, coc: Any, coc_rule: Any, chosen: Any, pixel_pitch: Any) -> tuple[float, list[float], str]:
-    cocs, origin = resolve_coc(ctx, list(coc or ()), coc_rule, chosen, pixel_pitch)
+class Scene(NamedTuple):
+    """A chart's sensor and circle of confusion, resolved as ``camtool dof`` resolves them, and its footer."""
+
+    sensor: Any
+    coc_mm: float
+    cocs: list[float]
+    origin: str
+    distance_from: str | None
+
+    def footer(self, model: str | None = None, extra: str = "", data: Any = None) -> str:
+        """The footer line of the chart's scene (the rungs that answered, from ``data``, when given)."""
+        model = " / ".join(data.extra["models"]) if data is not None else model
+        return footer(model, self.cocs, self.origin, self.sensor.label, self.distance_from, extra)
+
+
+def _scene(ctx: click.Context, params: dict[str, Any]) -> Scene | None:
+    """The sensor (and CoC) of a chart with those options, taken out of ``params``."""
+    if "sensor" not in params:
+        return None
+    chosen = resolve_sensor(ctx, params.pop("sensor"), params.pop("crop"), params["preset_files"])
+    if "coc" not in params:
+        return Scene(chosen, 0.0, [], "", None)
+    cocs, origin = resolve_coc(ctx, list(params.pop("coc") or ()), params.pop("coc_rule"), chosen,
+                               params.pop("pixel_pitch"))
     if len(cocs) > 1:
         raise click.UsageError("Option '--coc' takes one value here.", ctx)
-    return cocs[0], cocs, origin
+    return Scene(chosen, cocs[0], cocs, origin, params.get("distance_from"))
 
 
 @click.group("chart", context_settings={"help_option_names": ["-h", "--help"]})
@@ -247,20 +250,17 @@ def chart() -> None:
               help="Depth-of-field model, as for camtool dof (auto: the cheapest the scene needs within --tolerance).")
 @model_options
 @squeeze_option
-def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high, sensor, crop, coc, coc_rule,
-              pixel_pitch, distance_from, model, tolerance, diffraction, wavelength, pupil_mag, hiatus,
-              prescription_file, squeeze, units, preset_files) -> Any:
+def chart_dof(ctx: click.Context, scene: Scene, focal_length, f_number, exact_stops, low, high, distance_from, model,
+              tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file, squeeze, units,
+              preset_files) -> Any:
     """Near and far limits against focus distance (log axes), one band per f-number or focal length, H marked."""
     lens = lens_data(ctx, pupil_mag, hiatus, prescription_file)
     apertures = required(ctx, f_numbers(f_number, exact_stops), "-N")
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    data = dof_chart(focal_lengths_mm=flatten(focal_length), f_numbers=apertures, coc_mm=c,
+    data = dof_chart(focal_lengths_mm=flatten(focal_length), f_numbers=apertures, coc_mm=scene.coc_mm,
                      from_mm=single(ctx, low, "--from"), to_mm=single(ctx, high, "--to"), model=model,
                      distance_from=distance_from, lens=lens, diffraction=diffraction, wavelength_nm=wavelength,
                      tolerance=tolerance, squeeze=squeeze)
-    data.scene += (f" · {squeeze:g}× anamorphic" if squeeze else "") + " · " + footer(
-        " / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    data.scene += (f" · {squeeze:g}× anamorphic" if squeeze else "") + " · " + scene.footer(data=data)
     return data
 
 
@@ -275,15 +275,15 @@ def chart_dof(ctx: click.Context, focal_length, f_number, exact_stops, low, high
 @click.option("--from", "low", type=SIZE_M, help="Nearest background distance behind the subject (default 0.1 m).")
 @click.option("--to", "high", type=SIZE_M, help="Farthest background distance behind the subject (default 100 m).")
 @sensor_options
-def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, magnification, f_number, exact_stops,
-               low, high, sensor, crop, units, preset_files) -> Any:
+def chart_blur(ctx: click.Context, scene: Scene, focal_length, subject_size, fill, fill_axis, magnification, f_number,
+               exact_stops, low, high, units, preset_files) -> Any:
     """Background blur disc (mm and % of the frame width) against distance behind the subject, framing kept.
 
     One curve per focal length, each standing where it frames the subject the
     same (camtool compose's question), or per f-number with one focal length;
     dotted lines are the blur of a background at infinity, f·m/N.
     """
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
+    chosen = scene.sensor
     return blur_chart(f_numbers=required(ctx, f_numbers(f_number, exact_stops), "-N"), sensor_width_mm=chosen.width_mm,
                       sensor_height_mm=chosen.height_mm, sensor_label=chosen.label, focal_lengths_mm=flatten(focal_length),
                       subject_size_mm=single(ctx, subject_size, "--subject-size"), fill=single(ctx, fill, "--fill"),
@@ -308,8 +308,8 @@ def chart_blur(ctx: click.Context, focal_length, subject_size, fill, fill_axis, 
               help="Wavelength for the Airy disc: 550, 550nm or 0.55um.")
 @pupil_mag_option
 @criterion_option
-def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, high, sensor, crop, coc, coc_rule,
-                   pixel_pitch, distance_from, wavelength, pupil_mag, criterion, units, preset_files) -> Any:
+def chart_aperture(ctx: click.Context, scene: Scene, focal_length, near, far, distance, low, high, distance_from,
+                   wavelength, pupil_mag, criterion, units, preset_files) -> Any:
     """Blur at the scene's near and far limits from defocus and from diffraction against f-number, optimum marked.
 
     Defocus blur (thin lens) of points at --near and --far falls as 1/N; the
@@ -324,12 +324,10 @@ def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, h
     n_low, n_high = single(ctx, low, "--from"), single(ctx, high, "--to")
     closest, farthest = single(ctx, near, "--near"), single(ctx, far, "--far")
     focus = single(ctx, distance, "-s")
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    data = aperture_chart(focal_length_mm=f, coc_mm=c, near_mm=closest, far_mm=farthest, from_f_number=n_low,
+    data = aperture_chart(focal_length_mm=f, coc_mm=scene.coc_mm, near_mm=closest, far_mm=farthest, from_f_number=n_low,
                           to_f_number=n_high, focus_mm=focus, distance_from=distance_from,
                           pupil_magnification=pupil_mag, wavelength_nm=wavelength, criterion=criterion)
-    data.scene = f"{f:g} mm · " + footer("thin", cocs, origin, chosen.label, distance_from, f"λ {wavelength:g} nm")
+    data.scene = f"{f:g} mm · " + scene.footer("thin", f"λ {wavelength:g} nm")
     return data
 
 
@@ -341,9 +339,8 @@ def chart_aperture(ctx: click.Context, focal_length, near, far, distance, low, h
 @coc_options
 @distance_plane_option
 @model_options
-def chart_trade(ctx: click.Context, focal_length, f_number, exact_stops, distance, sensor, crop, coc, coc_rule,
-                pixel_pitch, distance_from, tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file,
-                units, preset_files) -> Any:
+def chart_trade(ctx: click.Context, scene: Scene, focal_length, f_number, exact_stops, distance, distance_from,
+                tolerance, diffraction, wavelength, pupil_mag, hiatus, prescription_file, units, preset_files) -> Any:
     """Every rung of the model ladder for your scene: error against the most complete rung versus time per evaluation.
 
     The rungs the lens data allow (a prescription, from --prescription or a
@@ -356,12 +353,10 @@ def chart_trade(ctx: click.Context, focal_length, f_number, exact_stops, distanc
     f = single(ctx, required(ctx, focal, "-f"), "-f")
     n = single(ctx, required(ctx, f_numbers(f_number, exact_stops), "-N"), "-N")
     s = single(ctx, required(ctx, distance, "-s"), "-s")
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    data = trade_chart(focal_length_mm=f, f_number=n, coc_mm=c, distance_mm=s, distance_from=distance_from, lens=lens,
+    data = trade_chart(focal_length_mm=f, f_number=n, coc_mm=scene.coc_mm, distance_mm=s, distance_from=distance_from, lens=lens,
                        diffraction=diffraction, wavelength_nm=wavelength)
     shown = f"{s / 1000:.4g} m" if units == "metric" else f"{s / 304.8:.4g} ft"
-    data.scene = f"{f:.4g} mm f/{n:g} at {shown} · " + footer(None, cocs, origin, chosen.label, distance_from)
+    data.scene = f"{f:.4g} mm f/{n:g} at {shown} · " + scene.footer()
     return data
 
 
@@ -380,8 +375,8 @@ def chart_trade(ctx: click.Context, focal_length, f_number, exact_stops, distanc
 @distance_plane_option
 @click.option("--model", type=click.Choice(MODELS), default="auto", show_default=True,
               help="Depth-of-field model, as for camtool dof.")
-def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance, paper, sensor, crop, coc, coc_rule,
-               pixel_pitch, distance_from, model, units, preset_files) -> Any:
+def chart_card(ctx: click.Context, scene: Scene, focal_length, f_number, exact_stops, distance, paper, distance_from,
+               model, units, preset_files) -> Any:
     """A printable depth-of-field card for one lens: near–far limits for each focus distance and f-number.
 
     Rows are focus distances, columns f-numbers, each cell the near and far
@@ -390,11 +385,9 @@ def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance
     """
     lens = lens_data(ctx, None, None, None)
     f = single(ctx, required(ctx, focal_length, "-f"), "-f")
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    data = card_chart(focal_length_mm=f, coc_mm=c, f_numbers=flatten(f_number), exact_stops=exact_stops,
+    data = card_chart(focal_length_mm=f, coc_mm=scene.coc_mm, f_numbers=flatten(f_number), exact_stops=exact_stops,
                       distances_mm=flatten(distance), units=units, model=model, distance_from=distance_from, lens=lens)
-    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    data.scene = scene.footer(data=data)
     return data
 
 
@@ -407,8 +400,8 @@ def chart_card(ctx: click.Context, focal_length, f_number, exact_stops, distance
 @sensor_options
 @coc_options
 @distance_plane_option
-def chart_marks(ctx: click.Context, focal_length, lenses, f_number, distance, paper, sensor, crop, coc, coc_rule,
-                pixel_pitch, distance_from, units, preset_files) -> Any:
+def chart_marks(ctx: click.Context, scene: Scene, focal_length, lenses, f_number, distance, paper, distance_from, units,
+                preset_files) -> Any:
     """A printable focus-pull sheet: near and far around each focus mark, one column per lens of a set.
 
     Cells in feet and inches with --units imperial, else metres; a T-stop
@@ -426,12 +419,10 @@ def chart_marks(ctx: click.Context, focal_length, lenses, f_number, distance, pa
     sets = [(f"{v:g} mm", v, None) for v in flatten(focal_length)] + [(n, lens.focal_min_mm, None) for n, lens in found]
     n = single(ctx, required(ctx, f_numbers(f_number, False), "-N"), "-N")
     typed = flatten(f_number)[0]
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
     label = f"T{float(typed):g}" if type(typed).__name__ == "TStop" else f"f/{n:g}"
-    data = marks_chart(lenses=sets, f_number=n, coc_mm=c, marks_mm=flatten(distance), units=units,
+    data = marks_chart(lenses=sets, f_number=n, coc_mm=scene.coc_mm, marks_mm=flatten(distance), units=units,
                        distance_from=distance_from, aperture_label=label)
-    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    data.scene = scene.footer(data=data)
     return data
 
 
@@ -442,8 +433,7 @@ def chart_marks(ctx: click.Context, focal_length, lenses, f_number, distance, pa
 @coc_options
 @distance_plane_option
 @click.option("--model", type=click.Choice(MODELS), default="auto", show_default=True, help="As for camtool dof.")
-def chart_shot(ctx: click.Context, frames, sensor, crop, coc, coc_rule, pixel_pitch, distance_from, model, units,
-               preset_files) -> Any:
+def chart_shot(ctx: click.Context, scene: Scene, frames, distance_from, model, units, preset_files) -> Any:
     """The near/far envelope of a shot over its frames, from the camera's per-frame focus, focal length and stop.
 
     Each frame is what camtool dof --batch answers for that row (a T-stop
@@ -457,11 +447,9 @@ def chart_shot(ctx: click.Context, frames, sensor, crop, coc, coc_rule, pixel_pi
     except FileProblem as error:  # named as --batch names its file: the option, then the file and its problem
         raise click.ClickException(f"--frames {error}") from None
     found = apertures(shot.apertures, lens=ctx.meta.get(LENS))
-    chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    c, cocs, origin = _coc(ctx, coc, coc_rule, chosen, pixel_pitch)
-    data = shot_chart(shot=shot, f_numbers=found.f_numbers, coc_mm=c, model=model, distance_from=distance_from,
-                      lens=lens_data(ctx, None, None, None))
-    data.scene = footer(" / ".join(data.extra["models"]), cocs, origin, chosen.label, distance_from)
+    data = shot_chart(shot=shot, f_numbers=found.f_numbers, coc_mm=scene.coc_mm, model=model,
+                      distance_from=distance_from, lens=lens_data(ctx, None, None, None))
+    data.scene = scene.footer(data=data)
     return data
 
 

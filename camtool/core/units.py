@@ -445,3 +445,27 @@ def decimal_comma_f_number(value: str, first: str, second: str) -> str | None:
         return (f"{value!r} is ambiguous: f/{decimal:g} is written {decimal:g} (a decimal point); for the two "
                 f"f-numbers f/{first} and f/{second} write f{first},f{second}")
     return None
+
+
+_FIGURE_SIZE = re.compile(r"^\s*(\d+(?:\.\d*)?)\s*[x×X]\s*(\d+(?:\.\d*)?)\s*(in|cm|mm)?\s*$")
+
+
+def parse_figure_size(text: str) -> tuple[float, float]:
+    """A figure size ``WxH`` in inches (``8x5``) or with a unit (``20x12cm``, ``160x100mm``), in inches.
+
+    Each side within :data:`camtool.core.ranges.CHART_SIDE_IN`.
+
+    >>> parse_figure_size("8x5"), parse_figure_size("25.4x12.7cm")
+    ((8.0, 5.0), (10.0, 5.0))
+    """
+    from camtool.core.ranges import CHART_SIDE_IN
+
+    match = _FIGURE_SIZE.match(str(text))
+    if not match:
+        raise UnitError(f"{text!r} is not a size (examples: 8x5, 8x5in, 20x12cm)")
+    per_inch = {"in": 1.0, None: 1.0, "cm": 2.54, "mm": 25.4}[match.group(3)]
+    width, height = float(match.group(1)) / per_inch, float(match.group(2)) / per_inch
+    low, high = CHART_SIDE_IN
+    if not (low <= width <= high and low <= height <= high):
+        raise UnitError(f"{text} is outside the valid range: {low:g} to {high:g} inches a side")
+    return width, height
