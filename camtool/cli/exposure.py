@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import click
@@ -10,17 +9,11 @@ import click
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import rows_from
 from camtool.cli.options import completion, library_errors, preset_names
-from camtool.cli.params import FNumberType, NumberType, PupilMagnificationType, TimeType, _ListType, flatten
-from camtool.core import ranges
+from camtool.cli.params import FNumberType, NumberType, PupilMagnificationType, TimeType, flatten
+from camtool.core import ranges, units
 from camtool.core.units import UnitError
 from camtool.exposure.calculator import KEYS as ROW_KEYS
-from camtool.render.views.exposure import (
-    EQUIVALENT_KEYS,
-    exposure_view,
-)
-
-LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
-"""Lux in one foot-candle (one lumen per square foot; the foot is 0.3048 m exactly): 10.7639."""
+from camtool.render.views.exposure import EQUIVALENT_KEYS, exposure_view
 
 KEYS = [*ROW_KEYS, *(key for key in EQUIVALENT_KEYS if key not in ROW_KEYS)]
 """Every key a row of the command can carry: a worked-out exposure's, then what --equivalents adds."""
@@ -41,29 +34,15 @@ class ApertureType(FNumberType):
             raise UnitError(f"{text!r} is not an f-number or T-stop (examples: 8, f/8, f8, T2)") from None
 
 
-class IlluminanceType(_ListType):
-    """Illuminance in lux (a bare number, 400lx) or foot-candles (37fc)."""
+class IlluminanceType(NumberType):
+    """Illuminance in lux (a bare number, 400lx) or foot-candles (37fc): :func:`units.parse_illuminance`."""
 
     name = "illuminance"
+    parse = staticmethod(units.parse_illuminance)
 
     def __init__(self, low: float, high: float) -> None:
-        self.low, self.high = low, high
+        super().__init__(low, high)
         self.valid = f"{low:g} to {high:g} lx (written 400, 400lx or 37fc)"
-
-    def parse(self, text: str) -> float:
-        raw = str(text).strip().lower()
-        scale = 1.0
-        for unit, factor in (("lux", 1.0), ("lx", 1.0), ("fc", LUX_PER_FOOT_CANDLE)):
-            if raw.endswith(unit):
-                raw, scale = raw[: -len(unit)].strip(), factor
-                break
-        try:
-            return float(raw) * scale
-        except ValueError:
-            raise UnitError(f"{text!r} is not an illuminance (examples: 400, 400lx, 37fc)") from None
-
-    def check(self, value: float) -> bool:
-        return self.low <= value <= self.high and math.isfinite(value)
 
 
 def single(ctx: click.Context, values: Any, default: float | None = None) -> Any:

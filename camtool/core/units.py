@@ -469,3 +469,25 @@ def parse_figure_size(text: str) -> tuple[float, float]:
     if not (low <= width <= high and low <= height <= high):
         raise UnitError(f"{text} is outside the valid range: {low:g} to {high:g} inches a side")
     return width, height
+
+
+LUX_PER_FOOT_CANDLE = 1.0 / 0.09290304
+"""Lux in one foot-candle (one lumen per square foot; the foot is 0.3048 m exactly): 10.7639."""
+
+
+def parse_illuminance(text: str | float) -> float:
+    """An illuminance in lux: a bare number, ``400lx`` or ``400lux``, or foot-candles ``37fc``.
+
+    >>> parse_illuminance("400lx"), round(parse_illuminance("37fc"), 2)
+    (400.0, 398.27)
+    """
+    raw = str(text).strip().lower()
+    scale = 1.0
+    for unit, factor in (("lux", 1.0), ("lx", 1.0), ("fc", LUX_PER_FOOT_CANDLE)):
+        if raw.endswith(unit):
+            raw, scale = raw[: -len(unit)].strip(), factor
+            break
+    try:
+        return float(raw) * scale
+    except ValueError:
+        raise UnitError(f"{text!r} is not an illuminance (examples: 400, 400lx, 37fc)") from None
