@@ -27,7 +27,7 @@ import click
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, required, single
 from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import WavelengthType, criterion_option, lens_data, model_options, pupil_mag_option
+from camtool.cli.lensdata import criterion_option, lens_data, model_options, pupil_mag_option, wavelength_option
 from camtool.cli.options import (
     DISTANCE_M,
     aperture_options,
@@ -304,8 +304,7 @@ def chart_blur(ctx: click.Context, scene: Scene, focal_length, subject_size, fil
 @sensor_options
 @coc_options
 @distance_plane_option
-@click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-              help="Wavelength for the Airy disc: 550, 550nm or 0.55um.")
+@wavelength_option("for the Airy disc")
 @pupil_mag_option
 @criterion_option
 def chart_aperture(ctx: click.Context, scene: Scene, focal_length, near, far, distance, low, high, distance_from,

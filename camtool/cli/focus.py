@@ -8,7 +8,7 @@ from camtool.cli.closeup import closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import criterion_option, lens_geometry_options, pupil_and_hiatus
+from camtool.cli.lensdata import criterion_option, lens_geometry_options, pupil_and_hiatus, wavelength_option
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
@@ -19,7 +19,7 @@ from camtool.cli.options import (
     library_errors,
     sensor_options,
 )
-from camtool.cli.params import NumberType, WavelengthType, flatten
+from camtool.cli.params import NumberType, flatten
 from camtool.core import ranges
 from camtool.plans import focus as plans
 from camtool.plans.closeup import CLOSE_UP
@@ -59,8 +59,7 @@ from camtool.render.views.focus import (
 @click.option("--depth", type=LENGTH_MM, multiple=True, metavar="LENGTH",
               help="With -m: the wanted total depth of field, e.g. 0.2mm; gives the CoC (with -N) or the f-number "
                    "(with --coc).")
-@click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-              help="Wavelength for --optimum: 550, 550nm or 0.55um.")
+@wavelength_option("for --optimum")
 @criterion_option
 @closeup_options
 @sensor_options

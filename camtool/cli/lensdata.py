@@ -10,14 +10,14 @@ prescription.
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 from typing import Any
 
 import click
 
 from camtool.cli.equipment import LENS
-from camtool.cli.options import stack
-from camtool.cli.params import CriterionType, PupilMagnificationType, SignedLengthType, ToleranceType
-from camtool.cli.params import WavelengthType as WavelengthType  # where the commands import it
+from camtool.cli.options import F, stack
+from camtool.cli.params import CriterionType, PupilMagnificationType, SignedLengthType, ToleranceType, WavelengthType
 from camtool.dof.ladder import LensData as LensData
 from camtool.plans import equipment
 
@@ -44,6 +44,12 @@ def lens_data(ctx: click.Context, pupil_mag: float | None = None, hiatus: float 
         raise
 
 
+def wavelength_option(use: str = "") -> Callable[[F], F]:
+    """``--wavelength`` in nm (``use``: what it is for, e.g. "for --diffraction")."""
+    return click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
+                        help=f"Wavelength{' ' + use if use else ''}: 550, 550nm or 0.55um.")
+
+
 pupil_mag_option = click.option(
     "--pupil-mag", "pupil_mag", type=PupilMagnificationType(), metavar="P",
     help="Pupil magnification P of the lens (exit/entrance pupil diameter; 1 for a thin lens).")
@@ -59,8 +65,7 @@ diffraction_options = stack(
                  help="Add the Airy disc 2.44·λ·N·(1 + m/P) to the blur in quadrature (usable CoC "
                       "√(c² − airy²)); under auto the wave model where it exceeds c/√2; says so when nothing "
                       "can be sharp."),
-    click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-                 help="Wavelength for --diffraction: 550, 550nm or 0.55um."),
+    wavelength_option("for --diffraction"),
 )
 """``--diffraction`` and ``--wavelength``."""
 

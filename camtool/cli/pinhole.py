@@ -6,7 +6,7 @@ import click
 
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.equipment import resolve_sensor
-from camtool.cli.lensdata import WavelengthType
+from camtool.cli.lensdata import wavelength_option
 from camtool.cli.options import DISTANCE_M, FOCAL_MM, library_errors, sensor_options
 from camtool.cli.params import NumberType, one_value
 from camtool.core import ranges
@@ -21,8 +21,7 @@ from camtool.render.views.pinhole import COLUMNS, KEYS
               help="Subject distance from the pinhole (bare numbers are metres).")
 @click.option("--contrast", type=NumberType(*ranges.MTF_LEVEL), default=DEFAULT_LEVEL, show_default=True, callback=one_value,
               help="The MTF level the optimum resolves the finest detail at (0.5: MTF50).")
-@click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-              help="Wavelength: 550, 550nm or 0.55um.")
+@wavelength_option()
 @click.option("--ev100", type=NumberType(-10, 25), default=15.0, show_default=True, callback=one_value,
               help="Scene brightness for the exposure time (15: sunny, the sunny-16 rule).")
 @click.option("--iso", type=NumberType(1, 1e7), default=100.0, show_default=True, callback=one_value, help="ISO speed.")

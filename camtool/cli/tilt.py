@@ -10,7 +10,7 @@ import click
 from camtool.cli.command import Output, camtool_command
 from camtool.cli.common import f_numbers
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import hiatus_option, lens_data, pupil_mag_option
+from camtool.cli.lensdata import hiatus_option, lens_data, pupil_mag_option, wavelength_option
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
@@ -22,7 +22,7 @@ from camtool.cli.options import (
     param_named,
     sensor_options,
 )
-from camtool.cli.params import AngleType, PointType, WavelengthType, flatten
+from camtool.cli.params import AngleType, PointType, flatten
 from camtool.plans.tilt import KEYS
 from camtool.render.columns import Column
 from camtool.render.views.common import footer
@@ -56,8 +56,7 @@ from camtool.render.views.tilt import AT_COLUMNS, COLUMNS, MODEL_COLUMN, NEED_CO
                    "film); gives the f-number that needs (metres, e.g. 0.5).")
 @click.option("--optimum", is_flag=True, help="With --half-depth: also the f-number that balances the wedge's defocus "
               "blur against diffraction, and the blur there.")
-@click.option("--wavelength", type=WavelengthType(), default="550", show_default=True, metavar="NM",
-              help="Wavelength for --optimum: 550, 550nm or 0.55um.")
+@wavelength_option("for --optimum")
 @sensor_options
 @coc_options
 @distance_plane_option
