@@ -24,20 +24,9 @@ from camtool.cli.params import LengthType, NumberType, flatten
 from camtool.plans import compose as plans
 from camtool.plans.cine import desqueezed_width_mm
 from camtool.plans.compose import lenses
-from camtool.render.columns import NUMBER, SMALL, Column
-from camtool.render.views.common import footer
-from camtool.render.views.compose import APERTURE_COLUMNS, COLUMNS, KEYS
+from camtool.render.views.compose import KEYS, compose_view
 
 SIZE_M = LengthType("m")
-
-
-def _plane_columns(name: str, short: str) -> list[Column]:
-    return [
-        Column(f"{name}_scale", f"{short} scale", NUMBER),
-        Column(f"{name}_width_mm", f"{short} width"),
-        Column(f"{name}_blur_mm", f"{short} blur", SMALL),
-        Column(f"{name}_blur_pct", f"{short} blur %", NUMBER),
-    ]
 
 
 # No --batch: rows compare focal lengths with the first one, which a batch of unrelated scenes would not.
@@ -101,17 +90,9 @@ def compose(ctx: click.Context, focal_length, subject_size, fill, fill_axis, mag
                                frame_mm=chosen.height_mm if fill_axis == "height" else width,
                                f_number=n, coc_mm=c, distance_from=distance_from, background_mm=behind,
                                foreground_mm=before)
-    rows = rows_from(count, values)
-    shown = list(COLUMNS) + (APERTURE_COLUMNS if apertures else [])
-    shown += _plane_columns("background", "bg") if behind is not None else []
-    shown += _plane_columns("foreground", "fg") if before is not None else []
-    note = ""
-    if fmt == "table":
-        shown_m = ", ".join(f"{v:.4g}" for v in given_ms)
-        subject = (f"m = {shown_m}" if given_m is not None
-                   else f"subject {size / 1000:g} m fills {share:g} of the {fill_axis}")
-        scale = f"scale vs {focal[0]:g} mm" if behind is not None or before is not None else ""
-        note = footer("thin" if apertures else None, cocs, coc_origin, chosen.label, distance_from,
-                      " · ".join(part for part in (subject, scale, squeeze and f"{squeeze:g}× anamorphic: widths "
-                                                   "de-squeezed, blur discs vertical") if part))
-    return Output(rows, shown, KEYS, note)
+    shown, note = compose_view(apertures=bool(apertures), background=behind is not None,
+                               foreground=before is not None, table=fmt == "table", magnifications=given_ms,
+                               subject_size_mm=size, fill=share, fill_axis=fill_axis, reference_mm=focal[0], cocs=cocs,
+                               coc_origin=coc_origin, sensor_label=chosen.label, distance_from=distance_from,
+                               squeeze=squeeze)
+    return Output(rows_from(count, values), shown, KEYS, note)

@@ -20,8 +20,7 @@ from camtool.cli.options import (
 from camtool.cli.params import flatten
 from camtool.geometry.projection import PROJECTIONS
 from camtool.plans.fov import field_of_view
-from camtool.render.views.common import footer
-from camtool.render.views.fov import COLUMNS, DISTANCE_COLUMNS, DISTANCE_KEYS, KEYS
+from camtool.render.views.fov import DISTANCE_KEYS, KEYS, fov_view
 
 
 @camtool_command("fov", keys=[*KEYS, "squeeze", *DISTANCE_KEYS])
@@ -82,13 +81,6 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
                              by_magnification=bool(wanted_m), distance_from=distance_from, pupil_magnification=p,
                              hiatus_mm=delta, lens_preset=ctx.meta.get(LENS), extension_mm=extension,
                              teleconverter=teleconverter, squeeze=squeeze, projection=projection)
-    keys, columns = list(KEYS) + ["squeeze"] * (squeeze is not None), list(COLUMNS)
-    if seen.at_distance:
-        keys += DISTANCE_KEYS
-        columns += DISTANCE_COLUMNS
-    mapping = seen.values["projection"]
-    extra = " · ".join(x for x in (lens_note, "" if mapping == "rectilinear" else f"{mapping} projection") if x)
-    note = footer(None, None, "", f"{chosen.label} (crop {chosen.crop_factor:.3g})" + (
-                  f" · {squeeze:g}× anamorphic: angles of the de-squeezed frame" if squeeze else ""),
-                  distance_from if seen.at_distance else None, extra) if fmt == "table" else ""
+    columns, keys, note = fov_view(seen, table=fmt == "table", squeeze=squeeze, sensor=chosen, lens_note=lens_note,
+                                   distance_from=distance_from)
     return Output(rows_from(count, seen.values), columns, keys, note)
