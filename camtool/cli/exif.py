@@ -14,6 +14,7 @@ from typing import Any
 import click
 
 from camtool.cli.command import Output, camtool_command
+from camtool.cli.common import one_value, single
 from camtool.cli.equipment import CAMERA, LENS, open_presets, resolve_sensor
 from camtool.cli.lensdata import lens_data, model_options
 from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, file_completion, param_named, sensor_options
@@ -27,7 +28,7 @@ from camtool.render.views.exif import COLUMNS
 @click.argument("paths", nargs=-1, metavar="FILE...", shell_complete=file_completion)
 @click.option("-r", "--recursive", is_flag=True,
               help="Descend into directories given as FILE (files with an image or raw suffix, sorted).")
-@click.option("-s", "--distance", type=DISTANCE_M, default=None, metavar="LENGTH",
+@click.option("-s", "--distance", type=DISTANCE_M, default=None, metavar="LENGTH", callback=one_value,
               help="Focus distance to use instead of the recorded one: 3 (bare numbers are metres), 3m, 10ft, inf.")
 @sensor_options
 @coc_options
@@ -81,7 +82,7 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
         raise click.ClickException(str(error)) from None
     if not paths:
         raise click.UsageError("give at least one FILE (or - to read paths from standard input)", ctx)
-    distance, coc = _single(ctx, distance, "distance"), _single(ctx, coc, "coc") if coc else None
+    coc = single(ctx, coc, "--coc")
     if exiftool:
         _only_exiftool(ctx)
     names = [name for path in paths for name in (_stdin_names() if path == "-" else [path])]
@@ -151,17 +152,6 @@ def _settings(ctx: click.Context, sensor: str | None, crop: float | None, coc: f
     if prescription_file is not None:
         given["prescription"] = getattr(lens_data(ctx, prescription_file=prescription_file), "prescription", None)
     return given
-
-
-def _single(ctx: click.Context, value: Any, name: str) -> float | None:
-    """The one value of a length option (a list type: ``3m`` parses as [3000.0]); a list is an error here."""
-    from camtool.cli.params import flatten
-
-    values = flatten(value if isinstance(value, (list, tuple)) and value and isinstance(value[0], list)
-                     else [value] if value is not None else None)
-    if len(values) > 1:
-        raise click.BadParameter(f"one value per run here, not {len(values)}", ctx=ctx, param=param_named(ctx, name))
-    return values[0] if values else None
 
 
 def _only_exiftool(ctx: click.Context) -> None:

@@ -28,6 +28,7 @@ EXTENSION_MM = LengthType("mm", bounds=ranges.EXTENSION_MM)
 FOCAL_MM = LengthType("mm", bounds=ranges.FOCAL_LENGTH_MM)
 COC_MM = LengthType("mm", bounds=ranges.COC_MM)
 DISTANCE_M = LengthType("m", allow_inf=True, bounds=ranges.DISTANCE_MM)
+FINITE_M = LengthType("m", bounds=ranges.DISTANCE_MM)
 PIXEL_PITCH_UM = LengthType("um", bounds=(ranges.PIXEL_PITCH_UM[0] / 1000, ranges.PIXEL_PITCH_UM[1] / 1000))
 
 # Library parameter name -> click parameter name, for error messages.

@@ -2,24 +2,21 @@
 
 from __future__ import annotations
 
-import math
-from typing import Any
-
 import click
 
 from camtool.cli.command import Output, camtool_command
-from camtool.cli.common import f_numbers
+from camtool.cli.common import f_numbers, one_value
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
 from camtool.cli.lensdata import hiatus_option, lens_data, pupil_mag_option, wavelength_option
 from camtool.cli.options import (
     DISTANCE_M,
+    FINITE_M,
     LENGTH_MM,
     aperture_options,
     coc_options,
     distance_plane_option,
     focal_option,
     library_errors,
-    param_named,
     sensor_options,
 )
 from camtool.cli.params import AngleType, PointType, flatten
@@ -48,10 +45,10 @@ from camtool.render.views.tilt import AT_COLUMNS, COLUMNS, MODEL_COLUMN, NEED_CO
               "distance along the lens axis (rear principal point to film, mm).")
 @click.option("--hyperfocal", is_flag=True, help="Focus so that the far limit of the wedge is parallel to the line "
               "of sight (or the lens axis with --along axis): sharp from the near limit plane to the horizon.")
-@click.option("--at", "at", type=DISTANCE_M, metavar="DIST",
+@click.option("--at", "at", type=FINITE_M, metavar="DIST", callback=one_value,
               help="Also give the wedge's extent above and below the plane of focus (parallel to the film) at "
                    "this distance along the line of sight, e.g. 20m.")
-@click.option("--half-depth", type=DISTANCE_M, metavar="LENGTH",
+@click.option("--half-depth", type=FINITE_M, metavar="LENGTH", callback=one_value,
               help="Wanted extent of the wedge on either side of the plane of focus at --at (parallel to the "
                    "film); gives the f-number that needs (metres, e.g. 0.5).")
 @click.option("--optimum", is_flag=True, help="With --half-depth: also the f-number that balances the wedge's defocus "
@@ -106,8 +103,7 @@ def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, h
                 "focus_mm": flatten(distance), "image_distance_mm": flatten(image_distance), "hyperfocal": hyperfocal}
     with library_errors(ctx):  # in this order: the movement and focus, each option's value, the wedge, the lens, equipment
         plan.check_question(**question)
-        question.update(at_mm=_single(ctx, at, "at"), half_depth_mm=_single(ctx, half_depth, "half_depth"),
-                        optimum=optimum)
+        question.update(at_mm=at, half_depth_mm=half_depth, optimum=optimum)
         plan.check_question(**question)
         data = lens_data(ctx, pupil_mag, hiatus, prescription_file)
         apertures = f_numbers(f_number, exact_stops)
@@ -126,12 +122,3 @@ def tilt(ctx: click.Context, focal_length, f_number, exact_stops, tilt, swing, h
     note = " · ".join((*answer.notes, footer(None, cocs, coc_origin, chosen.label, distance_from)))
     return Output(rows, columns, plan.KEYS, note if fmt == "table" else "")
 
-
-def _single(ctx: click.Context, values: Any, name: str) -> float | None:
-    """The one value of a length option that takes no list."""
-    flat = flatten([values]) if values else []
-    if len(flat) > 1:
-        raise click.BadParameter(f"{len(flat)} values given: give one", ctx=ctx, param=param_named(ctx, name))
-    if flat and math.isinf(flat[0]):
-        raise click.BadParameter("inf is outside the valid range: a finite distance", ctx=ctx, param=param_named(ctx, name))
-    return flat[0] if flat else None
