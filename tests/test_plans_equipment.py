@@ -98,3 +98,31 @@ def test_a_built_in_lens_with_a_range_of_apertures_answers_wide_open() -> None:
     assert equipment.lens_defaults(q3, focal_lengths=[], f_numbers=[]) == {"focal_length": 28.0, "f_number": 1.7}
     interchangeable = db.lens("nikon-z-24mm-f1.8-s")
     assert "f_number" not in equipment.lens_defaults(interchangeable, focal_lengths=[], f_numbers=[])
+
+
+DOF_INPUTS = {"focal_length": [], "f_number": [], "distance": [], "coc": [], "magnification": [], "sensor": None,
+              "distance_from": "sensor", "hiatus": None, "pupil_mag": None, "prescription_file": None}
+
+
+def test_apply_equipment_fills_from_the_scene_then_the_lens_in_that_order() -> None:
+    found = equipment.apply_equipment(scene="portrait-85", camera=None, lens=None, inputs=dict(DOF_INPUTS), database=DB)
+    assert found.values == {"f_number": 1.8, "distance": 2000.0, "focal_length": 85.0}  # the scene's, then the lens's f
+    assert (found.camera.id, found.lens.id, found.sensor) == ("sony-a7-iv", "sony-fe-85mm-f1.8", None)
+    typed = equipment.apply_equipment(scene="portrait-85", camera=None, lens=None, database=DB,
+                                      inputs={**DOF_INPUTS, "f_number": [4.0], "distance": [3000.0]})
+    assert typed.values == {"focal_length": 85.0}  # a value typed is never filled over
+
+
+def test_apply_equipment_says_when_the_value_a_lens_refuses_came_from_the_scene() -> None:
+    with pytest.raises(InputError) as caught:  # the scene's f/1.8 on an f/4 zoom
+        equipment.apply_equipment(scene="portrait-85", camera=None, lens="nikon-z-24-70mm-f4-s", database=DB,
+                                  inputs={**DOF_INPUTS, "focal_length": [50.0]})
+    assert (caught.value.param, getattr(caught.value, "scene", None)) == ("f_number", "portrait-85")
+    with pytest.raises(InputError) as typed:
+        equipment.apply_equipment(scene=None, camera=None, lens="nikon-z-24-70mm-f4-s", database=DB,
+                                  inputs={**DOF_INPUTS, "focal_length": [50.0], "f_number": [1.8]})
+    assert (typed.value.param, getattr(typed.value, "scene", None)) == ("f_number", None)
+    with pytest.raises(InputError) as hiatus:  # checked against the focal length the lens brought
+        equipment.apply_equipment(scene=None, camera=None, lens="nikon-z-24mm-f1.8-s", database=DB,
+                                  inputs={**DOF_INPUTS, "hiatus": -1000.0})
+    assert hiatus.value.param == "hiatus"

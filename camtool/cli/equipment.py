@@ -111,21 +111,13 @@ def input_errors(ctx: click.Context, preset_files: tuple[str, ...]) -> Iterator[
 
 CAMERA, LENS = "camtool.camera", "camtool.lens"  # where the resolved presets are kept in ctx.meta
 
-_LIST_PARAMS = {"focal_length", "f_number", "distance", "coc", "magnification"}
-
-
-def _empty(value: Any) -> bool:
-    return value is None or (isinstance(value, (list, tuple)) and not value)
-
-
 def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any]:
     """Resolve ``--scene``, ``--camera`` and ``--lens`` into the command's own parameters.
 
-    :func:`camtool.plans.equipment.resolve_equipment` decides what a scene
-    fills and which camera and lens are in use, :func:`~camtool.plans.equipment.lens_defaults`
-    what a lens brings, :func:`~camtool.plans.equipment.check_lens` what it refuses; this
-    puts the values in the shape of each option. The resolved camera and lens
-    are kept in ``ctx.meta`` for the sensor and lens-data helpers.
+    :func:`camtool.plans.equipment.apply_equipment` decides (what a scene
+    fills, which camera and lens are in use, what a lens brings and refuses);
+    this puts the values in the shape of each option and keeps the camera and
+    lens in ``ctx.meta`` for the sensor and lens-data helpers.
     """
     params = dict(params)
     scene_name, camera_name, lens_name = params.pop("scene", None), params.pop("camera", None), params.pop("lens", None)
@@ -133,51 +125,32 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
     ctx.meta[CAMERA] = ctx.meta[LENS] = None
     if files:
         open_presets(ctx, files)  # a --presets file that cannot be read is an error even when no preset is used
+    inputs = {name: flatten(value) if name in equipment.LIST_INPUTS else value for name, value in params.items()}
     with input_errors(ctx, files):
-        found = equipment.resolve_equipment(
-            scene=scene_name, camera=camera_name, lens=lens_name,
-            empty=[name for name in equipment.SCENE_FIELDS.values() if name in params and _empty(params[name])],
-            sensor_given="sensor" not in params or not _empty(params.get("sensor")),
-            prescription_given=params.get("prescription_file") is not None,
-            database=lambda: open_presets(ctx, files))
-        for name, value in found.filled.items():
-            _fill(ctx, params, name, value)
-        if found.sensor is not None:
-            params["sensor"] = found.sensor
-        lens = found.lens and equipment.set_member(
-            found.lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params else [])
-        ctx.meta[CAMERA], ctx.meta[LENS] = found.camera, lens
-        if lens is not None:
-            given_f = flatten(params.get("focal_length")) if "focal_length" in params else [lens.focal_min_mm]
-            brought = equipment.lens_defaults(lens, focal_lengths=given_f,
-                                              f_numbers=flatten(params.get("f_number")) if "f_number" in params else [0])
-            for name, value in brought.items():
-                if name in params:
-                    _fill(ctx, params, name, value)
-            try:
-                equipment.check_lens(lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params
-                                     else [], f_numbers=flatten(params.get("f_number")),
-                                     distances_mm=flatten(params.get("distance")),
-                                     distance_from=params.get("distance_from", "sensor"), camera=found.camera)
-            except InputError as error:
-                if error.param not in found.filled:
-                    raise
-                from camtool.cli.options import bad_parameter
+        try:
+            found = equipment.apply_equipment(scene=scene_name, camera=camera_name, lens=lens_name, inputs=inputs,
+                                              database=lambda: open_presets(ctx, files))
+        except InputError as error:
+            if getattr(error, "scene", None) is None:
+                raise
+            from camtool.cli.options import bad_parameter
 
-                text = bad_parameter(ctx, error).message  # a value the scene gave, not one typed
-                raise click.BadParameter(f"{scene_name} gives {text}", ctx=ctx, param=param_named(ctx, "scene")) from None
-        if "focal_length" in params:
-            equipment.check_hiatus(params.get("hiatus"), focal_lengths=flatten(params.get("focal_length")),
-                                   pupil_magnification=params.get("pupil_mag"))
+            text = bad_parameter(ctx, error).message
+            raise click.BadParameter(f"{scene_name} gives {text}", ctx=ctx, param=param_named(ctx, "scene")) from None
+    for name, value in found.values.items():
+        _fill(ctx, params, name, value)
+    if found.sensor is not None:
+        params["sensor"] = found.sensor
+    ctx.meta[CAMERA], ctx.meta[LENS] = found.camera, found.lens
     return params
 
 
 def _fill(ctx: click.Context, params: dict[str, Any], name: str, value: Any) -> None:
     """Put ``value`` in ``params[name]`` in the shape of its option (a list of lists for a repeatable list)."""
     option = param_named(ctx, name)
-    if name in _LIST_PARAMS and option is not None and not getattr(option, "multiple", False):
+    if name in equipment.LIST_INPUTS and option is not None and not getattr(option, "multiple", False):
         params[name] = [value]  # a list option given once (exposure's --magnification)
     else:
-        params[name] = [[value]] if name in _LIST_PARAMS else value
+        params[name] = [[value]] if name in equipment.LIST_INPUTS else value
 
 

@@ -369,6 +369,63 @@ def check_hiatus(hiatus_mm: float | None, *, focal_lengths: Sequence[float], pup
                                        f"({HIATUS_FOCAL_LENGTHS:g} × focal length) for f = {f:g} mm")
 
 
+class Applied(NamedTuple):
+    """What ``--scene``, ``--camera`` and ``--lens`` put in a command's inputs, and the presets in use."""
+
+    values: dict[str, Any]  # input name -> the value a scene or a lens brings (one number for a list input)
+    camera: Any
+    lens: Any
+    sensor: str | None  # a sensor preset's name the scene names, else None
+
+
+LIST_INPUTS = frozenset({"focal_length", "f_number", "distance", "coc", "magnification"})
+"""The inputs that take a list of values (a scene or a lens fills them with one)."""
+
+
+def apply_equipment(*, scene: str | None, camera: str | None, lens: str | None, inputs: dict[str, Any],
+                    database: Database) -> Applied:
+    """Resolve the presets named into a command's ``inputs`` (its parameters by name, a list input flat).
+
+    In this order: the scene fills the inputs left empty and names the camera
+    and lens (:func:`resolve_equipment`); a lens set gives its member for the
+    focal length (:func:`set_member`); the lens brings its focal length and
+    f-number where none is given (:func:`lens_defaults`) and refuses what it
+    cannot do (:func:`check_lens`); then the hiatus is checked against the
+    focal lengths (:func:`check_hiatus`). A refusal of a value the scene gave
+    carries ``scene`` (the scene's name) on the :class:`InputError`.
+    """
+    def empty(name: str) -> bool:
+        value = inputs.get(name)
+        return value is None or (isinstance(value, (list, tuple)) and not value)
+
+    found = resolve_equipment(scene=scene, camera=camera, lens=lens,
+                              empty=[name for name in SCENE_FIELDS.values() if name in inputs and empty(name)],
+                              sensor_given="sensor" not in inputs or not empty("sensor"),
+                              prescription_given=inputs.get("prescription_file") is not None, database=database)
+    values = dict(found.filled)
+    now = {**inputs, **{name: [v] if name in LIST_INPUTS else v for name, v in values.items()}}
+    has = {name: name in inputs for name in ("focal_length", "f_number")}
+    glass = found.lens and set_member(found.lens, focal_lengths=now["focal_length"] if has["focal_length"] else [])
+    if glass is not None:
+        brought = lens_defaults(glass, focal_lengths=now["focal_length"] if has["focal_length"] else [glass.focal_min_mm],
+                                f_numbers=now["f_number"] if has["f_number"] else [0])
+        for name, value in brought.items():
+            if name in inputs:
+                values[name] = value
+                now[name] = [value] if name in LIST_INPUTS else value
+        try:
+            check_lens(glass, focal_lengths=now["focal_length"] if has["focal_length"] else [],
+                       f_numbers=now.get("f_number") or [], distances_mm=now.get("distance") or [],
+                       distance_from=now.get("distance_from", "sensor"), camera=found.camera)
+        except InputError as error:
+            if error.param in found.filled:  # a value the scene gave, not one typed
+                error.scene = scene  # type: ignore[attr-defined]
+            raise
+    if has["focal_length"]:
+        check_hiatus(now.get("hiatus"), focal_lengths=now["focal_length"], pupil_magnification=now.get("pupil_mag"))
+    return Applied(values, found.camera, glass, found.sensor)
+
+
 PRESCRIPTION_MAX_BYTES = 1024 * 1024
 """Largest prescription file read (a 30-surface lens takes about 3 KB)."""
 
