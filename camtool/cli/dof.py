@@ -5,9 +5,7 @@ from __future__ import annotations
 import click
 
 from camtool.cli.closeup import (
-    CLOSEUP_COLUMNS,
     CLOSEUP_KEYS,
-    DIFFRACTION_COLUMNS,
     DIFFRACTION_KEYS,
     closeup_options,
     magnification_option,
@@ -32,9 +30,8 @@ from camtool.dof.ladder import focal_lengths, model_choices, model_help
 from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
 from camtool.plans.closeup import CLOSE_UP
 from camtool.plans.dof import dof_table, lens_behind_converter
-from camtool.render.views.closeup import FOCUS_COLUMN
 from camtool.render.views.common import footer
-from camtool.render.views.dof import ALL_COLUMNS, ANAMORPHIC_COLUMNS, COLUMNS, FAR_KEYS, KEYS, comparison_note, dof_footer
+from camtool.render.views.dof import FAR_KEYS, dof_view
 
 ALL_KEYS = [*FAR_KEYS, *CLOSEUP_KEYS, *DIFFRACTION_KEYS]
 MODEL_HELP = model_help()
@@ -108,22 +105,6 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
         with library_errors(ctx):
             rows = with_anamorphic(rows, squeeze=squeeze, distance_from=distance_from)
         where += f" · {squeeze:g}× anamorphic: near/far for vertical blur (f as marked), horizontal of f/{squeeze:g}"
-    if model == "all":
-        columns = list(ALL_COLUMNS)
-        if table.path == "closeup":
-            columns[4:4] = CLOSEUP_COLUMNS  # after the focus: m and the working f-number
-            if table.focus_column:
-                columns[2:2] = [FOCUS_COLUMN]
-        timed = ", focus planning included" if table.path == "closeup" else ""
-        note = comparison_note(rows, table.reference_model, timed, where) if fmt == "table" else ""
-        return Output(rows, columns, ALL_KEYS if table.path == "closeup" else FAR_KEYS, note)
-    keys = [*KEYS, *CLOSEUP_KEYS, *(DIFFRACTION_KEYS if table.path == "closeup" and diffraction else []),
-            *(ANAMORPHIC_KEYS if squeeze else [])]
-    columns = list(COLUMNS) + (ANAMORPHIC_COLUMNS if squeeze else [])
-    if table.close:
-        columns[3:3] = CLOSEUP_COLUMNS
-    if table.focus_column:
-        columns[1:1] = [FOCUS_COLUMN]
-    if table.path == "closeup" and diffraction:
-        columns[-1:-1] = DIFFRACTION_COLUMNS
-    return Output(rows, columns, keys, dof_footer(table, rows, where, CLOSE_UP) if fmt == "table" else "")
+    columns, keys, note = dof_view(table, rows, model=model, anamorphic_keys=ANAMORPHIC_KEYS if squeeze else [],
+                                   diffraction=diffraction, where=where, table_shown=fmt == "table", close_up=CLOSE_UP)
+    return Output(rows, columns, keys, note)

@@ -307,11 +307,6 @@ def _from_default(ctx: click.Context, param: click.Parameter) -> bool:
     return ctx.get_parameter_source(param.name or "") in (click.core.ParameterSource.DEFAULT, None)
 
 
-def _given(ctx: click.Context, param: click.Parameter) -> bool:
-    value = ctx.params.get(param.name or "")
-    return value not in (None, (), []) and (param.name != "distance_from" or value == "lens")
-
-
 def _typed(ctx: click.Context, param: click.Parameter) -> str:
     value = ctx.params.get(param.name or "")
     if isinstance(value, (list, tuple)):

@@ -42,6 +42,36 @@ ALL_COLUMNS = [
 ANAMORPHIC_COLUMNS = [Column("near_horizontal_mm", "near horiz."), Column("far_horizontal_mm", "far horiz.")]
 
 
+def dof_view(table: Any, rows: Any, *, model: str, anamorphic_keys: list[str], diffraction: bool, where: str,
+             table_shown: bool, close_up: float) -> tuple[list[Column], list[str], str]:
+    """(columns, keys, footer) of a depth-of-field table (a :class:`camtool.plans.dof.DofTable` answer).
+
+    ``anamorphic_keys`` are those an anamorphic lens's rows carry (none for a spherical lens).
+    """
+    from camtool.render.views.closeup import CLOSEUP_COLUMNS, CLOSEUP_KEYS, DIFFRACTION_COLUMNS, DIFFRACTION_KEYS, FOCUS_COLUMN
+
+    closeup = table.path == "closeup"
+    if model == "all":
+        columns = list(ALL_COLUMNS)
+        if closeup:
+            columns[4:4] = CLOSEUP_COLUMNS  # after the focus: m and the working f-number
+            if table.focus_column:
+                columns[2:2] = [FOCUS_COLUMN]
+        note = comparison_note(rows, table.reference_model, ", focus planning included" if closeup else "", where)
+        return columns, [*FAR_KEYS, *CLOSEUP_KEYS, *DIFFRACTION_KEYS] if closeup else FAR_KEYS, \
+            note if table_shown else ""
+    keys = [*KEYS, *CLOSEUP_KEYS, *(DIFFRACTION_KEYS if closeup and diffraction else []),
+            *anamorphic_keys]
+    columns = list(COLUMNS) + (ANAMORPHIC_COLUMNS if anamorphic_keys else [])
+    if table.close:
+        columns[3:3] = CLOSEUP_COLUMNS
+    if table.focus_column:
+        columns[1:1] = [FOCUS_COLUMN]
+    if closeup and diffraction:
+        columns[-1:-1] = DIFFRACTION_COLUMNS
+    return columns, keys, dof_footer(table, rows, where, close_up) if table_shown else ""
+
+
 def dof_footer(table: Any, rows: Any, where: str, close_up: float) -> str:
     """The sharp-zone bars and the footer: the models used, their worst estimate, the facts of the rows."""
     from camtool.render.bar import axis_range, sharp_zone_bar
