@@ -11,18 +11,14 @@ from __future__ import annotations
 import contextlib
 import math
 from collections.abc import Iterator
-from typing import Any
 
 import click
 
 from camtool.cli.common import one_value
-from camtool.cli.equipment import LENS
 from camtool.cli.options import EXTENSION_MM, _typed, param_named, stack
 from camtool.cli.params import NumberType
 from camtool.core import ranges
 from camtool.plans import closeup
-from camtool.plans.closeup import CLOSE_UP
-from camtool.render.views.closeup import CLOSEUP_COLUMNS, CLOSEUP_KEYS, DIFFRACTION_COLUMNS, DIFFRACTION_KEYS
 
 MAGNIFICATION = NumberType(*ranges.MAGNIFICATION)
 """Any magnification above 0, to 1000:1 (the formulas hold far past the tested 20:1)."""
@@ -41,16 +37,6 @@ closeup_options = stack(
     teleconverter_option,
 )
 """``--extension`` and ``--teleconverter``."""
-
-
-def has_focus_model(ctx: click.Context) -> bool:
-    """True when ``--lens`` publishes a closest focus (:func:`camtool.plans.closeup.has_focus_model`)."""
-    return closeup.has_focus_model(ctx.meta.get(LENS))
-
-
-def focus_models(ctx: click.Context) -> Any:
-    """A function focal length -> the ``--lens`` preset's internal-focus model (:func:`camtool.plans.closeup.focus_models`)."""
-    return closeup.focus_models(ctx.meta.get(LENS))
 
 
 @contextlib.contextmanager
@@ -75,16 +61,3 @@ def unreachable_errors(ctx: click.Context) -> Iterator[None]:
         raise click.BadParameter(f"{shown} is outside the valid range: {where} (another --model reaches further)",
                                  ctx=ctx, param=param_named(ctx, "magnification")) from None
 
-
-__all__ = [
-    "CLOSEUP_COLUMNS",
-    "CLOSEUP_KEYS",
-    "CLOSE_UP",
-    "DIFFRACTION_COLUMNS",
-    "DIFFRACTION_KEYS",
-    "closeup_options",
-    "focus_models",
-    "has_focus_model",
-    "magnification_option",
-    "unreachable_errors",
-]

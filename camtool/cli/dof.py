@@ -4,13 +4,7 @@ from __future__ import annotations
 
 import click
 
-from camtool.cli.closeup import (
-    CLOSEUP_KEYS,
-    DIFFRACTION_KEYS,
-    closeup_options,
-    magnification_option,
-    unreachable_errors,
-)
+from camtool.cli.closeup import closeup_options, magnification_option, unreachable_errors
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, flatten, required
 from camtool.cli.equipment import LENS, input_errors, resolve_coc, resolve_sensor
@@ -30,6 +24,7 @@ from camtool.dof.ladder import focal_lengths, model_choices, model_help
 from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
 from camtool.plans.closeup import CLOSE_UP
 from camtool.plans.dof import dof_table, lens_behind_converter
+from camtool.render.views.closeup import CLOSEUP_KEYS, DIFFRACTION_KEYS
 from camtool.render.views.common import footer
 from camtool.render.views.dof import FAR_KEYS, dof_view
 
