@@ -40,26 +40,17 @@ COMMANDS = {
     "pinhole": "camtool.cli.pinhole",
 }
 
-SUMMARIES = {
-    'fov': 'Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.',
-    'focus': 'Thin-lens focusing: image distance, extension, magnification, working f-number.',
-    'dof': 'Depth of field: near and far limits, total depth, front/rear split and hyperfocal distance.',
-    'hyperfocal': 'Hyperfocal distance: focus there and everything from the near limit to infinity is sharp.',
-    'tilt': 'Tilt and swing: the hinge line, the plane of sharp focus and the depth-of-field wedge.',
-    'compose': 'Perspective composition: where to stand with each focal length to frame the subject the same.',
-    'exposure': 'Exposure: correct a metered exposure, solve a scene, list equivalents, meter readings.',
-    'stars': 'Longest exposure before stars trail, on a fixed tripod: the 500 rule and the NPF rule.',
-    'flash': 'Flash guide numbers: give three of --gn, -s, -N, --iso and get the fourth.',
-    'equiv': 'The same picture on another format: focal length, f-number and ISO.',
-    'presets': 'List, show, validate and import presets of sensors, cameras, lenses, prescriptions, scenes and films.',
-    'completion': "Print the completion script for SHELL; load it from your shell's start-up file.",
-    'exif': 'Depth of field, angle of view and exposure of photos, from the metadata the camera wrote.',
-    'chart': 'Charts of depth of field, blur, aperture, the model ladder, a DOF card, a focus-pull sheet and a shot.',
-    'stack': 'Plan a focus stack: the frames that cover a depth, with a stated overlap.',
-    'cocmap': 'Circle of confusion (mm on the sensor) and blur radius (px) of every pixel of a depth image.',
-    'pinhole': 'Pinhole camera: the diameter that resolves the finest detail, beside the published rules.',
-}
-"""The first paragraph of each command's help, for ``camtool --help`` without importing every command."""
+def summary(name: str) -> str:
+    """The first paragraph of a command's help, read from its module's source: ``camtool --help`` imports none.
+
+    The command's function is ``def NAME(`` at the top of its module, its docstring the help click shows.
+    """
+    from pathlib import Path
+
+    spec = importlib.util.find_spec(COMMANDS[name])
+    source = Path(spec.origin if spec is not None and spec.origin else "").read_text(encoding="utf-8")
+    start = source.index('"""', source.index(f"\ndef {name}(")) + 3
+    return " ".join(source[start:source.index('"""', start)].split("\n\n")[0].split())
 
 
 def _available(name: str) -> bool:
@@ -80,12 +71,12 @@ class CamtoolGroup(click.Group):
         return command
 
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
-        """The list of commands, as click writes it, from :data:`SUMMARIES`: no command module is imported."""
+        """The list of commands, as click writes it, from each :func:`summary`: no command module is imported."""
         names = self.list_commands(ctx)
         if names:
             limit = formatter.width - 6 - max(len(name) for name in names)
             with formatter.section("Commands"):  # click shortens each summary as it would the command's help
-                formatter.write_dl([(name, click.Command(name, help=SUMMARIES[name]).get_short_help_str(limit))
+                formatter.write_dl([(name, click.Command(name, help=summary(name)).get_short_help_str(limit))
                                     for name in names])
 
     def resolve_command(self, ctx: click.Context, args: list[str]) -> Any:

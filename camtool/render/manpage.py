@@ -96,12 +96,12 @@ def key_unit(key: str) -> str:
 
 
 def output_keys(command: click.Command) -> list[str]:
-    """Every key the command can output: its declared keys, else the KEYS lists of its module, in order."""
+    """Every key the command can output: its declared keys in order, else the KEYS lists of its module."""
     import sys
 
     module = sys.modules.get(getattr(command.callback, "__module__", "") or "")
-    keys: list[str] = []
-    for name in ("KEYS", "DISTANCE_KEYS", "FORWARD_KEYS", "INVERSE_KEYS", "FIXED_KEYS", "EQUIVALENT_KEYS",
+    keys: list[str] = list(dict.fromkeys(getattr(command, "output_key_list", ())))
+    for name in () if keys else ("KEYS", "DISTANCE_KEYS", "FORWARD_KEYS", "INVERSE_KEYS", "FIXED_KEYS", "EQUIVALENT_KEYS",
                  "LIST_KEYS", "COMPARE_KEYS", "MODEL_KEYS"):
         for key in getattr(module, name, None) or ():
             if key not in keys:
