@@ -54,7 +54,7 @@ def _cases() -> list[tuple[str, str, str]]:
                 continue
             option = max(param.opts, key=len)
             bounds = _bounds(param.type)
-            values = ["0", "-1", "1e-320", "1e308", "inf"]
+            values = ["0", "-1", "1e-320", "1e308", "inf", "1_0", "\u0661\u0660"]  # 1_0: no; Arabic-Indic 10: yes
             if bounds is not None:
                 low, high = bounds
                 values += [repr(low), repr(low * (1 - 1e-6) if low else -1e-9)]

@@ -300,7 +300,7 @@ class _Batch:
                     array[index] = np.nan
                     continue
                 try:
-                    number = float(text)
+                    number = float(text) if "_" not in text else math.nan  # 1_000: no number an option takes
                 except ValueError:
                     number = math.nan
                 array[index] = number * factor if number == number else self._one(

@@ -130,7 +130,7 @@ class NumberType(_ListType):
 
     def parse(self, text: str) -> float:
         try:
-            return float(text)
+            return units.plain_number(str(text))
         except ValueError:
             raise UnitError(f"{text!r} is not a number") from None
 

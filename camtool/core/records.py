@@ -408,20 +408,29 @@ def floats(cells: Sequence[Any]) -> Any:
     pyarrow's parser reads a column of number strings several times faster;
     what it accepts it reads to the same correctly rounded value as Python's
     ``float`` (only its NaN spellings go further, and a NaN is refused by
-    every caller), and anything it refuses (spaces, ``1_000``, numbers that
-    are not strings) is read by numpy as before.
+    every caller), and anything it refuses (spaces, numbers that are not
+    strings) is read by numpy as before; ``1_000``, which Python reads and
+    the option parsers refuse, is refused here too.
 
     >>> floats(["50", "1e3", "2.5"]).tolist()
     [50.0, 1000.0, 2.5]
     """
-    import numpy as np
 
     try:
         import pyarrow as pa
         import pyarrow.compute as pc
     except ImportError:  # pragma: no cover - the test environment has the batch extra
-        return np.array(cells, dtype=float)
+        return _python_floats(cells)
     try:
         return pc.cast(pa.array(cells, pa.string()), pa.float64()).to_numpy(zero_copy_only=False, writable=True)
     except (ValueError, TypeError, pa.ArrowException):
-        return np.array(cells, dtype=float)
+        return _python_floats(cells)
+
+
+def _python_floats(cells: Sequence[Any]) -> Any:
+    """numpy's reading of the cells, but not ``1_000``: Python's digit separator is no number an option takes."""
+    import numpy as np
+
+    if any(isinstance(cell, str) and "_" in cell for cell in cells):
+        raise ValueError("a digit separator '_' in a number")
+    return np.array(cells, dtype=float)

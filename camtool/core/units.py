@@ -42,6 +42,17 @@ class UnitError(CamtoolError, ValueError):
     """A value could not be read as the quantity it should be."""
 
 
+def plain_number(text: str) -> float:
+    """``float(text)`` without Python's digit separator (``1_000``), which no camtool input takes (ValueError).
+
+    >>> plain_number(" 2.5e3 ")
+    2500.0
+    """
+    if "_" in text:
+        raise ValueError(f"{text!r}: a digit separator")
+    return float(text)
+
+
 def parse_length(text: str | float, default_unit: str = "mm") -> float:
     """Parse a length such as ``50``, ``50mm``, ``3m``, ``10ft``, ``5'6"`` or ``inf`` into mm.
 
@@ -259,7 +270,7 @@ def parse_guide_number(text: str | float) -> float:
     elif raw.endswith("m"):
         raw = raw[:-1].strip()
     try:
-        return float(raw) * scale
+        return plain_number(raw) * scale
     except ValueError:
         raise UnitError(f"{text!r} is not a guide number (examples: 40, 40m, 131ft)") from None
 
@@ -319,7 +330,7 @@ def parse_angle(text: str | float) -> float:
     shown = str(text).strip()
     bare = shown.lower().replace("°", "").replace("degrees", "").replace("deg", "").strip()
     try:
-        number = float(bare)
+        number = plain_number(bare)
     except ValueError:
         raise UnitError(f"{shown!r} is not an angle (examples: 3, 3deg, 3°, -2.5)") from None
     if not TILT_DEG[0] <= number <= TILT_DEG[1]:
@@ -337,7 +348,7 @@ def parse_tolerance(text: str | float) -> float:
 
     shown = str(text).strip()
     try:
-        number = float(shown[:-1]) / 100.0 if shown.endswith("%") else float(shown)
+        number = plain_number(shown[:-1]) / 100.0 if shown.endswith("%") else plain_number(shown)
     except ValueError:
         raise UnitError(f"{text!r} is not a tolerance (examples: 1%, 0.5%, 0.01)") from None
     if not TOLERANCE[0] < number <= TOLERANCE[1]:
@@ -355,8 +366,8 @@ def parse_wavelength(text: str | float) -> float:
 
     shown = str(text).strip().lower()
     try:
-        nm = float(shown[:-2]) if shown.endswith("nm") else parse_length(shown, "mm") * 1e6 \
-            if any(shown.endswith(u) for u in ("um", "µm", "mm")) else float(shown)
+        nm = plain_number(shown[:-2]) if shown.endswith("nm") else parse_length(shown, "mm") * 1e6 \
+            if any(shown.endswith(u) for u in ("um", "µm", "mm")) else plain_number(shown)
     except (ValueError, UnitError):
         raise UnitError(f"{text!r} is not a wavelength (examples: 550, 550nm, 0.55um)") from None
     return _bounded(str(text), nm, WAVELENGTH_NM, "nm")
@@ -384,7 +395,7 @@ def parse_pupil_magnification(text: str | float) -> float:
     from camtool.core.ranges import PUPIL_MAGNIFICATION
 
     try:
-        number = float(str(text).strip())
+        number = plain_number(str(text).strip())
     except ValueError:
         raise UnitError(f"{text!r} is not a number (examples: 0.6, 1, 2.5)") from None
     return _bounded(str(text), number, PUPIL_MAGNIFICATION, "", " (exit over entrance pupil diameter)")
@@ -488,6 +499,6 @@ def parse_illuminance(text: str | float) -> float:
             raw, scale = raw[: -len(unit)].strip(), factor
             break
     try:
-        return float(raw) * scale
+        return plain_number(raw) * scale
     except ValueError:
         raise UnitError(f"{text!r} is not an illuminance (examples: 400, 400lx, 37fc)") from None
