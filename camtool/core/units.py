@@ -490,7 +490,7 @@ def parse_illuminance(text: str | float) -> float:
     """An illuminance in lux: a bare number, ``400lx`` or ``400lux``, or foot-candles ``37fc``.
 
     >>> parse_illuminance("400lx"), round(parse_illuminance("37fc"), 2)
-    (400.0, 398.27)
+    (400.0, 398.26)
     """
     raw = str(text).strip().lower()
     scale = 1.0
