@@ -242,6 +242,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 42.0),
     # internal focusing: 0.82 m with 0.2x and 0.22 m with 0.24x imply about 114 mm and 34 mm
     ("nikon-z-135mm-f1.8-s-plena", 135.0), ("sony-fe-35mm-f1.8", 35.0),
+    # 0.35 m with 1:5.8 at the long end: about 44 mm there
+    ("nikon-z-24-50mm-f4-6.3", 50.0),
 }
 
 
@@ -410,6 +412,12 @@ CITED_CLOSE_FOCUS = [
     ("canon-rf-24mm-f1.8-macro-is-stm", 24, 140, 0.5),
     # anotherlounge.jp: 22 cm, 0.24x.
     ("sony-fe-35mm-f1.8", 35, 220, 0.24),
+    # Photo Review: 35 cm at all settings, 1:5.8 at 50 mm.
+    ("nikon-z-24-50mm-f4-6.3", 24, 350, None), ("nikon-z-24-50mm-f4-6.3", 50, 350, 0.172),
+    # Neocamera: 50 cm at 50 mm, 1 m at 250 mm (the 0.23x on no row).
+    ("nikon-z-dx-50-250mm-f4.5-6.3-vr", 50, 500, None), ("nikon-z-dx-50-250mm-f4.5-6.3-vr", 250, 1000, None),
+    # Fujifilm's 'XF16mm' story: 15 cm from the sensor; 1:0.21.
+    ("fujifilm-xf16mm-f1.4-r-wr", 16, 150, 0.21),
 ]
 
 
