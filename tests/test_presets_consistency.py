@@ -240,6 +240,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("olympus-zuiko-digital-ed-40-150mm-f4-5.6", 150.0),
     # 0.29 m with 1:5.2 at the long end: about 39 mm there
     ("olympus-zuiko-digital-14-42mm-f3.5-5.6-ed", 42.0),
+    # internal focusing: 0.82 m with 0.2x and 0.22 m with 0.24x imply about 114 mm and 34 mm
+    ("nikon-z-135mm-f1.8-s-plena", 135.0), ("sony-fe-35mm-f1.8", 35.0),
+    # 0.35 m with 1:5.8 at the long end: about 44 mm there
+    ("nikon-z-24-50mm-f4-6.3", 50.0),
 }
 
 
@@ -396,6 +400,24 @@ CITED_CLOSE_FOCUS = [
     # Photofocus (Tamron's list): 0.3 m and 1:2.6 at 70 mm, 0.85 m and 1:4.7 at 180 mm.
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 70, 300, 0.385),
     ("tamron-70-180mm-f2.8-di-iii-vc-vxd-g2", 180, 850, 0.213),
+    # utopia-photography.ch (Nikon's table): 0.2 m from the sensor, 0.19x.
+    ("nikon-z-20mm-f1.8-s", 20, 200, 0.19),
+    # Digital Camera World review (inkl.com copy): 0.2 m, 0.19x.
+    ("nikon-z-26mm-f2.8", 26, 200, 0.19),
+    # Photography Life announcement: 0.82 m, 0.2x.
+    ("nikon-z-135mm-f1.8-s-plena", 135, 820, 0.2),
+    # Photography Life announcement: 34 cm at 28 mm, 57 cm at 135 mm (the 0.25x on no row).
+    ("nikon-z-28-135mm-f4-pz", 28, 340, None), ("nikon-z-28-135mm-f4-pz", 135, 570, None),
+    # Photography Life review / Canon Singapore: 14 cm, 0.5x.
+    ("canon-rf-24mm-f1.8-macro-is-stm", 24, 140, 0.5),
+    # anotherlounge.jp: 22 cm, 0.24x.
+    ("sony-fe-35mm-f1.8", 35, 220, 0.24),
+    # Photo Review: 35 cm at all settings, 1:5.8 at 50 mm.
+    ("nikon-z-24-50mm-f4-6.3", 24, 350, None), ("nikon-z-24-50mm-f4-6.3", 50, 350, 0.172),
+    # Neocamera: 50 cm at 50 mm, 1 m at 250 mm (the 0.23x on no row).
+    ("nikon-z-dx-50-250mm-f4.5-6.3-vr", 50, 500, None), ("nikon-z-dx-50-250mm-f4.5-6.3-vr", 250, 1000, None),
+    # Fujifilm's 'XF16mm' story: 15 cm from the sensor; 1:0.21.
+    ("fujifilm-xf16mm-f1.4-r-wr", 16, 150, 0.21),
 ]
 
 
@@ -454,6 +476,10 @@ CITED_F_NUMBER_MAX = [
     # DPReview's Ricoh GR III page (open-product-data/digital-cameras, database/ricoh_griii.yaml):
     # MaximumAperture F2.8-16; tekgenius.pt's announcement: 18.3mm f/2.8-f/16.
     ("ricoh-gr-iii-lens", 16),
+    # Digital Camera World (Z 26mm): f/16; Photography Life (Z 135mm Plena): f/16; (Z 28-135mm PZ): f/22;
+    # Photography Life (RF 24mm F1.8 Macro): f/22; sonyalphalab.com (FE 20mm G: f/22, FE 24mm GM: f/16).
+    ("nikon-z-26mm-f2.8", 16), ("nikon-z-135mm-f1.8-s-plena", 16), ("nikon-z-28-135mm-f4-pz", 22),
+    ("canon-rf-24mm-f1.8-macro-is-stm", 22), ("sony-fe-20mm-f1.8-g", 22), ("sony-fe-24mm-f1.4-gm", 16),
 ]
 
 
