@@ -406,15 +406,10 @@ def chart_marks(ctx: click.Context, scene: Scene, focal_length, lenses, f_number
     Cells in feet and inches with --units imperial, else metres; a T-stop
     is used as the f-number it stands for (as in camtool dof).
     """
-    from camtool.cli.equipment import open_presets
-    from camtool.cli.options import param_named
-    from camtool.presets import PresetNotFound
+    from camtool.cli.equipment import lookup
 
     names = [n.strip() for group in lenses for n in group.split(",") if n.strip()]
-    try:
-        found = [(n, open_presets(ctx, preset_files).lens(n)) for n in names] if names else []
-    except PresetNotFound as error:
-        raise click.BadParameter(str(error), ctx=ctx, param=param_named(ctx, "lenses")) from None
+    found = [(n, lookup(ctx, "lens", n, "lenses", preset_files)) for n in names]
     sets = [(f"{v:g} mm", v, None) for v in flatten(focal_length)] + [(n, lens.focal_min_mm, None) for n, lens in found]
     n = single(ctx, required(ctx, f_numbers(f_number, False), "-N"), "-N")
     typed = flatten(f_number)[0]

@@ -21,7 +21,7 @@ from camtool.cli.options import DISTANCE_M, coc_options, distance_plane_option, 
 from camtool.core.text import printable
 from camtool.dof.ladder import model_choices
 from camtool.plans.photo import KEYS, names_from_lines
-from camtool.render.views.exif import COLUMNS
+from camtool.render.views.exif import COLUMNS, exif_footer
 
 
 @camtool_command("exif", keys=KEYS, batch=False)
@@ -115,14 +115,10 @@ def exif(ctx: click.Context, paths, recursive, distance, sensor, crop, coc, coc_
                 bar.advance(100)
     if not all(answer.ok for answer in answers):
         ctx.call_on_close(_exit_one)
-    note = ""
-    if fmt == "table":
-        from camtool.geometry.coc import DEFAULT_RULE
+    from camtool.geometry.coc import DEFAULT_RULE
 
-        criterion = f"CoC {coc:g} mm" if coc is not None else f"CoC {coc_rule or DEFAULT_RULE} of each sensor"
-        note = (f"distances from the {distance_from} · {criterion} · model {model} · "
-                "JSON/CSV carry every key and its *_source")
-    return Output([answer.values for answer in answers], COLUMNS, photo.KEYS, note)
+    note = exif_footer(coc_mm=coc, coc_rule=coc_rule or DEFAULT_RULE, distance_from=distance_from, model=model)
+    return Output([answer.values for answer in answers], COLUMNS, photo.KEYS, note if fmt == "table" else "")
 
 
 GIVEN_AS = {"lens_preset": "--lens", "distance_mm": "-s", "coc_mm": "--coc"}

@@ -10,7 +10,7 @@ from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
 from camtool.plans import presets as plan
 from camtool.plans.presets import KINDS
-from camtool.render.views.presets import LIST_COLUMNS, LIST_KEYS, SHOW_COLUMNS
+from camtool.render.views.presets import LIST_COLUMNS, LIST_KEYS, SHOW_COLUMNS, show_rows
 
 KIND_CHOICE = click.Choice(KINDS)
 
@@ -93,18 +93,8 @@ def show(ctx: click.Context, name: str, kind: str | None, fmt: str, preset_files
     if fmt != "table":
         emit(Output([fields], SHOW_COLUMNS, list(fields)), fmt, "metric")
         return
-    if shown.kind == "film" and fields.get("points"):
-        fields["points"] = ", ".join(f"{t:g} s +{stops:.2g} EV" for t, stops in fields["points"])
-    rows = [{"key": key, "value": _show_value(value)} for key, value in fields.items() if value is not None]
+    rows = show_rows(shown.kind, fields)
     emit(Output(rows, SHOW_COLUMNS, ["key", "value"], f"{shown.kind} {shown.id} from {shown.origin}"), fmt, "metric")
-
-
-def _show_value(value: Any) -> str:
-    if isinstance(value, float):
-        return f"{value:.6g}"
-    if isinstance(value, list):
-        return ", ".join(map(str, value))
-    return str(value)
 
 
 @presets.command("validate")
