@@ -12,7 +12,7 @@ from camtool.cli.equipment import resolve_sensor
 from camtool.cli.exposure import single
 from camtool.cli.options import PIXEL_PITCH_UM, focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
-from camtool.render.views.stars import COLUMNS, KEYS
+from camtool.render.views.stars import COLUMNS, KEYS, stars_footer
 
 
 @camtool_command("stars", keys=KEYS)
@@ -47,13 +47,11 @@ def stars(ctx: click.Context, focal_length, f_number, sensor, crop, pixel_pitch,
       camtool stars -f 50
     """
     from camtool.exposure.stars import star_limits
-    from camtool.exposure.timefmt import format_time
+    from camtool.plans.equipment import pixel_pitches
 
     focal = required(ctx, focal_length, "-f")
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
-    pitches = [p * 1000.0 for p in flatten(pixel_pitch)]
-    if not pitches and chosen.pixel_pitch_mm is not None:
-        pitches = [chosen.pixel_pitch_mm * 1000.0]
+    pitches = [p * 1000.0 for p in pixel_pitches(flatten(pixel_pitch), chosen)]
     apertures = flatten(f_number)
     if pitches and not apertures:
         raise click.UsageError("The NPF rule needs the f-number: give -N (or leave out the pixel pitch).", ctx)
@@ -67,13 +65,8 @@ def stars(ctx: click.Context, focal_length, f_number, sensor, crop, pixel_pitch,
                              "crop_factor": chosen.crop_factor, "pixel_pitch_um": pitch_um,
                              "declination_deg": dec, "rule500_s": limits.rule500_s,
                              "npf_simple_s": limits.npf_simple_s, "npf_s": limits.npf_s})
-    for row in rows:
-        row["aperture"] = f"f/{row['f_number']:g}" if apertures else "—"
-        row["rule500"] = format_time(row["rule500_s"])
-        row["npf_simple"] = format_time(row["npf_simple_s"]) if pitch_um is not None else "—"
-        row["npf"] = format_time(row["npf_s"]) if pitch_um is not None else "—"
-    pitch_note = (f"pixel pitch {', '.join(f'{v:.3g}' for v in pitches)} µm" if pitches else
-                  "no pixel pitch (--pixel-pitch or --camera) for the NPF rule")
-    note = (f"{chosen.label}, crop {chosen.crop_factor:.3g} · {pitch_note} · declination in degrees · "
-            f"{single(ctx, rule_constant):g} rule")
-    return Output(rows, COLUMNS, KEYS, note if fmt == "table" else "")
+    if fmt != "table":
+        return Output(rows, COLUMNS, KEYS, "")
+    note = stars_footer(rows, apertures_given=bool(apertures), pitches_um=pitches, sensor=chosen,
+                        rule_constant=single(ctx, rule_constant))
+    return Output(rows, COLUMNS, KEYS, note)

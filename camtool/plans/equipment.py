@@ -169,6 +169,13 @@ def _side(sensor: str, number: str, unit: str) -> float:
     return mm
 
 
+def pixel_pitches(given_mm: Sequence[float], sensor: SensorChoice) -> list[float]:
+    """The pixel pitches in mm: those given, else the camera's (through the sensor in use), else none."""
+    if given_mm:
+        return list(given_mm)
+    return [sensor.pixel_pitch_mm] if sensor.pixel_pitch_mm is not None else []
+
+
 def resolve_coc(*, coc: Sequence[float] = (), coc_rule: str | None = None, sensor: SensorChoice,
                 pixel_pitch_mm: Sequence[float] | None = None, camera: Any = None) -> CocChoice:
     """The CoC values in mm and where they came from (the precedence in the module docstring).
@@ -184,7 +191,7 @@ def resolve_coc(*, coc: Sequence[float] = (), coc_rule: str | None = None, senso
         return CocChoice([sensor.coc_mm], f"{sensor.label} preset")
     if coc_rule is None and getattr(camera, "category", None) == "cine":
         coc_rule = CINE_RULE
-    pitch = pixel_pitch_mm[0] if pixel_pitch_mm else sensor.pixel_pitch_mm
+    pitch = next(iter(pixel_pitches(pixel_pitch_mm or [], sensor)), None)
     try:
         choice = coc_from_rule(coc_rule or DEFAULT_RULE, sensor.width_mm, sensor.height_mm, pitch)
     except UnitError as error:
