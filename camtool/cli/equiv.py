@@ -12,7 +12,7 @@ from camtool.cli.equipment import FULL_FRAME, resolve_sensor
 from camtool.cli.exposure import single
 from camtool.cli.options import focal_option, library_errors, sensor_options
 from camtool.cli.params import FNumberType, NumberType, flatten
-from camtool.render.views.equiv import COLUMNS, KEYS
+from camtool.render.views.equiv import COLUMNS, KEYS, equiv_footer
 
 
 @camtool_command("equiv", keys=KEYS)
@@ -61,13 +61,8 @@ def equiv(ctx: click.Context, focal_length, f_number, iso, sensor, crop, to_sens
                              "equivalent_focal_length_mm": e.focal_length_mm, "equivalent_f_number": e.f_number,
                              "equivalent_iso": e.iso, "ratio": e.ratio, "aperture_diameter_mm": e.aperture_diameter_mm,
                              "light_stops": e.light_stops, "converter": converter})
-    for row in rows:
-        row["given"] = f"{row['focal_length_mm']:g} mm f/{row['f_number']:g} ISO {row['iso']:g}"
-        row["aperture"] = f"f/{row['equivalent_f_number']:.3g}"
-    conv = f" · converter ×{converter:g} on the lens" if converter != 1.0 else ""
-    note = (f"{source.label} → {target.label}, ratio {e.ratio if isinstance(e.ratio, float) else rows[0]['ratio']:.4g}"
-            f"{conv} · same angle of view f·r, same depth of field N·r, same total light ISO·r²")
-    return Output(rows, COLUMNS, KEYS, note if fmt == "table" else "")
+    note = equiv_footer(rows, source=source, target=target, converter=converter) if fmt == "table" else ""
+    return Output(rows, COLUMNS, KEYS, note)
 
 
 def _target(ctx: click.Context, to_sensor: str | None, to_crop: float | None, files: tuple[str, ...]):
