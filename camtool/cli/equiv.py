@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 import click
 
 from camtool.cli.command import Output, camtool_command, combine_params
@@ -55,8 +53,7 @@ def equiv(ctx: click.Context, focal_length, f_number, iso, sensor, crop, to_sens
     converter = single(ctx, teleconverter) or single(ctx, speed_booster, 1.0)
     count, (f, n, s) = combine_params(ctx, focal, apertures, speeds)
     with library_errors(ctx):
-        e = equivalent_settings(f, n, s, math.hypot(source.width_mm, source.height_mm),
-                                math.hypot(target.width_mm, target.height_mm), converter)
+        e = equivalent_settings(f, n, s, source.diagonal_mm, target.diagonal_mm, converter)
     rows = rows_from(count, {"focal_length_mm": f, "f_number": n, "iso": s,
                              "equivalent_focal_length_mm": e.focal_length_mm, "equivalent_f_number": e.f_number,
                              "equivalent_iso": e.iso, "ratio": e.ratio, "aperture_diameter_mm": e.aperture_diameter_mm,

@@ -10,10 +10,7 @@ from camtool.cli.exposure import single
 from camtool.cli.options import DISTANCE_M, library_errors
 from camtool.cli.params import FNumberType, NumberType, _ListType, flatten
 from camtool.core.units import parse_guide_number
-from camtool.render.views.flash import COLUMNS, KEYS
-
-FEET_PER_METRE = 1 / 0.3048
-SOLVED = {"guide_number": "guide number", "distance": "distance", "f_number": "f-number", "iso": "ISO"}
+from camtool.render.views.flash import COLUMNS, KEYS, flash_footer
 
 
 class GuideNumberType(_ListType):
@@ -61,18 +58,5 @@ def flash(ctx: click.Context, guide_number, gn_iso, distance, f_number, iso, fmt
     rows = rows_from(count, {"guide_number_m": result.guide_number_m, "guide_number_at_iso_m":
                              result.guide_number_at_iso_m, "distance_mm": result.distance_m * 1000.0,
                              "f_number": result.f_number, "iso": result.iso, "solved": result.solved})
-    imperial = units == "imperial"
-    for row in rows:
-        row["gn"] = _gn(row["guide_number_m"], imperial)
-        row["gn_iso"] = _gn(row["guide_number_at_iso_m"], imperial)
-        d = row["distance_mm"] / 1000.0
-        row["distance"] = f"{d * FEET_PER_METRE:.3g} ft" if imperial else f"{d:.3g} m"
-        row["aperture"] = f"f/{row['f_number']:.3g}"
-        row["iso_text"] = f"{row['iso']:.4g}"
-    note = f"solved: {SOLVED[result.solved]} · GN = distance × N at ISO 100, × √(ISO/100) · guide numbers in " \
-           f"{'feet' if imperial else 'metres'}"
-    return Output(rows, COLUMNS, KEYS, note if fmt == "table" else "")
-
-
-def _gn(metres: float, imperial: bool) -> str:
-    return f"{metres * FEET_PER_METRE:.3g}" if imperial else f"{metres:.3g}"
+    note = flash_footer(rows, solved=result.solved, imperial=units == "imperial") if fmt == "table" else ""
+    return Output(rows, COLUMNS, KEYS, note)

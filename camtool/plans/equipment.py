@@ -52,13 +52,18 @@ class SensorChoice(NamedTuple):
     pixel_pitch_mm: float | None = None
 
     @property
+    def diagonal_mm(self) -> float:
+        """The sensor's diagonal."""
+        return math.hypot(self.width_mm, self.height_mm)
+
+    @property
     def crop_factor(self) -> float:
         """Ratio of the 36 × 24 mm diagonal to this sensor's diagonal.
 
         >>> round(SensorChoice(23.5, 15.6, "APS-C").crop_factor, 4)
         1.5339
         """
-        return FULL_FRAME_DIAGONAL_MM / math.hypot(self.width_mm, self.height_mm)
+        return FULL_FRAME_DIAGONAL_MM / self.diagonal_mm
 
 
 FULL_FRAME = SensorChoice(36.0, 24.0, "full frame 36 × 24 mm")
