@@ -54,7 +54,7 @@ def test_every_shipped_file_has_a_row_in_the_table():
 def test_shipped_lens_count_floor():
     # Floor on the lenses of every shipped file together (lenses.yaml, compact-lenses.yaml,
     # third-party-lenses.yaml and any other file with a `lenses` section): the 157 + 2 of before and the
-    # 18 of third-party-lenses.yaml. Raise it as entries are added; it never goes down unnoticed.
+    # 19 of third-party-lenses.yaml. Raise it as entries are added; it never goes down unnoticed.
     total = sum(len((yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or [])
                 for path in DB.glob("*.yaml"))
-    assert total >= 177
+    assert total >= 178

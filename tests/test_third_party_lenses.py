@@ -69,6 +69,8 @@ CITED = [
     ("sigma-28mm-f1.4-dg-hsm-art", 28, 280, None, (1.4, 16)),
     # No Film School: f/16, 40 cm, 1:5.6
     ("sigma-50mm-f1.4-dg-hsm-art", 50, 400, 1 / 5.6, (1.4, 16)),
+    # Dennis Sassmannshausen's review: 0.875 m, F1.8
+    ("sigma-135mm-f1.8-dg-hsm-art", 135, 875, None, (1.8, None)),
     # Fotografidigitali: 25.8 cm from the sensor; Digital Photographer: a 1.0x macro
     ("sigma-70mm-f2.8-dg-macro-art", 70, 258, 1.0, (2.8, None)),
     # Le Monde de la Photo: 20 cm
