@@ -14,7 +14,8 @@ DB = ROOT / "lens_db"
 def shipped_counts() -> dict[str, int]:
     counts = {kind: len(yaml.safe_load((DB / f"{kind}.yaml").read_text(encoding="utf-8"))[kind])
               for kind in ("sensors", "cameras", "lenses", "scenes")}
-    counts["compact-lenses"] = len(yaml.safe_load((DB / "compact-lenses.yaml").read_text(encoding="utf-8"))["lenses"])
+    for name in ("compact-lenses", "third-party-lenses"):
+        counts[name] = len(yaml.safe_load((DB / f"{name}.yaml").read_text(encoding="utf-8"))["lenses"])
     counts["prescriptions"] = len(list((DB / "prescriptions").glob("*.yaml")))
     return counts
 
@@ -29,13 +30,31 @@ def test_readme_counts_the_shipped_presets():
     assert said == {kind: counts[kind] for kind in said}
     compacts = re.search(r"and (\d+) built-in lenses of compacts \(`compact-lenses\.yaml`\)", text)
     assert compacts and int(compacts.group(1)) == counts["compact-lenses"]
+    third = re.search(r"(\d+) lenses of the independent lens makers \(`third-party-lenses\.yaml`", text)
+    assert third and int(third.group(1)) == counts["third-party-lenses"]
 
 
 def test_lens_db_readme_table_counts_the_shipped_presets():
     text = (DB / "README.md").read_text(encoding="utf-8")
     counts = shipped_counts()
-    for kind in ("sensors", "cameras", "compact-lenses", "lenses", "scenes"):
+    for kind in ("sensors", "cameras", "compact-lenses", "third-party-lenses", "lenses", "scenes"):
         row = re.search(rf"^\| `{kind}\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
         assert row and int(row.group(1)) == counts[kind], kind
     row = re.search(r"^\| `prescriptions/\*\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
     assert row and int(row.group(1)) == counts["prescriptions"]
+
+
+def test_every_shipped_file_has_a_row_in_the_table():
+    # a preset file added to lens_db/ is listed, with its count, in lens_db/README.md's table
+    text = (DB / "README.md").read_text(encoding="utf-8")
+    for path in sorted(DB.glob("*.yaml")):
+        assert re.search(rf"^\| `{re.escape(path.name)}` \|.*\| \d+ \|$", text, re.MULTILINE), path.name
+
+
+def test_shipped_lens_count_floor():
+    # Floor on the lenses of every shipped file together (lenses.yaml, compact-lenses.yaml,
+    # third-party-lenses.yaml and any other file with a `lenses` section): the 157 + 2 of before and the
+    # 19 of third-party-lenses.yaml. Raise it as entries are added; it never goes down unnoticed.
+    total = sum(len((yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or [])
+                for path in DB.glob("*.yaml"))
+    assert total >= 178

@@ -244,6 +244,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("nikon-z-135mm-f1.8-s-plena", 135.0), ("sony-fe-35mm-f1.8", 35.0),
     # 0.35 m with 1:5.8 at the long end: about 44 mm there
     ("nikon-z-24-50mm-f4-6.3", 50.0),
+    # third-party-lenses.yaml: 0.85 m with 1:5.9, 0.6 m with 1:3.1, 1.5 m with 1:5 imply about 105, 111 and
+    # 208 mm at those ends; 0.15 m with 1:2 about 33 mm for the 35 mm prime
+    ("tamron-35-150mm-f2-2.8-di-iii-vxd", 150.0), ("tamron-150-500mm-f5-6.7-di-iii-vc-vxd", 150.0),
+    ("tamron-70-300mm-f4.5-6.3-di-iii-rxd", 300.0), ("tamron-35mm-f2.8-di-iii-osd-m1-2", 35.0),
 }
 
 

@@ -1,0 +1,177 @@
+"""lens_db/third-party-lenses.yaml: each entry's figures against the page its `source` quotes, and the figures
+the model derives from them against what the pages say of the lens in use."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+import yaml
+from cli_helpers import run, run_json
+from conftest import point_xdg_at, presets_home
+
+from camtool.geometry.closeup import internal_focus_at_distance
+from camtool.geometry.projection import half_angle_deg, image_height_mm
+from camtool.presets import load_db
+from camtool.presets.focusing import focus_model
+
+DB = Path(__file__).resolve().parents[1] / "lens_db"
+FILE = DB / "third-party-lenses.yaml"
+RECORDS = yaml.safe_load(FILE.read_text(encoding="utf-8"))["lenses"]
+
+
+@pytest.fixture(autouse=True)
+def isolated(request, monkeypatch, shared_presets_home):
+    root = presets_home(request, shared_presets_home, "tmp_path")
+    point_xdg_at(root, monkeypatch)
+    return root
+
+
+def _record(lens_id: str) -> dict:
+    return next(r for r in RECORDS if r["id"] == lens_id)
+
+
+# (lens, focal length mm, closest focus mm, magnification or None, f-number range) as the page each entry's
+# source names gives them; ranges are (widest, smallest) at the short end and, for a zoom whose apertures
+# change, at the long end (None: the page gives none).
+CITED = [
+    # DIY Photography: 33cm (wide) / 85cm (tele), f/2-2.8, minimum aperture f/16-22; Photography Life: 1:5.7, 1:5.9
+    ("tamron-35-150mm-f2-2.8-di-iii-vxd", 35, 330, 1 / 5.7, (2, 16)),
+    ("tamron-35-150mm-f2-2.8-di-iii-vxd", 150, 850, 1 / 5.9, (2.8, 22)),
+    # The Phoblographer: 0.6 m / 1.8 m, 1:3.1 / 1:3.7, F5-6.7, F22-32
+    ("tamron-150-500mm-f5-6.7-di-iii-vc-vxd", 150, 600, 1 / 3.1, (5, 22)),
+    ("tamron-150-500mm-f5-6.7-di-iii-vc-vxd", 500, 1800, 1 / 3.7, (6.7, 32)),
+    # 31.5 in at 70 mm, 59.1 in at 300 mm (0.8 m, 1.5 m); Photography Life 1:5 at 300 mm; f/4.5-22, f/6.3-32
+    ("tamron-70-300mm-f4.5-6.3-di-iii-rxd", 70, 800, None, (4.5, 22)),
+    ("tamron-70-300mm-f4.5-6.3-di-iii-rxd", 300, 1500, 1 / 5, (6.3, 32)),
+    # Giggster / Amateur Photographer: 0.19 m and 1:3.1 at 28 mm, 0.8 m at 200 mm; f/2.8, f/5.6 from 150 mm
+    ("tamron-28-200mm-f2.8-5.6-di-iii-rxd", 28, 190, 1 / 3.1, (2.8, None)),
+    ("tamron-28-200mm-f2.8-5.6-di-iii-rxd", 200, 800, None, (5.6, None)),
+    # Digital Camera World: 0.15-0.24 m, 0.25-0.13x, minimum aperture f/16
+    ("tamron-11-20mm-f2.8-di-iii-a-rxd", 11, 150, 0.25, (2.8, 16)),
+    ("tamron-11-20mm-f2.8-di-iii-a-rxd", 20, 240, 0.13, (2.8, 16)),
+    # Lenstip: 11, 12 and 15 cm, 1:2; Paul Amyes: 0.15 m, 1:2, F/22
+    ("tamron-20mm-f2.8-di-iii-osd-m1-2", 20, 110, 0.5, (2.8, None)),
+    ("tamron-24mm-f2.8-di-iii-osd-m1-2", 24, 120, 0.5, (2.8, None)),
+    ("tamron-35mm-f2.8-di-iii-osd-m1-2", 35, 150, 0.5, (2.8, 22)),
+    # PCMag (gamebastion.com copy): 7.5 in at 17 mm, 11.8 in at 50 mm (0.19 m, 0.30 m)
+    ("tamron-17-50mm-f4-di-iii-vxd", 17, 190, None, (4, None)),
+    ("tamron-17-50mm-f4-di-iii-vxd", 50, 300, None, (4, None)),
+    # ppa.com: 11.8 in (30 cm) throughout, 1:4 at 28 or 45 mm, F1.8
+    ("sigma-28-45mm-f1.8-dg-dn-art", 28, 300, 0.25, (1.8, None)),
+    ("sigma-28-45mm-f1.8-dg-dn-art", 45, 300, 0.25, (1.8, None)),
+    # Phototrend: f/1.2 to f/16, no closest focus in the part read
+    ("sigma-50mm-f1.2-dg-dn-art", 50, None, None, (1.2, 16)),
+    # Sigma Suisse: 15 mm f/1.4, 38.5 cm
+    ("sigma-15mm-f1.4-dg-dn-diagonal-fisheye-art", 15, 385, None, (1.4, None)),
+    # Webnews: f/1.4 to f/16, 28 cm
+    ("sigma-28mm-f1.4-dg-hsm-art", 28, 280, None, (1.4, 16)),
+    # No Film School: f/16, 40 cm, 1:5.6
+    ("sigma-50mm-f1.4-dg-hsm-art", 50, 400, 1 / 5.6, (1.4, 16)),
+    # Dennis Sassmannshausen's review: 0.875 m, F1.8
+    ("sigma-135mm-f1.8-dg-hsm-art", 135, 875, None, (1.8, None)),
+    # Fotografidigitali: 25.8 cm from the sensor; Digital Photographer: a 1.0x macro
+    ("sigma-70mm-f2.8-dg-macro-art", 70, 258, 1.0, (2.8, None)),
+    # Le Monde de la Photo: 20 cm
+    ("samyang-af-14mm-f2.8-ef", 14, 200, None, (2.8, None)),
+    # Fotocult: 12 cm from the focal plane, 0.11x
+    ("laowa-7.5mm-f2-mft", 7.5, 120, 0.11, (2, None)),
+    # a user's blog: 15 cm
+    ("laowa-10-18mm-f4.5-5.6-fe-zoom", 10, 150, None, (4.5, None)),
+    ("laowa-10-18mm-f4.5-5.6-fe-zoom", 18, 150, None, (5.6, None)),
+]
+
+
+def test_every_entry_is_checked_against_its_page():
+    assert {lens_id for lens_id, *_ in CITED} == {r["id"] for r in RECORDS}
+
+
+@pytest.mark.parametrize(("lens_id", "focal", "distance", "magnification", "apertures"), CITED,
+                         ids=[f"{c[0]}@{c[1]}" for c in CITED])
+def test_figures_against_the_cited_pages(lens_id, focal, distance, magnification, apertures):
+    record = _record(lens_id)
+    zoom = "focal_min_mm" in record
+    long_end = zoom and focal == record["focal_max_mm"]
+    if zoom:
+        row = next(r for r in record["close_focus"] if r["focal_length_mm"] == focal)
+    else:
+        assert record["focal_length_mm"] == focal
+        row = record
+    assert row.get("min_focus_mm") == distance
+    if magnification is None:
+        assert "max_magnification" not in row
+    else:
+        assert row["max_magnification"] == pytest.approx(magnification, abs=0.0006)  # stored to three places
+    widest, smallest = apertures
+    assert record["f_number_min_tele" if long_end and "f_number_min_tele" in record else "f_number_min"] == widest
+    key = "f_number_max_tele" if long_end and "f_number_max_tele" in record else "f_number_max"
+    assert record.get(key) == smallest
+    # a figure left out is said to be: the smallest aperture "not found", a missing magnification approximate
+    if smallest is None:
+        assert "f_number_max not found" in " ".join(record["notes"].split())
+    if distance is None:
+        assert "min_focus_mm" in record["notes"] and "not found" in record["notes"]
+
+
+def test_every_entry_names_its_mounts_and_is_a_new_id():
+    # lens_db/README.md: within one tier an id or alias names one preset; the entries of lenses.yaml are kept
+    taken = set()
+    for path in sorted(DB.glob("*.yaml")):
+        if path != FILE:
+            for record in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []:
+                taken |= {record["id"], *record.get("aliases", [])}
+    for record in RECORDS:
+        assert not ({record["id"], *record.get("aliases", [])} & taken), record["id"]
+        assert record["mount"] and record["mount"] != "various", record["id"]
+        assert load_db().lens(record["id"]).tier == "shipped"
+
+
+def test_unpublished_zoom_rows_stay_within_what_the_pages_say():
+    # Photography Life: the 70-300 reaches less than 1:9 at 70 mm, where Tamron publishes no figure; the model
+    # (unit focusing at 0.8 m) gives 0.107x
+    lens = load_db().lens("tamron-70-300")
+    model = focus_model(lens, 70.0)
+    m, _f = internal_focus_at_distance(model, 800.0)
+    assert m < 1 / 9
+    assert m == pytest.approx((800 / 70 - 2 - math.sqrt((800 / 70 - 2) ** 2 - 4)) / 2, rel=1e-9)
+    # and no focal length of any entry here magnifies more than its page's maximum
+    for record in RECORDS:
+        lens = load_db().lens(record["id"])
+        if lens.max_magnification is None or lens.min_focus_mm is None:
+            continue
+        for f in {lens.focal_min_mm, lens.focal_max_mm, (lens.focal_min_mm + lens.focal_max_mm) / 2}:
+            model = focus_model(lens, f)
+            assert internal_focus_at_distance(model, model.min_focus_mm)[0] <= lens.max_magnification * 1.001
+
+
+def test_laowa_7_5mm_covers_110_degrees_on_four_thirds():
+    # Fotocult: about 110° on the diagonal, like a 15 mm on full frame (rectilinear); Four Thirds 17.3 × 13 mm
+    (row,) = run_json("fov", "--lens", "laowa-7.5")
+    assert row["diagonal_deg"] == pytest.approx(110, abs=1.5)
+    assert row["diagonal_deg"] == pytest.approx(2 * math.degrees(math.atan(math.hypot(17.3, 13) / 15)), rel=1e-3)
+
+
+def test_sigma_15mm_diagonal_fisheye_covers_180_degrees_across_full_frame():
+    # Sigma Suisse: 180° diagonal on full frame. An equisolid 15 mm maps the 21.63 mm half-diagonal to 92.3°
+    # (184.6° across, within 3 % of 180°; its 180° circle is 42.4 mm, 2 % inside the 43.3 mm diagonal); an
+    # equidistant one would reach only 165°, 8 % short — why the entry takes equisolid (approximate, as its
+    # notes say)
+    half_diagonal = math.hypot(36, 24) / 2
+    assert 2 * half_angle_deg(half_diagonal, 15.0, "equisolid") == pytest.approx(180, rel=0.03)
+    assert 2 * half_angle_deg(half_diagonal, 15.0, "equidistant") < 180 * 0.93
+    assert 2 * image_height_mm(15.0, 90.0, "equisolid") == pytest.approx(2 * half_diagonal, rel=0.03)
+    lens = load_db().lens("sigma-15-fisheye")
+    assert (lens.projection, lens.field_max_deg, lens.approximate) == ("equisolid", 180.0, True)
+    (row,) = run_json("fov", "--lens", "sigma-15-fisheye")
+    assert row["diagonal_deg"] == 180.0 and row["projection"] == "equisolid"
+
+
+def test_dof_runs_with_a_third_party_zoom_and_refuses_closer_than_its_closest_focus():
+    # Tamron 150-500: 1.8 m at 500 mm (The Phoblographer)
+    (row,) = run_json("dof", "--lens", "tamron-150-500", "-f", "500", "-N", "8", "-s", "2m")
+    assert row["near_mm"] < 2000.0 < row["far_mm"]
+    assert row["magnification"] < 0.27  # 1:3.7 at its 1.8 m closest focus, less farther away
+    result = run("dof", "--lens", "tamron-150-500", "-f", "500", "-N", "8", "-s", "1.5m")
+    assert result.exit_code == 2
+    assert "1.8 m" in result.output
