@@ -147,6 +147,8 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
         lens = found.lens and equipment.set_member(
             found.lens, focal_lengths=flatten(params.get("focal_length")) if "focal_length" in params else [])
         ctx.meta[CAMERA], ctx.meta[LENS] = found.camera, lens
+        if "squeeze" in params:  # an anamorphic lens brings its squeeze; a --squeeze typed wins
+            params["squeeze"] = equipment.lens_squeeze(lens, squeeze=params["squeeze"])
         if lens is not None:
             given_f = flatten(params.get("focal_length")) if "focal_length" in params else [lens.focal_min_mm]
             brought = equipment.lens_defaults(lens, focal_lengths=given_f,

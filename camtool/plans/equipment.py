@@ -14,7 +14,9 @@ API) asks these functions; the precedence rules live here and nowhere else:
   and brings its camera (unless a sensor is given) and lens;
 - **lens**: a prime's focal length and a single-aperture lens's f-number fill
   what is left empty; focal lengths, f-numbers and focus distances outside
-  what the lens does are refused.
+  what the lens does are refused;
+- **squeeze**: ``squeeze`` given > an anamorphic lens preset's ``squeeze`` >
+  none (spherical); a squeeze given is checked against the one bound either way.
 
 The preset database is opened only when a preset is named (``database`` is
 called then): the default sensor and an inline size need no YAML at all.
@@ -279,6 +281,27 @@ def set_member(lens: Any, *, focal_lengths: Sequence[float]) -> Any:
     if found is None:
         raise InputError("focal_length", f"{wanted[0]:g} mm is not in the set {{lens}} {lens.id}: {names} mm")
     return found
+
+
+def lens_squeeze(lens: Any, *, squeeze: float | None = None) -> float | None:
+    """The anamorphic squeeze in use: ``squeeze`` given, else the ``lens`` preset's own, else None (spherical).
+
+    A squeeze given wins over the preset's, as every value typed wins over a
+    preset (``--squeeze 1`` asks an anamorphic lens for the spherical answer of
+    its marked focal length); both are in the one range of ``--squeeze``,
+    :data:`camtool.core.ranges.SQUEEZE` (docs/cine.md §5a).
+
+    >>> from types import SimpleNamespace
+    >>> orion = SimpleNamespace(squeeze=2.0)
+    >>> lens_squeeze(orion), lens_squeeze(orion, squeeze=1.5), lens_squeeze(None), lens_squeeze(None, squeeze=1.3)
+    (2.0, 1.5, None, 1.3)
+    """
+    from camtool.core.ranges import SQUEEZE, describe
+
+    chosen = squeeze if squeeze is not None else getattr(lens, "squeeze", None)
+    if chosen is not None and not SQUEEZE[0] <= chosen <= SQUEEZE[1]:
+        raise DomainError("squeeze", chosen, describe(SQUEEZE))
+    return chosen
 
 
 def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any]) -> dict[str, float]:
