@@ -14,7 +14,8 @@ DB = ROOT / "lens_db"
 def shipped_counts() -> dict[str, int]:
     counts = {kind: len(yaml.safe_load((DB / f"{kind}.yaml").read_text(encoding="utf-8"))[kind])
               for kind in ("sensors", "cameras", "lenses", "scenes")}
-    counts["compact-lenses"] = len(yaml.safe_load((DB / "compact-lenses.yaml").read_text(encoding="utf-8"))["lenses"])
+    for extra in ("compact-lenses", "cine-lenses"):
+        counts[extra] = len(yaml.safe_load((DB / f"{extra}.yaml").read_text(encoding="utf-8"))["lenses"])
     counts["prescriptions"] = len(list((DB / "prescriptions").glob("*.yaml")))
     return counts
 
@@ -29,13 +30,25 @@ def test_readme_counts_the_shipped_presets():
     assert said == {kind: counts[kind] for kind in said}
     compacts = re.search(r"and (\d+) built-in lenses of compacts \(`compact-lenses\.yaml`\)", text)
     assert compacts and int(compacts.group(1)) == counts["compact-lenses"]
+    sets = re.search(r"(\d+) cinema lens sets \(`cine-lenses\.yaml`", text)
+    assert sets and int(sets.group(1)) == counts["cine-lenses"]
 
 
 def test_lens_db_readme_table_counts_the_shipped_presets():
     text = (DB / "README.md").read_text(encoding="utf-8")
     counts = shipped_counts()
-    for kind in ("sensors", "cameras", "compact-lenses", "lenses", "scenes"):
+    for kind in ("sensors", "cameras", "compact-lenses", "cine-lenses", "lenses", "scenes"):
         row = re.search(rf"^\| `{kind}\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
         assert row and int(row.group(1)) == counts[kind], kind
     row = re.search(r"^\| `prescriptions/\*\.yaml` \|.*\| (\d+) \|$", text, re.MULTILINE)
     assert row and int(row.group(1)) == counts["prescriptions"]
+
+
+def test_the_cine_sets_the_issue_asks_for_stay_shipped():
+    """Floors: the cinema lens sets and the anamorphic set shipped in cine-lenses.yaml are not lost."""
+    lenses = yaml.safe_load((DB / "cine-lenses.yaml").read_text(encoding="utf-8"))["lenses"]
+    sets = [lens for lens in lenses if "set" in lens]
+    assert len(sets) >= 4 and sum(len(lens["set"]) for lens in sets) >= 33
+    assert any(lens.get("squeeze") for lens in lenses)
+    cameras = yaml.safe_load((DB / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]
+    assert len(cameras) >= 173 and sum(1 for c in cameras if c.get("category") == "cine") >= 20
