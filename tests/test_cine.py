@@ -235,3 +235,98 @@ def test_an_unreadable_frames_file_is_one_line_naming_the_option(tmp_path) -> No
     result = run("chart", "shot", "-o", str(tmp_path / "shot.svg"), "--frames", str(tmp_path / "none.csv"))
     assert result.exit_code == 1
     assert result.stderr.startswith("Error: --frames ") and len(result.stderr.splitlines()) == 1
+
+
+# --- anamorphic lens presets (docs/cine.md §5a) -------------------------------------------------
+
+def test_an_anamorphic_preset_brings_its_squeeze_and_a_typed_squeeze_wins() -> None:
+    # lens_db/cine-lenses.yaml, cooke-anamorphic-i: 2x (StudioDaily, April 2014)
+    scene = ["-f", "50", "--camera", "arri-alexa-35"]
+    (preset,) = run_json("fov", "--lens", "cooke-anamorphic-i", *scene)
+    (typed,) = run_json("fov", "--squeeze", "2", *scene)
+    assert preset == typed and preset["squeeze"] == 2.0
+    # the horizontal angle covers the de-squeezed width S·w (Wikipedia, "Angle of view": 2·atan(d/2f))
+    assert preset["horizontal_deg"] == pytest.approx(math.degrees(2 * math.atan(2 * 27.99 / 100)), rel=1e-12)
+    (wins,) = run_json("fov", "--lens", "cooke-anamorphic-i", "--squeeze", "1.5", *scene)
+    assert wins == run_json("fov", "--squeeze", "1.5", *scene)[0]
+    (spherical,) = run_json("fov", "--lens", "cooke-anamorphic-i", "--squeeze", "1", *scene)
+    assert spherical["horizontal_deg"] == pytest.approx(math.degrees(2 * math.atan(27.99 / 100)), rel=1e-12)
+    (plain,) = run_json("fov", "--lens", "cooke-s7i", *scene)
+    assert "squeeze" not in plain  # a spherical preset brings none
+
+
+def test_the_squeeze_plan_takes_the_one_bound() -> None:
+    from types import SimpleNamespace
+
+    from camtool.core.ranges import SQUEEZE
+    from camtool.plans.equipment import lens_squeeze
+
+    assert lens_squeeze(SimpleNamespace(squeeze=2.0)) == 2.0
+    assert lens_squeeze(SimpleNamespace(squeeze=2.0), squeeze=1.3) == 1.3
+    assert lens_squeeze(None) is None and lens_squeeze(SimpleNamespace()) is None
+    for value in SQUEEZE:
+        assert lens_squeeze(None, squeeze=value) == value
+    for value in (SQUEEZE[0] * (1 - 1e-9), SQUEEZE[1] * (1 + 1e-9)):
+        with pytest.raises(DomainError) as caught:
+            lens_squeeze(SimpleNamespace(squeeze=value))
+        assert caught.value.param == "squeeze"
+
+
+@pytest.mark.parametrize(("value", "ok"), [("1", True), ("4", True), ("0.99", False), ("4.01", False),
+                                           ("two", False), (".nan", False)])
+def test_a_preset_squeeze_is_checked_against_the_option_s_range(tmp_path, value: str, ok: bool) -> None:
+    path = tmp_path / "ana.yaml"
+    path.write_text(f"lenses:\n  - id: my-ana\n    focal_length_mm: 50\n    squeeze: {value}\n    source: mine\n")
+    option = run("fov", "-f", "50", "--squeeze", value, "--format", "json")
+    preset = run("fov", "--presets", str(path), "--lens", "my-ana", "--format", "json")
+    assert (option.exit_code == 0) == (preset.exit_code == 0) == ok, (option.output, preset.output)
+    if not ok:
+        assert "squeeze" in preset.stderr and preset.stderr.count("\n") == 1
+
+
+def test_dof_compose_and_chart_take_the_preset_s_squeeze(tmp_path) -> None:
+    common = ["--camera", "arri-alexa-35", "-f", "75"]
+    (by_preset,) = run_json("dof", "--lens", "cooke-anamorphic-i", *common, "-N", "T2.8", "-s", "10ft")
+    (by_option,) = run_json("dof", "--squeeze", "2", *common, "-N", "T2.8", "-s", "10ft")
+    assert by_preset == by_option and by_preset["horizontal_focal_length_mm"] == 37.5
+    framing = ["--subject-size", "4m", "--fill", "0.9", "--fill-axis", "width", "-N", "T2.8"]
+    assert (run_json("compose", "--lens", "cooke-anamorphic-i", *common, *framing)
+            == run_json("compose", "--squeeze", "2", *common, *framing))
+    pytest.importorskip("matplotlib")
+    import json as _json
+
+    for name, extra in (("preset", ["--lens", "cooke-anamorphic-i"]), ("option", ["--squeeze", "2"])):
+        result = run("chart", "dof", *extra, *common, "-N", "T2.8", "--model", "thin", "-o",
+                     str(tmp_path / f"{name}.svg"), "--data", str(tmp_path / f"{name}.json"))
+        assert result.exit_code == 0, result.output
+    preset, option = (_json.loads((tmp_path / f"{n}.json").read_text()) for n in ("preset", "option"))
+    assert preset["curves"] == option["curves"] and preset["extra"]["squeeze"] == 2.0
+
+
+# --- a camera's per-frame columns in dof --batch (docs/cine.md §5b) ------------------------------
+
+def test_dof_batch_reads_focus_and_t_stop_columns_as_distance_and_t_stops(tmp_path) -> None:
+    named = tmp_path / "named.csv"
+    named.write_text("frame,distance,focal_length,f_number\n1,1.5,50,T2.8\n2,2,50,T4\n3,inf,75,T2\n")
+    camera = tmp_path / "camera.csv"
+    camera.write_text("frame,focus,focal_length,t_stop\n1,1.5,50,2.8\n2,2,50,4\n3,inf,75,T2\n")
+    dashed = tmp_path / "dashed.csv"
+    dashed.write_text("frame,focus_mm,focal_length,T-Stop\n1,1500,50,2.8\n2,2000,50,4\n3,inf,75,2\n")
+    lines = tmp_path / "frames.jsonl"
+    lines.write_text('{"frame": 1, "focus": 1.5, "focal_length": 50, "t_stop": 2.8}\n'
+                     '{"frame": 2, "focus": 2, "focal_length": 50, "t_stop": 4}\n'
+                     '{"frame": 3, "focus": "inf", "focal_length": 75, "t_stop": "T2"}\n')
+    rows = [[{k: v for k, v in row.items() if k != "frame"}  # passed through: "1" from CSV, 1 from JSON
+             for row in run_json("dof", "--batch", str(path), "--camera", "arri-alexa-35")]
+            for path in (named, camera, dashed, lines)]
+    assert rows[0] == rows[1] == rows[2] == rows[3]
+    assert [r["t_stop"] for r in rows[1]] == [2.8, 4.0, 2.0] and {r["f_number_from"] for r in rows[1]} == {"t-stop"}
+    assert [r["distance_mm"] for r in rows[1]] == [1500.0, 2000.0, None]  # bare focus in metres, as -s
+
+
+def test_a_bad_t_stop_cell_is_one_line_naming_its_row(tmp_path) -> None:
+    camera = tmp_path / "camera.csv"
+    camera.write_text("frame,focus,focal_length,t_stop\n1,1.5,50,2.8\n2,2,50,0.1\n")
+    result = run("dof", "--batch", str(camera), "--format", "json")
+    assert result.exit_code == 2 and "row 2" in result.stderr and "t_stop" in result.stderr
+    assert result.stderr.count("\n") == 1

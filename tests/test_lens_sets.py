@@ -97,3 +97,27 @@ def test_bad_sets_in_a_preset_file(tmp_path, lines, key):
     with pytest.raises(PresetFileError) as caught:
         load_db(extra_files=(path,))
     assert key in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_the_cine_lens_file_s_sets_load_member_by_member():
+    """lens_db/cine-lenses.yaml (read with yaml): each set's members carry their own stop and close focus, and an
+    anamorphic set's squeeze reaches every member."""
+    from pathlib import Path
+
+    import yaml
+
+    path = Path(__file__).resolve().parents[1] / "lens_db" / "cine-lenses.yaml"
+    db = load_db()
+    for record in yaml.safe_load(path.read_text(encoding="utf-8"))["lenses"]:
+        lens = db.lens(record["id"])
+        rows = [(float(r["focal_length_mm"]), r.get("t_number_min"), r.get("min_focus_mm")) for r in record["set"]]
+        assert [(m.focal_min_mm, m.t_number_min, m.min_focus_mm) for m in lens.members] == rows
+        assert {m.squeeze for m in lens.members} == {record.get("squeeze")} and lens.squeeze == record.get("squeeze")
+        assert lens.approximate and lens.notes
+
+
+def test_a_set_member_s_own_close_focus_is_refused_closer():
+    # lens_db/cine-lenses.yaml, cooke-s7i: 0.36 m at 25 mm (its cited table)
+    result = run("dof", "--lens", "cooke-s7i", "-f", "25", "-N", "T2", "-s", "0.35m")
+    assert result.exit_code == 2 and "0.36 m" in result.stderr and result.stderr.count("\n") == 1
+    assert run("dof", "--lens", "cooke-s7i", "-f", "25", "-N", "T2", "-s", "0.36m").exit_code == 0

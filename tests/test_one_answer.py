@@ -220,3 +220,42 @@ def test_a_contrast_criterion_gives_one_answer_by_option_batch_and_api(criterion
     assert h["hyperfocal_mm"] == option["hyperfocal_mm"]
     (at_h,) = run_json("dof", "-f", "50", "-N", "8", "-s", f"{h['hyperfocal_mm']}mm", "--criterion", criterion)
     assert at_h["far_mm"] is None  # infinity
+
+
+ANAMORPHIC = sorted((m for lens in load_db().all("lens") if getattr(lens, "squeeze", None) for m in lens.members
+                     or [lens]), key=lambda m: m.id)
+
+
+@pytest.mark.parametrize("member", ANAMORPHIC, ids=lambda m: m.id)
+def test_an_anamorphic_preset_and_its_squeeze_typed_on_a_spherical_lens_give_one_answer(member, tmp_path) -> None:
+    """The same scene via --lens ANAMORPHIC and via --squeeze S on a spherical lens preset with the member's own
+    focal length, T-stop and closest focus: fov, dof, compose and chart dof give the same numbers."""
+    own = {"focal_length_mm": member.focal_min_mm, "t_number_min": member.t_number_min,
+           "min_focus_mm": member.min_focus_mm}
+    spherical = tmp_path / "spherical.yaml"
+    spherical.write_text("lenses:\n  - id: spherical\n    source: the anamorphic member's data without its squeeze\n"
+                         + "".join(f"    {k}: {v!r}\n" for k, v in own.items() if v is not None))
+    ways = {"preset": ["--lens", member.id],
+            "typed": ["--presets", str(spherical), "--lens", "spherical", "--squeeze", repr(member.squeeze)]}
+    common = ["--camera", "arri-alexa-35"]
+    answers = {}
+    for way, args in ways.items():
+        answers[way] = [
+            run_json("fov", *args, *common),
+            run_json("dof", *args, *common, "-N", "T2.8", "-s", "3m,10ft"),
+            run_json("compose", *args, *common, "--subject-size", "4m", "--fill", "0.9", "--fill-axis", "width",
+                     "-N", "T2.8"),
+        ]
+    assert answers["preset"] == answers["typed"]
+    assert answers["preset"][1][0]["horizontal_focal_length_mm"] == member.focal_min_mm / member.squeeze
+    pytest.importorskip("matplotlib")
+    import json
+
+    curves = {}
+    for way, args in ways.items():
+        data = tmp_path / f"{way}.json"
+        result = run("chart", "dof", *args, *common, "-N", "T2.8", "-o", str(tmp_path / f"{way}.svg"), "--data",
+                     str(data))
+        assert result.exit_code == 0, result.output
+        curves[way] = json.loads(data.read_text())["curves"]
+    assert curves["preset"] == curves["typed"]

@@ -133,3 +133,28 @@ def _option_bounds_of(param: click.Parameter) -> tuple[float, float] | None:
     if isinstance(kind, Parsed):
         return kind.bounds
     return (kind.low, kind.high) if isinstance(kind, NumberType) else None
+
+
+def test_every_squeeze_takes_one_range_option_preset_and_plan() -> None:
+    """--squeeze on every command, a lens preset's squeeze key and the plan that picks between them share
+    camtool.core.ranges.SQUEEZE (a batch cell of --squeeze is compared with the option in test_batch_bounds)."""
+    from camtool.core.ranges import SQUEEZE
+    from camtool.plans.equipment import lens_squeeze
+    from camtool.presets.schema import Bad, squeeze_factor
+
+    found = {}
+    ctx = click.Context(cli)
+    for name in cli.list_commands(ctx):
+        command = cli.get_command(ctx, name)
+        for sub in list(getattr(command, "commands", {}).values()) or [command]:
+            for param in sub.params:
+                if "--squeeze" in getattr(param, "opts", ()):
+                    found[f"{name} {sub.name}"] = _option_bounds_of(param)
+    assert set(found) >= {"fov fov", "dof dof", "compose compose", "chart dof"} and set(found.values()) == {SQUEEZE}
+    for value in SQUEEZE:
+        assert squeeze_factor(value) == value == lens_squeeze(None, squeeze=value)
+    for value in (SQUEEZE[0] * (1 - 1e-9), SQUEEZE[1] * (1 + 1e-9)):
+        with pytest.raises(Bad):
+            squeeze_factor(value)
+        with pytest.raises(DomainError):
+            lens_squeeze(None, squeeze=value)

@@ -45,7 +45,7 @@ from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, f
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
-from camtool.core.records import Chunk, chunks, floats, group_rows, open_source, unit_column
+from camtool.core.records import CAMERA_DATA_COLUMNS, Chunk, camera_cells, chunks, floats, group_rows, open_source, unit_column
 from camtool.render.columnar import ColumnRows, placed, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
@@ -90,7 +90,7 @@ class _Columns:
             for opt in param.opts:
                 self.aliases[_loose(opt)] = (param.name, None)
             self.aliases[_loose(param.name)] = (param.name, None)
-        for key, target in {**_KEY_ALIASES, **EXIFTOOL_COLUMNS}.items():
+        for key, target in {**_KEY_ALIASES, **EXIFTOOL_COLUMNS, **CAMERA_DATA_COLUMNS}.items():
             if target[0] in self.params:
                 self.aliases.setdefault(_loose(key), target)
         self.ignored = {_loose(key) for key in getattr(command, "output_keys", frozenset())}
@@ -233,6 +233,7 @@ class _Batch:
                 continue
             name, unit = target
             param = self.columns.params[name]
+            cells, unit = camera_cells(cells, unit)  # a camera's t_stop column: a bare 2.8 is T2.8
             if _vector(param) and not _t_stops(self.ctx, param, cells):
                 parsed: Any = self._numbers(param, unit, column, cells, numbers, errors)
             else:

@@ -93,8 +93,8 @@ aperture_options = stack(
 
 squeeze_option = click.option(
     "--squeeze", type=NumberType(*ranges.SQUEEZE), callback=one_value,
-    help="Anamorphic squeeze (1.3, 1.5, 1.8, 2): the horizontal angle is that of the de-squeezed width; dof adds "
-    "the horizontal limits, of f/squeeze (docs/cine.md).")
+    help="Anamorphic squeeze (1.3, 1.5, 1.8, 2; default: an anamorphic --lens preset's own): the horizontal angle is "
+    "that of the de-squeezed width; dof adds the horizontal limits, of f/squeeze (docs/cine.md).")
 
 distance_plane_option = click.option(
     "--distance-from", "distance_from", type=click.Choice(FOCUS_PLANES), default="sensor", show_default=True,

@@ -434,3 +434,36 @@ def _python_floats(cells: Sequence[Any]) -> Any:
     if any(isinstance(cell, str) and "_" in cell for cell in cells):
         raise ValueError("a digit separator '_' in a number")
     return np.array(cells, dtype=float)
+
+
+T_STOP_CELLS = "T"
+"""The unit of a column whose bare numbers are T-stops (a camera's ``t_stop``): see :func:`t_stop_cells`."""
+
+CAMERA_DATA_COLUMNS = {"focus": ("distance", None), "t_stop": ("f_number", T_STOP_CELLS)}
+"""The columns of a camera's per-frame metadata that name no option (docs/cine.md §5b): the option each stands for
+and the unit of its bare numbers. ``focus`` is the focus distance (a bare number in metres, as ``-s``; ``focus_mm``
+in mm); ``t_stop`` (also ``t-stop``, ``tstop``: case, dashes and underscores do not matter) holds T-stops, a bare
+``2.8`` there being ``T2.8``."""
+
+
+def camera_cells(cells: Sequence[Any], unit: str | None) -> tuple[Sequence[Any], str | None]:
+    """The cells of a column and the unit of its bare numbers, as ``-N`` reads them when the column holds T-stops
+    (``unit`` :data:`T_STOP_CELLS`): a bare number ``2.8`` (text or a JSON number) becomes ``T2.8``; a cell already
+    written ``T2.8``, an empty cell and anything else stay as they are (and are parsed, or refused, as ``-N``
+    would). Any other column is returned as it is.
+
+    >>> camera_cells(["2.8", " 4", "T5.6", "", None, 2, ".7", "f/8"], T_STOP_CELLS)
+    (['T2.8', 'T4', 'T5.6', '', None, 'T2', 'T.7', 'f/8'], None)
+    >>> camera_cells(["3"], "mm")
+    (['3'], 'mm')
+    """
+    if unit != T_STOP_CELLS:
+        return cells, unit
+    out: list[Any] = []
+    for cell in cells:
+        if isinstance(cell, (int, float)) and not isinstance(cell, bool):
+            out.append(f"T{cell!r}")
+            continue
+        text = cell.strip() if isinstance(cell, str) else ""
+        out.append(f"T{text}" if text[:1].isdigit() or (text[:1] == "." and text[1:2].isdigit()) else cell)
+    return out, None

@@ -14,7 +14,9 @@ API) asks these functions; the precedence rules live here and nowhere else:
   and brings its camera (unless a sensor is given) and lens;
 - **lens**: a prime's focal length and a single-aperture lens's f-number fill
   what is left empty; focal lengths, f-numbers and focus distances outside
-  what the lens does are refused.
+  what the lens does are refused;
+- **squeeze**: ``squeeze`` given > an anamorphic lens preset's ``squeeze`` >
+  none (spherical); a squeeze given is checked against the one bound either way.
 
 The preset database is opened only when a preset is named (``database`` is
 called then): the default sensor and an inline size need no YAML at all.
@@ -293,6 +295,27 @@ def set_member(lens: Any, *, focal_lengths: Sequence[float]) -> Any:
     return found
 
 
+def lens_squeeze(lens: Any, *, squeeze: float | None = None) -> float | None:
+    """The anamorphic squeeze in use: ``squeeze`` given, else the ``lens`` preset's own, else None (spherical).
+
+    A squeeze given wins over the preset's, as every value typed wins over a
+    preset (``--squeeze 1`` asks an anamorphic lens for the spherical answer of
+    its marked focal length); both are in the one range of ``--squeeze``,
+    :data:`camtool.core.ranges.SQUEEZE` (docs/cine.md §5a).
+
+    >>> from types import SimpleNamespace
+    >>> orion = SimpleNamespace(squeeze=2.0)
+    >>> lens_squeeze(orion), lens_squeeze(orion, squeeze=1.5), lens_squeeze(None), lens_squeeze(None, squeeze=1.3)
+    (2.0, 1.5, None, 1.3)
+    """
+    from camtool.core.ranges import SQUEEZE, describe
+
+    chosen = squeeze if squeeze is not None else getattr(lens, "squeeze", None)
+    if chosen is not None and not SQUEEZE[0] <= chosen <= SQUEEZE[1]:
+        raise DomainError("squeeze", chosen, describe(SQUEEZE))
+    return chosen
+
+
 def lens_defaults(lens: Any, *, focal_lengths: Sequence[float], f_numbers: Sequence[Any]) -> dict[str, float]:
     """What a lens brings that was left empty: a prime's focal length; a single-aperture lens's f-number, and a
     fixed (built-in) lens's widest.
@@ -400,7 +423,8 @@ def apply_equipment(*, scene: str | None, camera: str | None, lens: str | None, 
 
     In this order: the scene fills the inputs left empty and names the camera
     and lens (:func:`resolve_equipment`); a lens set gives its member for the
-    focal length (:func:`set_member`); the lens brings its focal length and
+    focal length (:func:`set_member`); an anamorphic lens its squeeze
+    (:func:`lens_squeeze`); the lens brings its focal length and
     f-number where none is given (:func:`lens_defaults`) and refuses what it
     cannot do (:func:`check_lens`); then the hiatus is checked against the
     focal lengths (:func:`check_hiatus`). A refusal of a value the scene gave
@@ -418,6 +442,10 @@ def apply_equipment(*, scene: str | None, camera: str | None, lens: str | None, 
     now = {**inputs, **{name: [v] if name in LIST_INPUTS else v for name, v in values.items()}}
     has = {name: name in inputs for name in ("focal_length", "f_number")}
     glass = found.lens and set_member(found.lens, focal_lengths=now["focal_length"] if has["focal_length"] else [])
+    if "squeeze" in inputs:  # an anamorphic lens brings its squeeze; a --squeeze typed wins
+        squeeze = lens_squeeze(glass, squeeze=inputs["squeeze"])
+        if squeeze != inputs["squeeze"]:
+            values["squeeze"] = now["squeeze"] = squeeze
     if glass is not None:
         brought = lens_defaults(glass, focal_lengths=now["focal_length"] if has["focal_length"] else [glass.focal_min_mm],
                                 f_numbers=now["f_number"] if has["f_number"] else [0])

@@ -346,7 +346,8 @@ def _build_lens(db: Database, entry: _Entry) -> Lens:
         close_focus=tuple((row["focal_length_mm"], row["min_focus_mm"], row.get("max_magnification"))
                           for row in r.get("close_focus", ())), t_number_min=r.get("t_number_min"),
         tilt_max_deg=r.get("tilt_max_deg"), focus_at_max_magnification_mm=r.get("focus_at_max_magnification_mm"),
-        projection=r.get("projection"), field_max_deg=r.get("field_max_deg"), **_common(entry))
+        projection=r.get("projection"), field_max_deg=r.get("field_max_deg"), squeeze=r.get("squeeze"),
+        **_common(entry))
 
 
 def _build_lens_set(entry: _Entry) -> Lens:
@@ -354,6 +355,7 @@ def _build_lens_set(entry: _Entry) -> Lens:
     r = entry.record
     common = _common(entry)
     shared = {"mount": r.get("mount"), "category": r.get("category"), "approximate": r.get("approximate", False),
+              "squeeze": r.get("squeeze"),
               "sensor_id": str(r["sensor"]) if "sensor" in r else None,
               "source": common["source"], "notes": common["notes"], "origin": common["origin"], "tier": common["tier"]}
     members = tuple(

@@ -41,7 +41,7 @@ from camtool.presets.schema import (
     suggest,
 )
 
-CACHE_FORMAT = 10
+CACHE_FORMAT = 11
 """Bumped whenever the record layout changes, so old cache files are ignored."""
 
 _CACHE_KIND = f"presets-{CACHE_FORMAT}"

@@ -280,6 +280,24 @@ def projection_name(value: Any) -> str:
     return str(value)
 
 
+def squeeze_factor(value: Any) -> float:
+    """An anamorphic lens's squeeze, in the one range of ``--squeeze`` (:data:`camtool.core.ranges.SQUEEZE`).
+
+    >>> squeeze_factor(2)
+    2.0
+    >>> squeeze_factor(0.5)
+    Traceback (most recent call last):
+    ...
+    camtool.presets.schema.Bad: must be from 1 to 4, got 0.5
+    """
+    from camtool.core.ranges import SQUEEZE, describe
+
+    number = _real(value)
+    if not SQUEEZE[0] <= number <= SQUEEZE[1]:
+        raise Bad(f"must be from {describe(SQUEEZE)}, got {value!r}")
+    return number
+
+
 def field_degrees(value: Any) -> float:
     """A lens's whole field in degrees, more than 0 and at most 360."""
     number = _real(value)
@@ -459,6 +477,7 @@ FIELDS: dict[str, dict[str, Callable[[Any], Any]]] = {
         "tilt_max_deg": positive,
         "projection": projection_name,
         "field_max_deg": field_degrees,
+        "squeeze": squeeze_factor,
         "prescription": reference,
         "sensor": reference,
         "mount": text,
@@ -871,6 +890,7 @@ class Lens:
     projection: str | None = None  # a fisheye's mapping (camtool.geometry.projection); None: rectilinear
     members: tuple[Lens, ...] = field(default=(), compare=False, repr=False)  # a lens set's lenses
     field_max_deg: float | None = None  # a fisheye's whole field (its image circle), degrees
+    squeeze: float | None = None  # an anamorphic lens's squeeze factor (docs/cine.md §5a); None: spherical
 
     kind = "lens"
 
