@@ -38,7 +38,10 @@ same directory, renamed over the entry) and the temporary file is removed on
 any failure. ``CAMTOOL_NO_CACHE`` set to any non-empty value turns every cache
 off, reading and writing (:func:`enabled`).
 
-Only the paths that use a cache import :mod:`hashlib`.
+Only the paths that use a cache hash anything, and they take SHA-256 and
+BLAKE2b from CPython's own small modules when it has them (the same
+algorithms :mod:`hashlib` offers, without loading OpenSSL's, which costs a
+few milliseconds of a command's start-up).
 """
 
 from __future__ import annotations
@@ -74,11 +77,33 @@ def root() -> str:
     return os.path.join(base, "camtool")
 
 
-def source_digest(data: bytes) -> str:
-    """The SHA-256 (hex) that binds an entry to the bytes it was derived from."""
-    import hashlib
+def _sha256(data: bytes) -> Any:
+    try:
+        from _sha2 import sha256  # type: ignore[import-not-found]  # CPython 3.12 and later
+    except ImportError:
+        try:
+            from _sha256 import sha256  # type: ignore[import-not-found,no-redef]  # CPython 3.11
+        except ImportError:
+            from hashlib import sha256  # type: ignore[assignment]
+    return sha256(data)
 
-    return hashlib.sha256(data).hexdigest()
+
+def _blake2b(data: bytes, key: bytes) -> Any:
+    try:
+        from _blake2 import blake2b
+    except ImportError:
+        from hashlib import blake2b  # type: ignore[assignment]
+    return blake2b(data, key=key, digest_size=_MAC_BYTES)
+
+
+def source_digest(data: bytes) -> str:
+    """The SHA-256 (hex) that binds an entry to the bytes it was derived from.
+
+    >>> import hashlib
+    >>> source_digest(b"camtool") == hashlib.sha256(b"camtool").hexdigest()
+    True
+    """
+    return str(_sha256(data).hexdigest())
 
 
 def _version() -> str:
@@ -94,9 +119,7 @@ def _signed(kind: str, source: str, payload: bytes) -> bytes:
 
 
 def _mac(key: bytes, kind: str, source: str, payload: bytes) -> str:
-    import hashlib
-
-    return hashlib.blake2b(_signed(kind, source, payload), key=key, digest_size=_MAC_BYTES).hexdigest()
+    return str(_blake2b(_signed(kind, source, payload), key).hexdigest())
 
 
 def _read_key(path: str) -> bytes | None:

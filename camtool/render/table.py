@@ -16,10 +16,12 @@ positive number is ignored.
 A row with no answer keeps its place (dashes) and its reason joins the footer;
 many such rows are summarised (the first few, a count, and where to find all).
 
-rich draws tables of up to :data:`RICH_ROWS` rows; longer ones are drawn a
-line at a time with the same widths, gaps, rule and escape codes (byte for byte
-what rich draws, which a test holds), because rich takes about a millisecond a
-row to lay out.
+rich draws tables of up to :data:`RICH_ROWS` rows, and longer ones whose text
+must wrap (up to :data:`WRAP_ROWS` rows; longer ones then turn into blocks);
+the others are drawn a line at a time with the same widths, gaps, rule and
+escape codes (byte for byte what rich draws, which a test holds), because rich
+takes about a millisecond a row to lay out (``presets list``, 400 rows, spent
+most of its time there).
 """
 
 from __future__ import annotations
@@ -35,8 +37,10 @@ from camtool.render.theme import colour_system, rich_style, styled
 
 GAP = "   "
 RULE = "─"
-RICH_ROWS = 500
-"""Tables longer than this are drawn line by line (the same bytes rich would draw)."""
+RICH_ROWS = 60
+"""Tables longer than this are drawn line by line (the same bytes rich would draw) unless text must wrap."""
+WRAP_ROWS = 500
+"""Tables longer than this whose text would have to wrap are drawn as blocks (``key: value``) instead."""
 ROW_NOTES = 5
 """Notes on rows with no answer shown in a footer before the rest are counted."""
 
@@ -178,7 +182,7 @@ def render_table(
     failed = [_no_answer(row) for row in rows]
     drawn = [_draw(column, rows, units, failed) for column in columns]
     shown, wrapped = _fit(drawn, width)
-    vertical = wrapped is None or (bool(wrapped) and len(rows) > RICH_ROWS)
+    vertical = wrapped is None or (bool(wrapped) and len(rows) > WRAP_ROWS)
     notes = _reasons(rows, drawn, failed, shown, vertical) + list(row_notes)
     if vertical:
         kept = [d for d in drawn if not d.column.legend]
@@ -187,7 +191,7 @@ def render_table(
     else:
         kept = [drawn[i]._replace(size=(wrapped or {}).get(i, drawn[i].size)) for i in shown]
         body = (_rich(kept, len(rows), colour, {kept[shown.index(i)].column.key for i in wrapped or {}})
-                if len(rows) <= RICH_ROWS else _lines(kept, len(rows), colour))
+                if len(rows) <= RICH_ROWS or wrapped else _lines(kept, len(rows), colour))
         left_out = [drawn[i].column for i in range(len(drawn)) if i not in shown]
     legends = [d.column.legend for d in kept if d.column.legend]
     text = body + _footer(footer, legends, _summary(notes), width, colour)
