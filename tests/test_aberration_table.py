@@ -105,7 +105,7 @@ def test_scalar_and_array_shares_agree():
         assert many[i, j] == pytest.approx(auto.aberration_share(lens, float(n[i, 0]), float(m[0, j])), rel=1e-12)
 
 
-# --- the tables shipped with the package (camtool/dof/aberrations.json, python -m camtool.dof.tables) ---------
+# --- the tables shipped with the package (camtool/dof/aberrations.json, python -m camtool.presets.shipped) ---------
 
 
 def _shipped_file() -> dict:
@@ -113,14 +113,14 @@ def _shipped_file() -> dict:
 
 
 def test_the_shipped_tables_are_those_of_the_shipped_prescriptions_computed_afresh():
-    from camtool.dof import tables
+    from camtool.presets import shipped as tables
 
     shipped = _shipped_file()
     lenses = tables.shipped_prescriptions()
     assert len(lenses) >= 5
     # one table per shipped prescription, keyed by its content digest: an edited prescription is not current
     assert sorted(shipped["tables"]) == sorted(auto._source(lens) for _name, lens in lenses), \
-        "camtool/dof/aberrations.json is out of date: run python -m camtool.dof.tables"
+        "camtool/dof/aberrations.json is out of date: run python -m camtool.presets.shipped"
     assert shipped["version"] == auto._TABLE_VERSION
     for name, lens in lenses:
         grid, rows = auto._compute_table(lens)  # a fresh ray-traced calibration, not read from anywhere
@@ -143,7 +143,7 @@ def _fresh(monkeypatch, tmp_path, shipped: dict) -> None:
 @pytest.mark.parametrize("poison", ["a negative share", "NaN", "another grid", "other magnifications", "not a table",
                                     "a string share", "rows missing"])
 def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypatch, tmp_path):
-    from camtool.dof import tables
+    from camtool.presets import shipped as tables
 
     name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "dgauss100.yaml")
     source = auto._source(lens)
@@ -171,7 +171,7 @@ def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypat
 
 
 def test_a_sound_shipped_table_is_used_without_tracing_and_cached(monkeypatch, tmp_path):
-    from camtool.dof import tables
+    from camtool.presets import shipped as tables
 
     name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "telephoto127.yaml")
     source = auto._source(lens)

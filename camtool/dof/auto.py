@@ -253,7 +253,8 @@ def aberration_table(prescription: Any) -> Table:
     :mod:`camtool.core.cache` (a regular file of at most 64 KiB, its MAC,
     the camtool version, the content digest) and of :func:`_valid_table`;
     otherwise it is computed afresh and written over the entry.
-    ``CAMTOOL_NO_CACHE`` bypasses the disk.
+    ``CAMTOOL_NO_CACHE`` bypasses the disk and the shipped tables (every
+    table computed, as every preset file is then parsed).
 
     Examples
     --------
@@ -265,7 +266,7 @@ def aberration_table(prescription: Any) -> Table:
     from camtool.core import cache
 
     if not cache.enabled():
-        return _shipped_table(_source(prescription), prescription) or _compute_table(prescription)
+        return _compute_table(prescription)
     source = _source(prescription)
     path = _cache_path(source)
     table = _read_table(path, source, prescription)
@@ -278,7 +279,7 @@ def aberration_table(prescription: Any) -> Table:
 SHIPPED_TABLES = "aberrations.json"
 """The tables of the shipped prescriptions (``lens_db/prescriptions/``), beside this module.
 
-Written by ``python -m camtool.dof.tables`` (:mod:`camtool.dof.tables`); each
+Written by ``python -m camtool.presets.shipped`` (:mod:`camtool.presets.shipped`); each
 table is keyed by the :func:`_source` digest of the prescription it was
 computed for, so an edited prescription, another grid or another table
 version finds no table there and is computed afresh.

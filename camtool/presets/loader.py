@@ -9,7 +9,10 @@ Parsing YAML is the slow part of a command that names a preset (PyYAML's
 import alone costs about 20 ms), so the validated records of every file are
 cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, bound to the
 SHA-256 of the file's path and bytes (recomputed on every read). A warm start
-reads only the JSON files and never imports yaml.
+reads only the JSON files and never imports yaml; so does a first one with the
+shipped files, whose records ship with the package (:data:`SHIPPED_RECORDS`,
+used only for the very bytes they were made from and checked as a cache
+entry's records are; ``CAMTOOL_NO_CACHE`` parses every file).
 
 The cache is never trusted: an entry is used only when it passes the checks
 of :mod:`camtool.core.cache` (a regular file of bounded size, the camtool
@@ -330,9 +333,70 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
         cached = _Cached.parse(payload, raw, cache_path, source, limit)
         if cached is not None:
             return FileData(path, cached=cached)
+    payload = shipped_payload(absolute, raw)
+    if payload is not None:
+        cached = _Cached.parse(payload, raw, cache_path, source, limit)
+        if cached is not None:
+            if len(payload) + 1024 <= limit:
+                cache.write(cache_path, _CACHE_KIND, source, payload)
+            return FileData(path, cached=cached)
     data = _parse_or_raise(path, raw)
     _write_cache(cache_path, source, data._records, limit)
     return data
+
+
+SHIPPED_RECORDS = "shipped-records.json"
+"""The records of the shipped preset files (``lens_db/``), beside this module.
+
+Written by ``python -m camtool.presets.shipped``: one JSON line mapping each
+file's name under ``lens_db/`` to the SHA-256 of the bytes it was made from
+and its span in the rest of the file, then each file's records in the
+layout of a cache entry. A first command (every cache empty) reads these
+instead of parsing the YAML; each is used only for the very bytes it was
+made from, and its records pass the same checks as a cache entry's
+(:func:`_valid_record`) when they are used. An edited file finds no match
+and is parsed.
+"""
+
+_shipped_index: dict[str, Any] | None = None
+
+
+def _shipped_records() -> tuple[dict[str, Any], bytes]:
+    """The index line and the body of :data:`SHIPPED_RECORDS` (empty when missing or not the expected shape)."""
+    global _shipped_index
+    if _shipped_index is None:
+        _shipped_index = {"index": {}, "body": b""}
+        try:
+            raw = read_bytes(os.path.join(os.path.dirname(os.path.abspath(__file__)), SHIPPED_RECORDS), 64 << 20)
+        except FileProblem:
+            return {}, b""
+        end = raw.find(b"\n")
+        try:
+            index = json.loads(raw[:end]) if end > 0 else None
+        except (ValueError, RecursionError):
+            index = None
+        if isinstance(index, dict) and index.get("format") == CACHE_FORMAT and isinstance(index.get("files"), dict):
+            _shipped_index = {"index": index["files"], "body": raw[end + 1:]}
+    return _shipped_index["index"], _shipped_index["body"]
+
+
+def shipped_payload(absolute: str, raw: bytes) -> bytes | None:
+    """The shipped records of the file at ``absolute`` when it is a shipped file holding exactly ``raw``, else None."""
+    from camtool.core import cache
+    from camtool.presets import paths
+
+    directory = os.path.join(os.path.realpath(paths.shipped_dir()), "")
+    real = os.path.realpath(absolute)
+    if not real.startswith(directory):
+        return None
+    index, body = _shipped_records()
+    entry = index.get(real[len(directory):].replace(os.sep, "/"))
+    if not (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], str)
+            and all(type(n) is int and n >= 0 for n in entry[1:]) and entry[1] + entry[2] <= len(body)):
+        return None
+    if entry[0] != cache.source_digest(raw):
+        return None
+    return body[entry[1]:entry[1] + entry[2]]
 
 
 def _parse_or_raise(path: str, raw: bytes) -> FileData:
@@ -461,6 +525,13 @@ def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str,
     """
     from camtool.core import cache
 
+    payload = entry_payload(records)
+    if payload is not None and len(payload) + 1024 <= limit:
+        cache.write(cache_path, _CACHE_KIND, source, payload)
+
+
+def entry_payload(records: dict[str, list[dict[str, Any]]]) -> bytes | None:
+    """The records of one file in the layout of a cache entry (None when a value cannot be written as JSON)."""
     sections: dict[str, list[int]] = {}
     blobs = []
     offset = 0
@@ -474,7 +545,5 @@ def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str,
                 offset += len(blob)
         header = json.dumps(sections, separators=(",", ":")).encode("utf-8")
     except (TypeError, ValueError, RecursionError):
-        return
-    payload = header + b"\n" + b"".join(blobs)
-    if len(payload) + 1024 <= limit:
-        cache.write(cache_path, _CACHE_KIND, source, payload)
+        return None
+    return header + b"\n" + b"".join(blobs)
