@@ -145,7 +145,7 @@ def _fresh(monkeypatch, tmp_path, shipped: dict) -> None:
 def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypatch, tmp_path):
     from camtool.presets import shipped as tables
 
-    name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "dgauss100.yaml")
+    _name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "dgauss100.yaml")
     source = auto._source(lens)
     table = json.loads(json.dumps(_shipped_file()["tables"][source]))
     if poison == "a negative share":
@@ -173,7 +173,7 @@ def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypat
 def test_a_sound_shipped_table_is_used_without_tracing_and_cached(monkeypatch, tmp_path):
     from camtool.presets import shipped as tables
 
-    name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "telephoto127.yaml")
+    _name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "telephoto127.yaml")
     source = auto._source(lens)
     shipped = _shipped_file()["tables"]
     _fresh(monkeypatch, tmp_path, shipped)

@@ -641,3 +641,13 @@ def test_the_command_line_answers_as_without_the_cache(home, printed_reference, 
     env = _environment()
     assert _camtool(TABLE_COMMAND, env) == printed_reference
     assert _camtool(TABLE_COMMAND, env) == printed_reference  # and from the rewritten entries
+
+
+def test_the_digests_are_hashlib_s_sha256_and_keyed_blake2b() -> None:
+    import hashlib
+
+    for data in (b"", b"camtool", bytes(range(256)) * 300):
+        assert cache.source_digest(data) == hashlib.sha256(data).hexdigest()
+        key = hashlib.sha256(data).digest()
+        assert cache._mac(key, "presets-10", "s", data) == hashlib.blake2b(
+            cache._signed("presets-10", "s", data), key=key, digest_size=32).hexdigest()

@@ -77,23 +77,22 @@ def root() -> str:
     return os.path.join(base, "camtool")
 
 
-def _sha256(data: bytes) -> Any:
-    try:
-        from _sha2 import sha256  # type: ignore[import-not-found]  # CPython 3.12 and later
-    except ImportError:
+def _hash(name: str, modules: tuple[str, ...]) -> Any:
+    """The constructor ``name`` from the first of ``modules`` that has it (:mod:`hashlib` last)."""
+    for module in (*modules, "hashlib"):
         try:
-            from _sha256 import sha256  # type: ignore[import-not-found,no-redef]  # CPython 3.11
-        except ImportError:
-            from hashlib import sha256  # type: ignore[assignment]
-    return sha256(data)
+            return getattr(__import__(module), name)
+        except (ImportError, AttributeError):
+            continue
+    raise ImportError(name)
+
+
+def _sha256(data: bytes) -> Any:
+    return _hash("sha256", ("_sha2", "_sha256"))(data)  # CPython 3.12 and later, 3.11
 
 
 def _blake2b(data: bytes, key: bytes) -> Any:
-    try:
-        from _blake2 import blake2b
-    except ImportError:
-        from hashlib import blake2b  # type: ignore[assignment]
-    return blake2b(data, key=key, digest_size=_MAC_BYTES)
+    return _hash("blake2b", ("_blake2",))(data, key=key, digest_size=_MAC_BYTES)
 
 
 def source_digest(data: bytes) -> str:
