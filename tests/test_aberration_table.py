@@ -103,3 +103,95 @@ def test_scalar_and_array_shares_agree():
     many = auto.aberration_share(lens, n, m)
     for i, j in np.ndindex(many.shape):
         assert many[i, j] == pytest.approx(auto.aberration_share(lens, float(n[i, 0]), float(m[0, j])), rel=1e-12)
+
+
+# --- the tables shipped with the package (camtool/dof/aberrations.json, python -m camtool.presets.shipped) ---------
+
+
+def _shipped_file() -> dict:
+    return json.loads((Path(auto.__file__).parent / auto.SHIPPED_TABLES).read_text(encoding="utf-8"))
+
+
+def test_the_shipped_tables_are_those_of_the_shipped_prescriptions_computed_afresh():
+    from camtool.presets import shipped as tables
+
+    shipped = _shipped_file()
+    lenses = tables.shipped_prescriptions()
+    assert len(lenses) >= 5
+    # one table per shipped prescription, keyed by its content digest: an edited prescription is not current
+    assert sorted(shipped["tables"]) == sorted(auto._source(lens) for _name, lens in lenses), \
+        "camtool/dof/aberrations.json is out of date: run python -m camtool.presets.shipped"
+    assert shipped["version"] == auto._TABLE_VERSION
+    for name, lens in lenses:
+        grid, rows = auto._compute_table(lens)  # a fresh ray-traced calibration, not read from anywhere
+        table = shipped["tables"][auto._source(lens)]
+        assert shipped["prescriptions"][auto._source(lens)] == name
+        assert table["f_numbers"] == list(grid)
+        for shipped_row, row in zip(table["table"], rows, strict=True):
+            assert [m for m, _ in shipped_row] == [m for m, _ in row]
+            assert [s for _, s in shipped_row] == pytest.approx([s for _, s in row], rel=1e-9, abs=1e-15), name
+        assert auto._shipped_table(auto._source(lens), lens) is not None  # passes the same checks as a cache entry
+
+
+def _fresh(monkeypatch, tmp_path, shipped: dict) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
+    monkeypatch.setattr(auto, "_shipped", lambda: shipped)
+    auto.aberration_table.cache_clear()
+
+
+@pytest.mark.parametrize("poison", ["a negative share", "NaN", "another grid", "other magnifications", "not a table",
+                                    "a string share", "rows missing"])
+def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypatch, tmp_path):
+    from camtool.presets import shipped as tables
+
+    _name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "dgauss100.yaml")
+    source = auto._source(lens)
+    table = json.loads(json.dumps(_shipped_file()["tables"][source]))
+    if poison == "a negative share":
+        table["table"][3][0][1] = -0.5
+    elif poison == "NaN":
+        table["table"][3][0][1] = math.nan
+    elif poison == "another grid":
+        table["f_numbers"][2] *= 1.01
+    elif poison == "other magnifications":
+        table["table"][0][1][0] += 0.01
+    elif poison == "not a table":
+        table = [1, 2, 3]
+    elif poison == "a string share":
+        table["table"][0][0][1] = "0.1"
+    else:
+        table["table"] = table["table"][:-1]
+    _fresh(monkeypatch, tmp_path, {source: table})
+    try:
+        assert auto._shipped_table(source, lens) is None
+        assert auto.aberration_table(lens) == auto._compute_table(lens)
+    finally:
+        auto.aberration_table.cache_clear()
+
+
+def test_a_sound_shipped_table_is_used_without_tracing_and_cached(monkeypatch, tmp_path):
+    from camtool.presets import shipped as tables
+
+    _name, lens = next((n, p) for n, p in tables.shipped_prescriptions() if n == "telephoto127.yaml")
+    source = auto._source(lens)
+    shipped = _shipped_file()["tables"]
+    _fresh(monkeypatch, tmp_path, shipped)
+
+    def refuse(_lens):
+        raise AssertionError("traced rays for a shipped prescription")
+
+    monkeypatch.setattr(auto, "_compute_table", refuse)
+    try:
+        grid, rows = auto.aberration_table(lens)
+        assert list(grid) == shipped[source]["f_numbers"]
+        # written to the disk cache as a computed table is, bound to the same content digest
+        assert auto._read_table(auto._cache_path(source), source, lens) == (grid, rows)
+    finally:
+        auto.aberration_table.cache_clear()
+
+
+def test_a_first_command_with_a_shipped_prescription_imports_no_numpy(tmp_path):
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
+    assert not numpy_imported("auto", env)  # every cache empty: the shipped table, no ray trace
+    assert list((tmp_path / "camtool" / "aberrations").glob("*.json"))

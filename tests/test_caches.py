@@ -35,6 +35,7 @@ SECONDS = 5.0
 
 ABERRATION_COMMAND = ("dof", "--lens", "dgauss100-lens", "-N", "4", "-s", "1m", "--model", "auto", "--format", "json")
 PRESET_COMMAND = ("dof", "-f", "50", "-N", "8", "-s", "3m", "--sensor", "aps-c", "--format", "json")
+LIST_COMMAND = ("presets", "list", "--kind", "sensor", "--format", "json")
 
 
 def _point_xdg_at(root: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -54,7 +55,8 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[tuple
     root = tmp_path_factory.mktemp("caches")
     with pytest.MonkeyPatch.context() as monkeypatch:
         _point_xdg_at(root, monkeypatch)
-        references = {command: answer(command, no_cache=True) for command in (ABERRATION_COMMAND, PRESET_COMMAND)}
+        references = {command: answer(command, no_cache=True) for command in (ABERRATION_COMMAND, PRESET_COMMAND,
+                                                                                LIST_COMMAND)}
         assert not (root / "xdg_cache_home").exists()  # CAMTOOL_NO_CACHE writes nothing, not even the key
         for command, reference in references.items():
             assert answer(command) == reference
@@ -641,3 +643,43 @@ def test_the_command_line_answers_as_without_the_cache(home, printed_reference, 
     env = _environment()
     assert _camtool(TABLE_COMMAND, env) == printed_reference
     assert _camtool(TABLE_COMMAND, env) == printed_reference  # and from the rewritten entries
+
+
+def test_the_digests_are_hashlib_s_sha256_and_keyed_blake2b() -> None:
+    import hashlib
+
+    for data in (b"", b"camtool", bytes(range(256)) * 300):
+        assert cache.source_digest(data) == hashlib.sha256(data).hexdigest()
+        key = hashlib.sha256(data).digest()
+        assert cache._mac(key, "presets-10", "s", data) == hashlib.blake2b(
+            cache._signed("presets-10", "s", data), key=key, digest_size=32).hexdigest()
+
+
+# A listing reads a whole kind at once and checks each record's shape (loader._sound_record), not every value
+# against the schema again: the mutations a listing must refuse are the ones that break that shape.
+LISTING_REFUSES = sorted(name for name in RECORD_MUTATIONS if not any(
+    name.startswith(prefix) for prefix in ("width_mm ", "height_mm ", "coc_mm ", "category ", "approximate ",
+                                           "source ", "aliases with")) or name in (
+    "width_mm missing", "height_mm missing", "width_mm NaN", "width_mm inf", "height_mm NaN", "height_mm inf",
+    "coc_mm NaN", "coc_mm inf"))
+
+
+@pytest.mark.parametrize("name", LISTING_REFUSES)
+def test_a_listing_refuses_a_resigned_entry_with_a_record_of_the_wrong_shape(preset_entry, references, name):
+    _reference, path, header, payload = preset_entry
+    _spans, parsed = _sections(payload)
+    RECORD_MUTATIONS[name](parsed)
+    assert cache.write(str(path), header["kind"], header["source"], _pack(parsed))
+    assert answer(LIST_COMMAND) == references[LIST_COMMAND]
+    assert split(path) == (header, payload)
+
+
+def test_a_listing_refuses_a_planted_entry_without_a_valid_checksum(preset_entry, references):
+    _reference, path, header, payload = preset_entry
+    _spans, parsed = _sections(payload)
+    record = parsed["sensor"][_aps_c(parsed)]
+    record["width_mm"], record["height_mm"] = 36.0, 24.0  # a sound record, values a fresh parse never gives
+    planted = _pack(parsed)
+    path.write_bytes(_dumps({**header, "length": len(planted)}) + b"\n" + planted)
+    assert answer(LIST_COMMAND) == references[LIST_COMMAND]
+    assert split(path) == (header, payload)

@@ -54,6 +54,41 @@ def test_long_tables_are_drawn_with_the_same_bytes_rich_draws(colour, width, mon
     assert ("\x1b[" in by_rich.text) == (colour is not None)
 
 
+WORDS = ["Canon", "RF", "50mm", "f/1.2L", "USM", "(approximate)", "—", "9.84 × 7.38 mm", "an-extremely-long-hyphenated"
+         "-identifier-that-must-fold", "x", "", "·", "IMG_0001.jpg", "published", "by", "the", "maker"]
+TEXT_COLUMNS = [Column("kind", "kind", TEXT), Column("id", "id", TEXT), Column("summary", "summary", TEXT),
+                Column("near_mm", "near"), Column("tier", "from", TEXT)]
+
+
+def _text_rows(count: int, seed: int) -> list[dict]:
+    import random
+
+    draw = random.Random(seed)
+    rows = []
+    for i in range(count):
+        summary = " ".join(draw.choice(WORDS) for _ in range(draw.randint(0, 14)))
+        if i % 9 == 4:
+            summary = "  " + summary + "   " + draw.choice(WORDS) + "  "  # spaces at the ends and doubled
+        rows.append({"kind": draw.choice(["sensor", "lens", "prescription"]), "id": f"preset-{i}-{draw.random():.4f}",
+                     "summary": summary, "near_mm": 1000.0 + 37.1 * i, "tier": draw.choice(["shipped", "user"]),
+                     "reason": None})
+    return rows
+
+
+@pytest.mark.parametrize("colour", [None, "truecolor"])
+@pytest.mark.parametrize("width", [120, 100, 80, 72])
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_long_tables_whose_text_wraps_are_drawn_with_the_same_bytes_rich_draws(colour, width, seed,
+                                                                              monkeypatch) -> None:
+    rows = _text_rows(70, seed)
+    by_rich = render_table(rows, TEXT_COLUMNS, width=width, colour=colour)
+    monkeypatch.setattr(table_module, "RICH_ROWS", 10)
+    by_lines = render_table(rows, TEXT_COLUMNS, width=width, colour=colour)
+    assert by_lines == by_rich
+    assert not by_rich.vertical
+    assert width >= 120 or len(by_rich.text.splitlines()) > 80  # the summaries took more than a line each
+
+
 def test_every_cell_is_whole_and_no_line_is_wider_than_the_screen() -> None:
     rows = _rows(12)
     wide = render_table(rows, COLUMNS).text
@@ -258,3 +293,27 @@ def test_a_traced_stack_plan_shows_its_frames_on_a_terminal(tmp_path) -> None:
     drawn, status = _stderr_on_a_terminal(args, tmp_path / "out.csv")
     assert status == 0 and "camtool stack: frames" in drawn
     assert len((tmp_path / "out.csv").read_text().splitlines()) > 5
+
+
+def test_text_folds_where_rich_folds_it() -> None:
+    # the line-at-a-time drawing breaks a long text cell itself (rich's wrapping module costs 7 ms to import);
+    # rich's public Text.wrap is the reference, over random words, runs of spaces and over-long words
+    import random
+
+    from rich.console import Console
+    from rich.text import Text
+
+    console = Console(width=200, color_system=None, legacy_windows=False)
+    draw = random.Random(7)
+    pieces = ["a", "bb", "ccc", "d" * 24, " ", "  ", "   ", "x" * 40, "é", "—", "·", "f/1.8"]
+    checked = 0
+    for _ in range(3000):
+        text = "".join(draw.choice(pieces) for _ in range(draw.randint(1, 20)))
+        width = draw.randint(1, 30)
+        if len(text) <= width:
+            continue
+        lines = Text(text).wrap(console, width, justify="left", overflow="fold")
+        assert [line.plain.ljust(width) for line in lines] == [line.ljust(width) for line in
+                                                               table_module._folded(text, width)], (text, width)
+        checked += 1
+    assert checked > 2000

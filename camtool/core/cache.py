@@ -30,7 +30,10 @@ What this does not defend against: a process running as the same user can
 read the key and forge any entry, but it can equally edit the user's preset
 files or camtool itself. The callers re-check the values of every entry they
 use (the same checks as freshly computed ones), so even a forged entry can
-only give values a fresh computation could have given.
+only give values a fresh computation could have given -- except a whole kind
+of presets read at once (``presets list``, ``exif``'s name matching), which
+checks each record's shape, not each value against the schema again (that was
+most of a listing's time).
 
 Any entry that fails a check is ignored (:func:`read` returns None) and the
 caller writes a fresh one over it; writing is atomic (a temporary file in the
@@ -38,7 +41,10 @@ same directory, renamed over the entry) and the temporary file is removed on
 any failure. ``CAMTOOL_NO_CACHE`` set to any non-empty value turns every cache
 off, reading and writing (:func:`enabled`).
 
-Only the paths that use a cache import :mod:`hashlib`.
+Only the paths that use a cache hash anything, and they take SHA-256 and
+BLAKE2b from CPython's own small modules when it has them (the same
+algorithms :mod:`hashlib` offers, without loading OpenSSL's, which costs a
+few milliseconds of a command's start-up).
 """
 
 from __future__ import annotations
@@ -74,11 +80,32 @@ def root() -> str:
     return os.path.join(base, "camtool")
 
 
-def source_digest(data: bytes) -> str:
-    """The SHA-256 (hex) that binds an entry to the bytes it was derived from."""
-    import hashlib
+def _hash(name: str, modules: tuple[str, ...]) -> Any:
+    """The constructor ``name`` from the first of ``modules`` that has it (:mod:`hashlib` last)."""
+    for module in (*modules, "hashlib"):
+        try:
+            return getattr(__import__(module), name)
+        except (ImportError, AttributeError):
+            continue
+    raise ImportError(name)
 
-    return hashlib.sha256(data).hexdigest()
+
+def _sha256(data: bytes) -> Any:
+    return _hash("sha256", ("_sha2", "_sha256"))(data)  # CPython 3.12 and later, 3.11
+
+
+def _blake2b(data: bytes, key: bytes) -> Any:
+    return _hash("blake2b", ("_blake2",))(data, key=key, digest_size=_MAC_BYTES)
+
+
+def source_digest(data: bytes) -> str:
+    """The SHA-256 (hex) that binds an entry to the bytes it was derived from.
+
+    >>> import hashlib
+    >>> source_digest(b"camtool") == hashlib.sha256(b"camtool").hexdigest()
+    True
+    """
+    return str(_sha256(data).hexdigest())
 
 
 def _version() -> str:
@@ -94,9 +121,7 @@ def _signed(kind: str, source: str, payload: bytes) -> bytes:
 
 
 def _mac(key: bytes, kind: str, source: str, payload: bytes) -> str:
-    import hashlib
-
-    return hashlib.blake2b(_signed(kind, source, payload), key=key, digest_size=_MAC_BYTES).hexdigest()
+    return str(_blake2b(_signed(kind, source, payload), key).hexdigest())
 
 
 def _read_key(path: str) -> bytes | None:

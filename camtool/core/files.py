@@ -32,7 +32,6 @@ import errno
 import os
 import re
 import stat
-from pathlib import Path
 from typing import Any
 
 from camtool.core.errors import FileError
@@ -158,7 +157,7 @@ def check_writable(targets: list[str | None]) -> None:
         try:
             info = os.stat(target)
         except FileNotFoundError:
-            if not Path(target).resolve().parent.is_dir():
+            if not os.path.isdir(os.path.dirname(os.path.realpath(target))):
                 raise WriteProblem(target, "cannot write there: no such directory", index) from None
             continue
         except OSError as error:

@@ -243,15 +243,18 @@ def aberration_table(prescription: Any) -> Table:
 
     The f-numbers are N = 2^(k/2), f/1 to f/64 (k = 0…12), and the
     prescription's design f-number when it states one. Computing it
-    traces rays (numpy, about 20 ms); the result is cached for the process
-    and on disk, in ``$XDG_CACHE_HOME/camtool/aberrations/`` (default
+    traces rays (numpy, about 20 ms), except for the prescriptions shipped in
+    ``lens_db/prescriptions/``, whose tables ship with the package
+    (:data:`SHIPPED_TABLES`, checked as a cache entry's are); the result is
+    cached for the process and on disk, in ``$XDG_CACHE_HOME/camtool/aberrations/`` (default
     ``~/.cache/camtool``), bound to the SHA-256 of the prescription's
     content, so a later command with the same prescription reads a small
     JSON file instead. An entry is used only when it passes the checks of
     :mod:`camtool.core.cache` (a regular file of at most 64 KiB, its MAC,
     the camtool version, the content digest) and of :func:`_valid_table`;
     otherwise it is computed afresh and written over the entry.
-    ``CAMTOOL_NO_CACHE`` bypasses the disk.
+    ``CAMTOOL_NO_CACHE`` bypasses the disk and the shipped tables (every
+    table computed, as every preset file is then parsed).
 
     Examples
     --------
@@ -268,9 +271,46 @@ def aberration_table(prescription: Any) -> Table:
     path = _cache_path(source)
     table = _read_table(path, source, prescription)
     if table is None:
-        table = _compute_table(prescription)
+        table = _shipped_table(source, prescription) or _compute_table(prescription)
         _write_table(path, source, table)
     return table
+
+
+SHIPPED_TABLES = "aberrations.json"
+"""The tables of the shipped prescriptions (``lens_db/prescriptions/``), beside this module.
+
+Written by ``python -m camtool.presets.shipped`` (:mod:`camtool.presets.shipped`); each
+table is keyed by the :func:`_source` digest of the prescription it was
+computed for, so an edited prescription, another grid or another table
+version finds no table there and is computed afresh.
+"""
+
+
+@functools.lru_cache(maxsize=1)
+def _shipped() -> dict[str, Any]:
+    """The shipped tables by source digest (empty when the file is missing or not the expected shape)."""
+    import json
+    import os
+
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), SHIPPED_TABLES)
+    try:
+        with open(path, "rb") as handle:
+            data = json.loads(handle.read(1 << 20))
+    except (OSError, ValueError, RecursionError):
+        return {}
+    tables = data.get("tables") if isinstance(data, dict) and data.get("version") == _TABLE_VERSION else None
+    return tables if isinstance(tables, dict) else {}
+
+
+def _shipped_table(source: str, prescription: Any) -> Table | None:
+    """The shipped table of this prescription's content, when there is one and it passes :func:`_valid_table`.
+
+    Shipped with the package rather than read from a cache, it is checked
+    all the same: keyed by the content digest, and a table a fresh
+    calibration could not give (another grid, other magnifications, a
+    share that is not a finite number ≥ 0) is refused and computed afresh.
+    """
+    return _valid_table(_shipped().get(source), prescription)
 
 
 def _content(prescription: Any) -> str:

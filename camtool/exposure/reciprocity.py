@@ -170,11 +170,16 @@ def _film_table() -> dict[str, Any]:
     else by PyYAML (and the entry written). Every entry is checked by :func:`film_from_entry` either way."""
     import json
     import os
-    from importlib.resources import files
 
     from camtool.core import cache
 
-    raw = files("camtool.exposure").joinpath("films.yaml").read_bytes()
+    try:  # the file beside this module (importlib.resources costs a few ms of start-up to say the same)
+        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "films.yaml"), "rb") as handle:
+            raw = handle.read()
+    except OSError:  # a package not on the file system (a zip)
+        from importlib.resources import files
+
+        raw = files("camtool.exposure").joinpath("films.yaml").read_bytes()
     path = os.path.join(cache.root(), "films.json")
     source = cache.source_digest(raw) if cache.enabled() else ""
     payload = cache.read(path, "films", source, 8 * len(raw) + 4096) if source else None

@@ -178,6 +178,13 @@ class Database:
     def all(self, kind: str) -> list[Preset]:
         """Every preset of ``kind`` in effect, sorted by id."""
         kind = kind_of(kind)
+        kinds, wanted = [kind], 0
+        while wanted < len(kinds):  # the kind and every kind its presets name (a lens's prescription ...)
+            kinds += [k for k in REFERENCES.get(kinds[wanted], {}).values() if k not in kinds]
+            wanted += 1
+        for data in self._files.values():
+            for each in kinds:
+                data.records_of(each)  # each file's records of the kind at once (see loader._Cached.all)
         return [self._build(kind, entry) for entry in self._index(kind).entries]
 
     def find(self, name: str) -> list[Preset]:

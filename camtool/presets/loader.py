@@ -9,16 +9,20 @@ Parsing YAML is the slow part of a command that names a preset (PyYAML's
 import alone costs about 20 ms), so the validated records of every file are
 cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, bound to the
 SHA-256 of the file's path and bytes (recomputed on every read). A warm start
-reads only the JSON files and never imports yaml.
+reads only the JSON files and never imports yaml; so does a first one with the
+shipped files, whose records ship with the package (:data:`SHIPPED_RECORDS`,
+used only for the very bytes they were made from and checked as a cache
+entry's records are; ``CAMTOOL_NO_CACHE`` parses every file).
 
 The cache is never trusted: an entry is used only when it passes the checks
 of :mod:`camtool.core.cache` (a regular file of bounded size, the camtool
 version and record layout that wrote it, the digest of this very file, its
-keyed checksum), and every cached record used goes through the same schema
-check as a parsed one (:func:`_valid_record`: the record must be exactly what
-:func:`camtool.presets.schema.check_record` makes of it, its lookup keys the
-ones its id and aliases give). An entry that fails is ignored, the file is
-parsed and the entry rewritten.
+keyed checksum), and every cached record looked up goes through the same
+schema check as a parsed one (:func:`_valid_record`: the record must be
+exactly what :func:`camtool.presets.schema.check_record` makes of it, its
+lookup keys the ones its id and aliases give); a whole kind read for a
+listing goes through the shape checks of :func:`_sound_record` only. An
+entry that fails is ignored, the file is parsed and the entry rewritten.
 """
 
 from __future__ import annotations
@@ -32,8 +36,10 @@ from typing import Any
 from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
 from camtool.presets.schema import (
+    FIELDS,
     KINDS,
     REFERENCES,
+    REQUIRED,
     SECTIONS,
     check_record,
     normalize,
@@ -199,6 +205,12 @@ class _Cached:
 
     def keys(self, kind: str) -> list[list[str]] | None:
         """The cached lookup keys of one kind when they are well formed (remembered, to match the records later)."""
+        keys = self._keys(kind)
+        if keys is not None:
+            self.handed[kind] = keys
+        return keys
+
+    def _keys(self, kind: str) -> list[list[str]] | None:
         name = f"{kind}#keys"
         if name in self.sections:
             keys = self._section(name)
@@ -208,7 +220,6 @@ class _Cached:
             keys = []
         if not isinstance(keys, list) or not all(_valid_keys(k) for k in keys):
             return None
-        self.handed[kind] = keys
         return keys
 
     def record(self, kind: str, index: int) -> dict[str, Any] | None:
@@ -229,16 +240,29 @@ class _Cached:
         return record
 
     def all(self, kind: str) -> list[dict[str, Any]] | None:
-        """Every record of one kind when each passes :meth:`record`, else None."""
+        """Every record of one kind when each is sound (:func:`_sound_record`, and matches the keys given out), else None.
+
+        A whole kind is read for a listing (``presets list``, matching EXIF
+        names): its records are not put through the schema again one by one
+        (that took most of such a command's time), only through the checks
+        that keep every later use well defined. The entry itself passed the
+        envelope's checks (this version, this file's bytes, the keyed
+        checksum), and a record looked up by name still passes
+        :func:`_valid_record` (:meth:`record`).
+        """
         records = self._section(kind) if kind in self.sections else []
-        if not isinstance(records, list):
+        keys = self._keys(kind)  # the entry's keys must be its records' keys, one for one
+        handed = self.handed.get(kind, keys)
+        if not isinstance(records, list) or handed is None or keys != handed or len(handed) != len(records):
             return None
         out = []
-        for index in range(len(records)):
-            record = self.record(kind, index)
-            if record is None:
-                return None
-            out.append(record)
+        for index, record in enumerate(records):
+            checked = self._checked.get((kind, index))
+            if checked is None:
+                if not _sound_record(kind, record) or record["_keys"] != handed[index]:
+                    return None
+                checked = record
+            out.append(checked)
         return out
 
 
@@ -259,6 +283,41 @@ def _lookup_keys(record: dict[str, Any]) -> list[str]:
 
 def _line_number(value: Any) -> bool:
     return value is None or (type(value) is int and value >= 1)
+
+
+def _sound_record(kind: str, record: Any) -> bool:
+    """True when a cached record has the shape every use of a record relies on.
+
+    Its private keys are the ones its kind has, its other keys known to its
+    kind and the required ones there, its id and name text, its
+    aliases a list of text and its lookup keys the ones they give, its line
+    numbers positive integers, its references the keys it has; every number
+    is finite (but a scene's distance, which may be infinite) and every key
+    text. :func:`_valid_record` checks, in addition, every value against the
+    schema.
+    """
+    if not isinstance(record, dict):
+        return False
+    private = {key for key in record if isinstance(key, str) and key.startswith("_")}
+    if private != ({"_keys", "_line", "_refs", "_data"} if kind == "prescription" else {"_keys", "_line", "_refs"}):
+        return False
+    aliases = record.get("aliases", [])
+    if not (isinstance(record.get("id"), str) and isinstance(record.get("name"), str) and isinstance(aliases, list)
+            and all(isinstance(alias, str) for alias in aliases)):
+        return False
+    for key, value in record.items():
+        if not isinstance(key, str) or (type(value) is float and not math.isfinite(value)
+                                        and not (kind == "scene" and key.endswith("_mm") and value == math.inf)):
+            return False
+    public = {key for key in record if not key.startswith("_")}
+    if not (public <= FIELDS[kind].keys() | {"name"} and public >= set(REQUIRED[kind])):
+        return False
+    if kind == "prescription" and not isinstance(record["_data"], dict):
+        return False
+    refs = record["_refs"]
+    return (record["_keys"] == _lookup_keys(record) and _line_number(record["_line"]) and isinstance(refs, dict)
+            and set(refs) == {key for key in REFERENCES.get(kind, {}) if key in record}
+            and all(_line_number(line) for line in refs.values()))
 
 
 def _valid_record(kind: str, record: Any) -> bool:
@@ -330,9 +389,70 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
         cached = _Cached.parse(payload, raw, cache_path, source, limit)
         if cached is not None:
             return FileData(path, cached=cached)
+    payload = shipped_payload(absolute, raw)
+    if payload is not None:
+        cached = _Cached.parse(payload, raw, cache_path, source, limit)
+        if cached is not None:
+            if len(payload) + 1024 <= limit:
+                cache.write(cache_path, _CACHE_KIND, source, payload)
+            return FileData(path, cached=cached)
     data = _parse_or_raise(path, raw)
     _write_cache(cache_path, source, data._records, limit)
     return data
+
+
+SHIPPED_RECORDS = "shipped-records.json"
+"""The records of the shipped preset files (``lens_db/``), beside this module.
+
+Written by ``python -m camtool.presets.shipped``: one JSON line mapping each
+file's name under ``lens_db/`` to the SHA-256 of the bytes it was made from
+and its span in the rest of the file, then each file's records in the
+layout of a cache entry. A first command (every cache empty) reads these
+instead of parsing the YAML; each is used only for the very bytes it was
+made from, and its records pass the same checks as a cache entry's
+(:func:`_valid_record`) when they are used. An edited file finds no match
+and is parsed.
+"""
+
+_shipped_index: dict[str, Any] | None = None
+
+
+def _shipped_records() -> tuple[dict[str, Any], bytes]:
+    """The index line and the body of :data:`SHIPPED_RECORDS` (empty when missing or not the expected shape)."""
+    global _shipped_index
+    if _shipped_index is None:
+        _shipped_index = {"index": {}, "body": b""}
+        try:
+            raw = read_bytes(os.path.join(os.path.dirname(os.path.abspath(__file__)), SHIPPED_RECORDS), 64 << 20)
+        except FileProblem:
+            return {}, b""
+        end = raw.find(b"\n")
+        try:
+            index = json.loads(raw[:end]) if end > 0 else None
+        except (ValueError, RecursionError):
+            index = None
+        if isinstance(index, dict) and index.get("format") == CACHE_FORMAT and isinstance(index.get("files"), dict):
+            _shipped_index = {"index": index["files"], "body": raw[end + 1:]}
+    return _shipped_index["index"], _shipped_index["body"]
+
+
+def shipped_payload(absolute: str, raw: bytes) -> bytes | None:
+    """The shipped records of the file at ``absolute`` when it is a shipped file holding exactly ``raw``, else None."""
+    from camtool.core import cache
+    from camtool.presets import paths
+
+    directory = os.path.join(os.path.realpath(paths.shipped_dir()), "")
+    real = os.path.realpath(absolute)
+    if not real.startswith(directory):
+        return None
+    index, body = _shipped_records()
+    entry = index.get(real[len(directory):].replace(os.sep, "/"))
+    if not (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], str)
+            and all(type(n) is int and n >= 0 for n in entry[1:]) and entry[1] + entry[2] <= len(body)):
+        return None
+    if entry[0] != cache.source_digest(raw):
+        return None
+    return body[entry[1]:entry[1] + entry[2]]
 
 
 def _parse_or_raise(path: str, raw: bytes) -> FileData:
@@ -461,6 +581,13 @@ def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str,
     """
     from camtool.core import cache
 
+    payload = entry_payload(records)
+    if payload is not None and len(payload) + 1024 <= limit:
+        cache.write(cache_path, _CACHE_KIND, source, payload)
+
+
+def entry_payload(records: dict[str, list[dict[str, Any]]]) -> bytes | None:
+    """The records of one file in the layout of a cache entry (None when a value cannot be written as JSON)."""
     sections: dict[str, list[int]] = {}
     blobs = []
     offset = 0
@@ -474,7 +601,5 @@ def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str,
                 offset += len(blob)
         header = json.dumps(sections, separators=(",", ":")).encode("utf-8")
     except (TypeError, ValueError, RecursionError):
-        return
-    payload = header + b"\n" + b"".join(blobs)
-    if len(payload) + 1024 <= limit:
-        cache.write(cache_path, _CACHE_KIND, source, payload)
+        return None
+    return header + b"\n" + b"".join(blobs)

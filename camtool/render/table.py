@@ -16,14 +16,17 @@ positive number is ignored.
 A row with no answer keeps its place (dashes) and its reason joins the footer;
 many such rows are summarised (the first few, a count, and where to find all).
 
-rich draws tables of up to :data:`RICH_ROWS` rows; longer ones are drawn a
-line at a time with the same widths, gaps, rule and escape codes (byte for byte
-what rich draws, which a test holds), because rich takes about a millisecond a
-row to lay out.
+rich draws tables of up to :data:`RICH_ROWS` rows; longer ones (up to
+:data:`WRAP_ROWS` when text must wrap, else any number) are drawn a line at a
+time, long text cells broken where rich breaks them, with the same widths, gaps, rule and
+escape codes (byte for byte what rich draws, which a test holds), because rich
+takes about a millisecond a row to lay out (``presets list``, 400 rows, spent
+most of its time there).
 """
 
 from __future__ import annotations
 
+import itertools
 import os
 from collections.abc import Sequence
 from typing import IO, Any, NamedTuple
@@ -35,8 +38,10 @@ from camtool.render.theme import colour_system, rich_style, styled
 
 GAP = "   "
 RULE = "─"
-RICH_ROWS = 500
-"""Tables longer than this are drawn line by line (the same bytes rich would draw)."""
+RICH_ROWS = 60
+"""Tables longer than this are drawn line by line (the same bytes rich would draw) unless text must wrap."""
+WRAP_ROWS = 500
+"""Tables longer than this whose text would have to wrap are drawn as blocks (``key: value``) instead."""
 ROW_NOTES = 5
 """Notes on rows with no answer shown in a footer before the rest are counted."""
 
@@ -178,7 +183,7 @@ def render_table(
     failed = [_no_answer(row) for row in rows]
     drawn = [_draw(column, rows, units, failed) for column in columns]
     shown, wrapped = _fit(drawn, width)
-    vertical = wrapped is None or (bool(wrapped) and len(rows) > RICH_ROWS)
+    vertical = wrapped is None or (bool(wrapped) and len(rows) > WRAP_ROWS)
     notes = _reasons(rows, drawn, failed, shown, vertical) + list(row_notes)
     if vertical:
         kept = [d for d in drawn if not d.column.legend]
@@ -186,8 +191,9 @@ def render_table(
         left_out = [d.column for d in drawn if d.column.legend]
     else:
         kept = [drawn[i]._replace(size=(wrapped or {}).get(i, drawn[i].size)) for i in shown]
-        body = (_rich(kept, len(rows), colour, {kept[shown.index(i)].column.key for i in wrapped or {}})
-                if len(rows) <= RICH_ROWS else _lines(kept, len(rows), colour))
+        folded = {kept[shown.index(i)].column.key for i in wrapped or {}}
+        body = (_rich(kept, len(rows), colour, folded) if len(rows) <= RICH_ROWS or not _plain_cells(kept, folded)
+                else _lines(kept, len(rows), colour, folded))
         left_out = [drawn[i].column for i in range(len(drawn)) if i not in shown]
     legends = [d.column.legend for d in kept if d.column.legend]
     text = body + _footer(footer, legends, _summary(notes), width, colour)
@@ -258,8 +264,51 @@ def _rich(kept: list[_Drawn], count: int, colour: str | None, wrapped: set[str] 
     return out.getvalue()
 
 
-def _lines(kept: list[_Drawn], count: int, colour: str | None) -> str:
-    """The same bytes as :func:`_rich`, a line at a time: fixed widths, the same escape codes."""
+def _plain_cells(kept: list[_Drawn], wrapped: set[str]) -> bool:
+    """Whether :func:`_lines` draws these cells as rich would: no line breaks or tabs in a column that wraps."""
+    return all(not ("\n" in cell or "\t" in cell) for d in kept if d.column.key in wrapped for cell in d.cells)
+
+
+def _folded(text: str, width: int) -> list[str]:
+    """``text`` broken into lines of at most ``width`` as rich breaks a cell: at spaces, folding longer words.
+
+    Each word (with the spaces around it) goes on the line if its letters
+    fit, else starts the next line; a word longer than a line is cut into
+    line-long pieces. A test holds the lines to rich's own.
+    """
+    if len(text) <= width:
+        return [text]
+    import re
+
+    starts: list[int] = []
+    used = 0
+    for word in re.finditer(r"\s*\S+\s*", text):
+        start, end = word.span()
+        letters = len(word.group().rstrip())
+        if used + letters <= width:
+            used += end - start
+            continue
+        if letters > width:  # too long for any line: folded, its last piece carries on
+            if used:
+                starts.append(start)
+            piece = start
+            while end - piece > width:
+                piece += width
+                starts.append(piece)
+            used = end - piece
+            continue
+        starts.append(start)
+        used = end - start
+    offsets = [0, *starts, len(text)]
+    return [text[a:b][:width] for a, b in itertools.pairwise(offsets)]
+
+
+def _lines(kept: list[_Drawn], count: int, colour: str | None, wrapped: set[str] = frozenset()) -> str:  # type: ignore[assignment]
+    """The same bytes as :func:`_rich`, a line at a time: fixed widths, the same escape codes.
+
+    A text cell of a ``wrapped`` column longer than its width takes as many
+    lines as rich gives it (its row's other cells blank below their text).
+    """
     height = max(len(d.header) for d in kept)
     out = []
     for line in range(height):
@@ -274,8 +323,16 @@ def _lines(kept: list[_Drawn], count: int, colour: str | None) -> str:
         out.append(GAP.join(parts))
     out.append(RULE * _width([d.size for d in kept]))
     for index in range(count):
-        out.append(GAP.join(styled(d.cells[index].ljust(d.size) if d.column.kind == TEXT
-                                   else d.cells[index].rjust(d.size), d.styles[index], colour) for d in kept))
+        if not wrapped:
+            out.append(GAP.join(styled(d.cells[index].ljust(d.size) if d.column.kind == TEXT
+                                       else d.cells[index].rjust(d.size), d.styles[index], colour) for d in kept))
+            continue
+        cells = [_folded(d.cells[index], d.size) if d.column.key in wrapped else [d.cells[index]] for d in kept]
+        for line in range(max(len(lines) for lines in cells)):
+            out.append(GAP.join(
+                (styled(lines[line].ljust(d.size) if d.column.kind == TEXT else lines[line].rjust(d.size),
+                        d.styles[index], colour) if line < len(lines) else " " * d.size)
+                for d, lines in zip(kept, cells)))
     return "\n".join(out) + "\n"
 
 

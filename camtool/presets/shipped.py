@@ -1,0 +1,117 @@
+"""Write what ships precomputed with the package: ``python -m camtool.presets.shipped``.
+
+A first command (every cache empty) would parse each file of ``lens_db/`` as
+YAML (PyYAML's pure-Python parser: most of such a command's time) and, with
+a prescription, trace rays for its aberration table (numpy and about 20 ms of
+tracing). Both are therefore made once, here, from the shipped files:
+
+- :data:`camtool.presets.loader.SHIPPED_RECORDS`, beside the loader: one JSON
+  line (the record layout's format number and, for each file of
+  ``lens_db/``, the SHA-256 of its bytes and its span), then each file's
+  validated records as a cache entry holds them;
+- :data:`camtool.dof.auto.SHIPPED_TABLES`, beside :mod:`camtool.dof.auto`: the
+  aberration table of each prescription of ``lens_db/prescriptions/``, keyed
+  by the content digest a cache entry is bound to.
+
+Run this after changing a file of ``lens_db/``, the record layout or the
+table's computation (``tests/test_presets_shipped.py`` and
+``tests/test_aberration_table.py`` fail until then; an out-of-date file is
+only slower, never wrong: other bytes or other content find no match and are
+parsed or computed). ``--check`` only says whether both files are current.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from typing import Any
+
+from camtool.core.cache import source_digest
+from camtool.core.files import read_bytes
+from camtool.presets import loader, paths
+
+
+def build_records() -> bytes:
+    """The shipped records' bytes, every file of ``lens_db/`` parsed afresh (a file with a problem raises)."""
+    directory = paths.shipped_dir()
+    files: dict[str, list[object]] = {}
+    blobs = []
+    offset = 0
+    for path in paths.shipped_files():
+        raw = read_bytes(path, loader.MAX_BYTES)
+        payload = loader.entry_payload(loader._parse_or_raise(path, raw)._records)
+        if payload is None:
+            raise ValueError(f"{path}: its records cannot be written as JSON")
+        name = os.path.relpath(path, directory).replace(os.sep, "/")
+        files[name] = [source_digest(raw), offset, len(payload)]
+        blobs.append(payload)
+        offset += len(payload)
+    index = json.dumps({"format": loader.CACHE_FORMAT, "files": files}, separators=(",", ":"), sort_keys=True)
+    return index.encode("utf-8") + b"\n" + b"".join(blobs)
+
+
+def shipped_prescriptions() -> list[tuple[str, Any]]:
+    """``(file name, prescription)`` of every file in ``lens_db/prescriptions/``, in name order."""
+    from camtool.optics.prescription import prescription_from_mapping
+
+    out = []
+    for path in paths.yaml_files(os.path.join(paths.shipped_dir(), "prescriptions"), ()):
+        for record in loader.parse_file(path).records.get("prescription", []):
+            out.append((os.path.basename(path), prescription_from_mapping(record["_data"], source=record["id"])))
+    return out
+
+
+def tables_document() -> dict[str, Any]:
+    """The shipped tables: each computed afresh (rays traced), keyed by its prescription's source digest."""
+    from camtool.dof import auto
+
+    tables: dict[str, Any] = {}
+    names: dict[str, str] = {}
+    for name, prescription in shipped_prescriptions():
+        source = auto._source(prescription)
+        grid, rows = auto._compute_table(prescription)
+        tables[source] = {"f_numbers": list(grid), "table": [[list(pair) for pair in row] for row in rows]}
+        names[source] = name
+    return {"version": auto._TABLE_VERSION, "prescriptions": names, "tables": tables}
+
+
+def build_tables() -> bytes:
+    """The shipped tables' bytes (JSON; floats as Python writes them, so they read back exactly)."""
+    return (json.dumps(tables_document(), indent=1, sort_keys=True, allow_nan=False) + "\n").encode("utf-8")
+
+
+def targets() -> dict[str, str]:
+    """Where each shipped file lives: ``{"records": path, "tables": path}``."""
+    from camtool.dof import auto
+
+    return {"records": os.path.join(os.path.dirname(os.path.abspath(loader.__file__)), loader.SHIPPED_RECORDS),
+            "tables": os.path.join(os.path.dirname(os.path.abspath(auto.__file__)), auto.SHIPPED_TABLES)}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--check", action="store_true", help="exit 1 when a shipped file is not current")
+    args = parser.parse_args(argv)
+    stale = 0
+    for what, build in (("records", build_records), ("tables", build_tables)):
+        target = targets()[what]
+        data = build()
+        try:
+            with open(target, "rb") as handle:
+                current = handle.read()
+        except OSError:
+            current = b""
+        if args.check:
+            print(f"{target}: {'current' if current == data else 'out of date'}")
+            stale += current != data
+            continue
+        with open(target, "wb") as handle:
+            handle.write(data)
+        print(f"wrote {target} ({len(data):,} bytes)")
+    return 1 if stale else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

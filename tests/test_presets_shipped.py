@@ -1,0 +1,110 @@
+"""The records of the shipped preset files ship with the package: current, used only for their very bytes, checked.
+
+``camtool/presets/shipped-records.json`` (``python -m camtool.presets.shipped``) spares a first command
+(every cache empty) the YAML parse of ``lens_db/``. These tests hold it to a fresh parse of the files,
+and hold that a shipped record which fails the checks of a cache entry's records is never used. (A shipped
+record with other values that pass every check -- 36 × 24 mm for APS-C -- cannot be told from the file
+without parsing it: the file is the package's own data, as trusted as its code, and the first test holds
+it to a fresh parse.)
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from camtool.presets import load_db, loader, paths, shipped
+
+
+def test_the_shipped_records_are_a_fresh_parse_of_the_shipped_files() -> None:
+    current = Path(shipped.targets()["records"]).read_bytes()
+    assert current == shipped.build_records(), \
+        "camtool/presets/shipped-records.json is out of date: run python -m camtool.presets.shipped"
+    index = json.loads(current.split(b"\n", 1)[0])
+    assert sorted(index["files"]) == sorted(os.path.relpath(p, paths.shipped_dir()).replace(os.sep, "/")
+                                            for p in paths.shipped_files())
+
+
+@pytest.fixture()
+def cache_home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    for name in ("XDG_CACHE_HOME", "XDG_CONFIG_HOME", "XDG_DATA_HOME"):
+        monkeypatch.setenv(name, str(tmp_path / name.lower()))
+    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+    monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
+    return tmp_path
+
+
+def test_shipped_records_answer_only_for_the_bytes_they_were_made_from(tmp_path: Path) -> None:
+    sensors = os.path.join(paths.shipped_dir(), "sensors.yaml")
+    raw = Path(sensors).read_bytes()
+    assert loader.shipped_payload(sensors, raw) is not None
+    assert loader.shipped_payload(sensors, raw + b"\n# edited\n") is None  # the same file, other bytes
+    copy = tmp_path / "sensors.yaml"
+    copy.write_bytes(raw)
+    assert loader.shipped_payload(str(copy), raw) is None  # the same bytes, not a shipped file
+
+
+def test_a_first_load_from_the_shipped_records_is_the_parsed_database(cache_home: Path) -> None:
+    fresh = load_db(use_cache=False, lensfun=False)
+    first = load_db(lensfun=False)  # every cache empty: the shipped records (and the cache written from them)
+    assert list((cache_home / "xdg_cache_home" / "camtool" / "presets").glob("sensors.yaml-*.json"))
+    for kind in ("sensor", "camera", "lens", "prescription", "scene"):
+        assert first.all(kind) == fresh.all(kind), kind
+
+
+def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
+    index, body = loader._shipped_records()
+    start, length = index["sensors.yaml"][1:]
+    payload = body[start:start + length]
+    end = payload.index(b"\n")
+    spans = json.loads(payload[:end])
+    sections = {name: json.loads(payload[end + 1 + o:end + 1 + o + n]) for name, (o, n) in spans.items()}
+    change(sections)
+    new_spans, blobs, offset = {}, [], 0
+    for name, value in sections.items():
+        blob = json.dumps(value).encode()
+        new_spans[name] = [offset, len(blob)]
+        blobs.append(blob)
+        offset += len(blob)
+    poisoned = json.dumps(new_spans).encode() + b"\n" + b"".join(blobs)
+    files = {**index, "sensors.yaml": [index["sensors.yaml"][0], len(body), len(poisoned)]}
+    monkeypatch.setattr(loader, "_shipped_index", {"index": files, "body": body + poisoned})
+
+
+def _aps_c(sections) -> dict:
+    return next(r for r in sections["sensor"] if r["id"] == "aps-c")
+
+
+@pytest.mark.parametrize("change", [
+    lambda s: _aps_c(s).update(width_mm=-1.0),
+    lambda s: _aps_c(s).update(width_mm="23.6"),
+    lambda s: _aps_c(s).update(_keys=["fullframe"]),
+    lambda s: _aps_c(s).update(extra=1),
+    lambda s: s.update(sensor={"0": 1}),
+    lambda s: s.update({"sensor#keys": s["sensor#keys"][:-1]}),
+], ids=["a negative width", "a width as text", "another preset's keys", "an unknown key", "not a list",
+        "keys shorter"])
+def test_a_shipped_record_that_is_not_its_file_is_never_used(change, cache_home: Path,
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    expected = load_db(use_cache=False, lensfun=False).sensor("aps-c")
+    _poison(monkeypatch, change)
+    got = load_db(lensfun=False).sensor("aps-c")
+    assert (got.width_mm, got.height_mm) == (expected.width_mm, expected.height_mm) == (23.6, 15.6)
+
+
+def test_a_first_command_parses_no_yaml(tmp_path: Path) -> None:
+    code = ("import sys\n"
+            "sys.argv = ['camtool', 'dof', '--lens', 'dgauss100-lens', '-N', '4', '-s', '1m', '--format', 'json']\n"
+            "from camtool.cli import main\n"
+            "try:\n    main()\nexcept SystemExit as done:\n    assert not done.code, done.code\n"
+            "print(sorted(m for m in ('yaml', 'numpy') if m in sys.modules), file=sys.stderr)\n")
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path / "cache"), "XDG_CONFIG_HOME": str(tmp_path / "config"),
+           "XDG_DATA_HOME": str(tmp_path / "data")}
+    env.pop("CAMTOOL_NO_CACHE", None)
+    run = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert run.stderr.strip().splitlines()[-1] == "[]"  # every cache empty: no YAML parse, no ray trace
