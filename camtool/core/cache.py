@@ -30,10 +30,7 @@ What this does not defend against: a process running as the same user can
 read the key and forge any entry, but it can equally edit the user's preset
 files or camtool itself. The callers re-check the values of every entry they
 use (the same checks as freshly computed ones), so even a forged entry can
-only give values a fresh computation could have given -- except a whole kind
-of presets read at once (``presets list``, ``exif``'s name matching), which
-checks each record's shape, not each value against the schema again (that was
-most of a listing's time).
+only give values a fresh computation could have given.
 
 Any entry that fails a check is ignored (:func:`read` returns None) and the
 caller writes a fresh one over it; writing is atomic (a temporary file in the

@@ -17,11 +17,11 @@ entry's records are; ``CAMTOOL_NO_CACHE`` parses every file).
 The cache is never trusted: an entry is used only when it passes the checks
 of :mod:`camtool.core.cache` (a regular file of bounded size, the camtool
 version and record layout that wrote it, the digest of this very file, its
-keyed checksum), and every cached record looked up goes through the same
+keyed checksum), and every cached record used goes through the same
 schema check as a parsed one (:func:`_valid_record`: the record must be
 exactly what :func:`camtool.presets.schema.check_record` makes of it, its
-lookup keys the ones its id and aliases give); a whole kind read for a
-listing goes through the shape checks of :func:`_sound_record` only. An
+lookup keys the ones its id and aliases give), a whole kind read for a
+listing too. An
 entry that fails is ignored, the file is parsed and the entry rewritten.
 """
 
@@ -36,10 +36,8 @@ from typing import Any
 from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
 from camtool.presets.schema import (
-    FIELDS,
     KINDS,
     REFERENCES,
-    REQUIRED,
     SECTIONS,
     check_record,
     normalize,
@@ -240,15 +238,11 @@ class _Cached:
         return record
 
     def all(self, kind: str) -> list[dict[str, Any]] | None:
-        """Every record of one kind when each is sound (:func:`_sound_record`, and matches the keys given out), else None.
+        """Every record of one kind when each passes :func:`_valid_record` (and matches the keys given out), else None.
 
         A whole kind is read for a listing (``presets list``, matching EXIF
-        names): its records are not put through the schema again one by one
-        (that took most of such a command's time), only through the checks
-        that keep every later use well defined. The entry itself passed the
-        envelope's checks (this version, this file's bytes, the keyed
-        checksum), and a record looked up by name still passes
-        :func:`_valid_record` (:meth:`record`).
+        names); its records are checked as a record looked up by name is
+        (:meth:`record`), since their values are used as theirs are.
         """
         records = self._section(kind) if kind in self.sections else []
         keys = self._keys(kind)  # the entry's keys must be its records' keys, one for one
@@ -259,7 +253,7 @@ class _Cached:
         for index, record in enumerate(records):
             checked = self._checked.get((kind, index))
             if checked is None:
-                if not _sound_record(kind, record) or record["_keys"] != handed[index]:
+                if not _valid_record(kind, record) or record["_keys"] != handed[index]:
                     return None
                 checked = record
             out.append(checked)
@@ -283,41 +277,6 @@ def _lookup_keys(record: dict[str, Any]) -> list[str]:
 
 def _line_number(value: Any) -> bool:
     return value is None or (type(value) is int and value >= 1)
-
-
-def _sound_record(kind: str, record: Any) -> bool:
-    """True when a cached record has the shape every use of a record relies on.
-
-    Its private keys are the ones its kind has, its other keys known to its
-    kind and the required ones there, its id and name text, its
-    aliases a list of text and its lookup keys the ones they give, its line
-    numbers positive integers, its references the keys it has; every number
-    is finite (but a scene's distance, which may be infinite) and every key
-    text. :func:`_valid_record` checks, in addition, every value against the
-    schema.
-    """
-    if not isinstance(record, dict):
-        return False
-    private = {key for key in record if isinstance(key, str) and key.startswith("_")}
-    if private != ({"_keys", "_line", "_refs", "_data"} if kind == "prescription" else {"_keys", "_line", "_refs"}):
-        return False
-    aliases = record.get("aliases", [])
-    if not (isinstance(record.get("id"), str) and isinstance(record.get("name"), str) and isinstance(aliases, list)
-            and all(isinstance(alias, str) for alias in aliases)):
-        return False
-    for key, value in record.items():
-        if not isinstance(key, str) or (type(value) is float and not math.isfinite(value)
-                                        and not (kind == "scene" and key.endswith("_mm") and value == math.inf)):
-            return False
-    public = {key for key in record if not key.startswith("_")}
-    if not (public <= FIELDS[kind].keys() | {"name"} and public >= set(REQUIRED[kind])):
-        return False
-    if kind == "prescription" and not isinstance(record["_data"], dict):
-        return False
-    refs = record["_refs"]
-    return (record["_keys"] == _lookup_keys(record) and _line_number(record["_line"]) and isinstance(refs, dict)
-            and set(refs) == {key for key in REFERENCES.get(kind, {}) if key in record}
-            and all(_line_number(line) for line in refs.values()))
 
 
 def _valid_record(kind: str, record: Any) -> bool:
