@@ -50,6 +50,7 @@ prescription alone.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -57,9 +58,8 @@ from typing import Any
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from camtool.core.errors import CamtoolError
 from camtool.optics.prescription import Prescription
-from camtool.optics.tracer import RealRayTracer, _sag, _Surface, real_tracer
+from camtool.optics.tracer import RayTraceError, RealRayTracer, _sag, _Surface, real_tracer
 
 __all__ = [
     "SAMPLES",
@@ -93,7 +93,7 @@ class RadialWave:
     unit_lpmm: np.ndarray
 
 
-class Vignetted(CamtoolError, ValueError):
+class Vignetted(RayTraceError):
     """Rays of the beam cannot get through the lens: no wavefront to sample."""
 
 
@@ -121,7 +121,7 @@ class PupilWave:
 
 def grid(step: float) -> tuple[np.ndarray, int]:
     """Grid coordinates (stop radii) with step δ covering [−1, 1] symmetrically, and their count n."""
-    half = int(math.floor(1.0 / step + 1e-9))
+    half = math.floor(1.0 / step + 1e-9)
     n = 2 * half + 1
     return (np.arange(n) - half) * step, n
 
@@ -140,21 +140,26 @@ def otf_grid(pupil: np.ndarray, size: int | None = None) -> np.ndarray:
     return otf / otf[..., :1, :1]
 
 
-def otf_at_lag(pupil: np.ndarray, lag: float, axis: int = -1) -> np.ndarray:
+def otf_at_lag(pupil: np.ndarray, lag: float, axis: int = -1, weights: Any = None) -> Any:
     """The OTF of pupils (…, n, n) at a lag of ``lag`` samples along ``axis`` (−1: ξ, −2: η), by FFT.
 
     The slice of the OTF along one axis is the Fourier transform of the line
-    spread function: one FFT per grid row, the rows' autocorrelations summed
-    (the same numbers as :func:`otf_grid` along that axis, at a fraction of
-    the cost). A lag between whole samples is interpolated linearly.
+    spread function: the squared moduli of the rows' Fourier transforms
+    (each row zero-padded to at least n + lag + 2), summed over the rows
+    (``weights``: a weight per row, for a pupil given by half its rows), and
+    transformed back — the same numbers as :func:`otf_grid` along that axis,
+    at a fraction of the cost. A lag between whole samples is interpolated
+    linearly.
     """
     if axis == -2:
         pupil = np.swapaxes(pupil, -1, -2)
     n = pupil.shape[-1]
-    low = int(math.floor(lag))
+    low = math.floor(lag)
     size = _fast_size(n + low + 2)
     amplitude = np.fft.fft(pupil, n=size, axis=-1)
-    line = np.fft.ifft((amplitude * amplitude.conj()).real, axis=-1).sum(axis=-2)
+    power = amplitude.real ** 2 + amplitude.imag ** 2
+    spectrum = power.sum(axis=-2) if weights is None else np.tensordot(weights, power, axes=([0], [-2]))
+    line = np.fft.ifft(spectrum, axis=-1)
     zero = line[..., 0].real
     frac = lag - low
     value = line[..., low] if frac == 0.0 else (1.0 - frac) * line[..., low] + frac * line[..., low + 1]
@@ -164,7 +169,7 @@ def otf_at_lag(pupil: np.ndarray, lag: float, axis: int = -1) -> np.ndarray:
 
 def _fast_size(n: int) -> int:
     """The smallest 2^a·3^b ≥ n (a fast FFT length)."""
-    best = 1 << int(math.ceil(math.log2(max(n, 1))))
+    best = 1 << math.ceil(math.log2(max(n, 1)))
     three = 1
     while three < best:
         power = three
@@ -272,6 +277,7 @@ class WavefrontTracer:
         self.wavelength_mm = prescription.wavelength_nm * 1e-6
         self.n_object = prescription.object_index
         self.n_image = prescription.image_index
+        self._last_aims: tuple[float, np.ndarray, np.ndarray] | None = None
 
     # -- launching and aiming ----------------------------------------------------------
 
@@ -302,15 +308,19 @@ class WavefrontTracer:
         void = ~(kmin > 0.0)
         return np.where(void, np.nan, x + t * kx), np.where(void, np.nan, y + t * ky)
 
-    def aim(self, v: Any, tan: Any, sx: Any, sy: Any, r_stop: float) -> tuple[Any, Any]:
+    def aim(self, v: Any, tan: Any, sx: Any, sy: Any, r_stop: float, guess: Any = None) -> tuple[Any, Any]:
         """Entrance-pupil-plane points of the rays that meet the stop at (sx, sy)·r_stop (Newton's method).
 
         Arrays broadcast; the Jacobian by finite differences (relative step
-        1e-7 of the pupil). NaN where the ray cannot reach the stop.
+        1e-7 of the pupil); ``guess`` the starting η aims of meridional rays
+        (default the paraxial m_E·(sx, sy)·r_stop). Stops once a step is below
+        1e-10 of the pupil radius: the wavefront's error from the rest is far
+        below 1e-6 waves. NaN where the ray cannot reach the stop.
         """
         m_e = self.first.m_e
         tx, ty = sx * r_stop, sy * r_stop
-        ax, ay = np.broadcast_arrays(np.asarray(tx * m_e, float), np.asarray(ty * m_e, float))
+        start_y = ty * m_e if guess is None else guess
+        ax, ay = np.broadcast_arrays(np.asarray(tx * m_e, float), np.asarray(start_y, float))
         ax, ay = ax.copy(), ay.copy()
         h = 1e-7 * abs(r_stop * m_e)
         meridian = not np.any(ax)
@@ -382,8 +392,16 @@ class WavefrontTracer:
         v = np.atleast_1d(np.asarray(v, float))
         film = np.broadcast_to(np.asarray(film_z, float), v.shape)[:, None]
         nodes = _RADII if radii is None else np.asarray(radii, float)
+        guess = None
+        last = self._last_aims
+        if last is not None and last[0] == f_number and last[2].shape[1] == nodes.size:
+            # start from the aims of the nearest object traced before: one or two Newton steps instead of four
+            guess = last[2][np.abs(v[:, None] - last[1][None, :]).argmin(axis=1)]
         with np.errstate(all="ignore"):
-            _, ay = self.aim(v[:, None], 0.0, 0.0, nodes[None, :], self._r_stop(f_number))
+            _, ay = self.aim(v[:, None], 0.0, 0.0, nodes[None, :], self._r_stop(f_number), guess)
+        if np.all(np.isfinite(ay)):
+            self._last_aims = (f_number, v.copy(), np.broadcast_to(ay, (v.size, nodes.size)).copy())
+        with np.errstate(all="ignore"):
             traced = self._to_image(v[:, None], 0.0, 0.0, ay)
             total = self._sphere_path(traced, 0.0, 0.0, film)
         values = (total - total[:, :1]) / self.wavelength_mm
@@ -391,35 +409,16 @@ class WavefrontTracer:
             raise Vignetted(f"{self.rays._name()}: rays of the f/{f_number:g} beam cannot get through the lens")
         ky = traced[4]
         unit = np.abs(ky[:, -1]) * self.n_image / self.wavelength_mm
-        coef = values if radii is not None else cheb.chebfit(2.0 * nodes * nodes - 1.0, values.T, RADIAL_NODES).T
+        coef = values if radii is not None else values @ _lobatto(RADIAL_NODES).T
         return RadialWave(coef, unit)
 
     def axial_mtf(self, v: Any, f_number: float, film_z: Any, frequency_lpmm: float,
                   samples: int = SAMPLES) -> np.ndarray:
         """MTF at ν (lp/mm) of axial objects at pupil vergences v on films ``film_z``, by FFT (one per object).
 
-        For each object the grid step δ ≈ 2/(samples − 1) is adjusted so that
-        ν falls on a whole lag K = ν/(δ·ν₁), ν₁ the frequency of a shift of
-        one stop radius: the OTF is read at a grid lag, not interpolated.
-        0 at and beyond the cut-off.
+        :meth:`radial`, then :func:`radial_mtf`.
         """
-        v = np.atleast_1d(np.asarray(v, float))
-        wave = self.radial(v, f_number, film_z)
-        out = np.zeros(v.size)
-        nominal = 2.0 / (samples - 1)
-        for i in range(v.size):
-            shift = frequency_lpmm / wave.unit_lpmm[i]  # the pupil shift in stop radii
-            if not shift < 2.0:
-                continue
-            lags = max(1, round(shift / nominal))
-            step = shift / lags
-            coords, _ = grid(step)
-            rho2 = coords[:, None] ** 2 + coords[None, :] ** 2
-            inside = rho2 <= 1.0 + 1e-12
-            phase = cheb.chebval(2.0 * np.minimum(rho2, 1.0) - 1.0, wave.coef[i])
-            pupil = np.where(inside, np.exp(2j * np.pi * phase), 0.0)
-            out[i] = abs(otf_at_lag(pupil, float(lags)))
-        return out
+        return radial_mtf(self.radial(v, f_number, film_z), frequency_lpmm, samples)
 
     def wavefront(self, v: Any, f_number: float, film_z: Any, field_deg: float = 0.0,
                   step: float | None = None) -> PupilWave:
@@ -528,6 +527,56 @@ class WavefrontTracer:
                 wave = self.wavefront(v[i : i + 1], f_number, film[i : i + 1], field_deg, shift / lags)
                 out[i, k] = abs(otf_at_lag(wave.pupil()[0], float(lags), axis))
         return out
+
+
+def radial_mtf(wave: RadialWave, frequency_lpmm: float, samples: int = SAMPLES) -> np.ndarray:
+    """MTF at ν (lp/mm) of axial wavefronts, by FFT of the pupil function on a grid (one value per object).
+
+    For each object the grid step δ ≈ 2/(samples − 1) is adjusted so that
+    ν falls on a whole lag K = ν/(δ·ν₁), ν₁ the frequency of a shift of one
+    stop radius: the OTF is read at a grid lag, not interpolated. The pupil
+    is symmetric about ξ = 0, so the rows η ≥ 0 are transformed, those with
+    η > 0 counted twice. 0 at and beyond the cut-off.
+    """
+    out = np.zeros(wave.unit_lpmm.size)
+    nominal = 2.0 / (samples - 1)
+    for i in range(out.size):
+        shift = frequency_lpmm / wave.unit_lpmm[i]  # the pupil shift in stop radii
+        if not shift < 2.0:
+            continue
+        lags = max(1, round(shift / nominal))
+        step = shift / lags
+        _, n = grid(step)
+        radii2, where, weights = _radii(n)
+        rho2 = radii2 * step * step
+        phase = cheb.chebval(2.0 * np.minimum(rho2, 1.0) - 1.0, wave.coef[i])
+        values = np.where(rho2 <= 1.0 + 1e-12, np.exp(2j * np.pi * phase), 0.0)
+        out[i] = abs(otf_at_lag(values[where], float(lags), weights=weights))
+    return out
+
+
+@functools.lru_cache(maxsize=64)
+def _radii(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """An n × n grid about its centre, rows η ≥ 0: the distinct squared radii (grid steps²), each point's
+    index among them, and the row weights (1 for η = 0, 2 for the rows that stand for ±η)."""
+    index = np.arange(n) - n // 2
+    rows = index[n // 2 :]
+    key = rows[:, None] ** 2 + index[None, :] ** 2
+    unique, inverse = np.unique(key, return_inverse=True)
+    weights = np.where(rows == 0, 1.0, 2.0)
+    return unique.astype(float), inverse.reshape(key.shape), weights
+
+
+@functools.lru_cache(maxsize=4)
+def _lobatto(degree: int) -> np.ndarray:
+    """The matrix taking values at x_j = −cos(πj/n) (j = 0…n) to Chebyshev coefficients (discrete cosine sums)."""
+    j = np.arange(degree + 1)
+    matrix = 2.0 / degree * np.cos(np.pi * np.outer(j, j) / degree) * (-1.0) ** j[:, None]
+    matrix[:, 0] *= 0.5
+    matrix[:, -1] *= 0.5
+    matrix[0] *= 0.5
+    matrix[-1] *= 0.5
+    return matrix
 
 
 def _distance_to(s: _Surface, x: Any, y: Any, z0: Any, kx: Any, ky: Any, kz: Any) -> Any:
