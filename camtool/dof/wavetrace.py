@@ -38,7 +38,7 @@ import numpy as np
 from camtool.core.arrays import is_scalar
 from camtool.core.errors import DomainError, require_positive
 from camtool.dof.limits import DofLimits
-from camtool.dof.wave import DEFAULT_CRITERION, Criterion, criterion_frequency
+from camtool.dof.wave import DEFAULT_CRITERION, ContrastUnreachable, Criterion, criterion_frequency
 
 __all__ = ["NothingSharpHere", "prescription_wave_dof"]
 
@@ -49,12 +49,19 @@ _ROUNDS = 40
 _TOLERANCE = 1e-7
 
 
-class NothingSharpHere(DomainError):
-    """Even the focused object's MTF at the criterion's frequency is below the level: nothing is sharp enough."""
+class NothingSharpHere(ContrastUnreachable):
+    """Even the focused object's MTF at the criterion's frequency is below the level: nothing is sharp enough.
+
+    A :class:`camtool.dof.wave.ContrastUnreachable` whose ``largest_f_number``
+    is unknown (None): a real lens's contrast need not fall as it stops down.
+    """
 
     def __init__(self, f_number: float, criterion: Criterion, frequency_lpmm: float, mtf: float, name: str) -> None:
         self.mtf = mtf
-        super().__init__(
+        self.largest_f_number = None  # type: ignore[assignment]
+        self.criterion = criterion
+        DomainError.__init__(
+            self, 
             "f_number", f_number, f"an f-number at which {name} in focus meets {criterion.label()}",
             detail=f"nothing is sharp enough: in focus the MTF of {name} at {frequency_lpmm:.3g} lp/mm is "
                    f"{mtf:.3g}, below {criterion.level:.3g}",
