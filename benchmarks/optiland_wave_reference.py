@@ -21,8 +21,8 @@ infinity for the longer lenses. optiland's ``FFTMTF`` (strategy ``chief_ray``: t
 centred on the chief ray's image point, through the exit pupil; num_rays 129 across the pupil,
 grid 512) gives the tangential and sagittal MTF at its own frequency samples (lags of its pupil
 grid); the rows keep a few of them. Columns: lens, f_number, object_z_mm (lens coordinates, the
-first vertex at 0; ``-inf`` at infinity), film_z_mm, field_deg, frequency_lpmm, mtf_tangential,
-mtf_sagittal.
+first vertex at 0; ``-inf`` at infinity), film_z_mm, defocus_quarter_waves (how far the film was moved
+behind the focus), field_deg, frequency_lpmm, mtf_tangential, mtf_sagittal.
 """
 
 from __future__ import annotations
@@ -92,8 +92,9 @@ def optiland_lens(lens, f_number: float, object_z: float, film_z: float, field_d
     return op
 
 
-def scenes(name: str, lens) -> list[tuple[float, float, float, float]]:
-    """(N, object z, film z, field) per scene: infinity and 20 f, in focus and defocused; a field point."""
+def scenes(name: str, lens) -> list[tuple[float, float, float, float, float]]:
+    """(N, object z, film z, field, defocus) per scene: infinity and 20 f, in focus and moved by 1 or 3 quarter
+    waves of defocus (2·λ·N² each, behind the focus); a field point in focus."""
     fo = first_order(lens)
     n_design = lens.f_number or 4.0
     out = []
@@ -102,23 +103,27 @@ def scenes(name: str, lens) -> list[tuple[float, float, float, float]]:
         quarter = 2.0 * lam * n * n  # the image-side shift of a quarter wave of defocus at f/N: 2λN²
         for distance in (math.inf, 20.0 * fo.efl_mm):
             focus = real_focus(lens, n, distance, "sensor")
-            for shift in (0.0, 1.0 * quarter if n == n_design else 3.0 * quarter):
-                out.append((n, focus.object_z_mm, focus.film_z_mm + shift, 0.0))
+            for quarters in (0.0, 1.0 if n == n_design else 3.0):
+                out.append((n, focus.object_z_mm, focus.film_z_mm + quarters * quarter, 0.0, quarters))
     if fo.efl_mm > 20.0:
         focus = real_focus(lens, 2.0 * n_design, math.inf, "sensor")
-        out.append((2.0 * n_design, focus.object_z_mm, focus.film_z_mm, 8.0))
+        out.append((2.0 * n_design, focus.object_z_mm, focus.film_z_mm, 8.0, 0.0))
     return out
 
 
 def main() -> None:
-    from optiland import __version__ as version  # noqa: F401  (fails clearly without optiland)
-    from optiland.mtf import FFTMTF
+    from importlib.metadata import version as installed
+
+    from optiland.mtf import FFTMTF  # fails clearly without optiland
+
+    version = installed("optiland")
 
     print(f"# optiland {version} FFTMTF (num_rays {NUM_RAYS}, grid_size {GRID}, strategy chief_ray, ray aiming "
           "iterative); produced by: /tmp/optics-wave/bin/python benchmarks/optiland_wave_reference.py")
-    print("lens,f_number,object_z_mm,film_z_mm,field_deg,frequency_lpmm,mtf_tangential,mtf_sagittal")
+    print("lens,f_number,object_z_mm,film_z_mm,defocus_quarter_waves,field_deg,frequency_lpmm,mtf_tangential,"
+          "mtf_sagittal")
     for name, lens in shipped().items():
-        for n, object_z, film_z, field in scenes(name, lens):
+        for n, object_z, film_z, field, quarters in scenes(name, lens):
             op = optiland_lens(lens, n, object_z, film_z, field)
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
@@ -129,12 +134,12 @@ def main() -> None:
             for lag in LAGS:
                 if field and abs(freq_t[lag] - freq_s[lag]) > 1e-9 * freq_t[lag]:
                     # the directions' frequency scales differ: a row for each
-                    print(f"{name},{n:.12g},{object_z:.12g},{film_z:.12g},{field:g},{freq_t[lag]:.12g},"
+                    print(f"{name},{n:.12g},{object_z:.12g},{film_z:.12g},{quarters:g},{field:g},{freq_t[lag]:.12g},"
                           f"{tangential[lag]:.9f},")
-                    print(f"{name},{n:.12g},{object_z:.12g},{film_z:.12g},{field:g},{freq_s[lag]:.12g},,"
+                    print(f"{name},{n:.12g},{object_z:.12g},{film_z:.12g},{quarters:g},{field:g},{freq_s[lag]:.12g},,"
                           f"{sagittal[lag]:.9f}")
                 else:
-                    print(f"{name},{n:.12g},{object_z:.12g},{film_z:.12g},{field:g},{freq_t[lag]:.12g},"
+                    print(f"{name},{n:.12g},{object_z:.12g},{film_z:.12g},{quarters:g},{field:g},{freq_t[lag]:.12g},"
                           f"{tangential[lag]:.9f},{sagittal[lag]:.9f}")
             sys.stdout.flush()
 

@@ -30,12 +30,19 @@ frequency
 
     ν = k·δ·Δκ/(2·λ),
 
-with δ the grid step (stop radii), Δκ the difference of the direction cosines
-(along the lag) of the two opposite marginal rays and λ in mm: the pupil
-mapped to image-space direction cosines as an affine map (exact for a lens
-that obeys the sine condition; optiland calibrates its FFT MTF the same way).
-On the axis this is ν = k·δ/(2·λ·N_w), N_w = 1/(2 sin U′) the working
-f-number of the real marginal ray.
+with δ the grid step (stop radii), Δκ the difference (along the lag) of the
+*canonical coordinates* of the two opposite marginal rays — the direction
+cosines, seen from the reference sphere's centre on the film, of the points
+where they cross the sphere — and λ in mm: the Fraunhofer kernel from the
+reference sphere to the film (Goodman §6.4 for the defocused pupil; H. H.
+Hopkins, Proc. Phys. Soc. B 70, 1002, 1957, for canonical coordinates), with
+the pupil mapped to them as an affine map (exact for a lens that obeys the
+sine condition). In focus the sphere's centre is the rays' own image point
+and Δκ/2 is the sine of the marginal ray's angle, which is how optiland
+calibrates its FFT MTF; out of focus the sphere's geometry, not the rays'
+convergence, sets the scale, as in the perfect lens's OTF
+(:mod:`camtool.optics.transfer`: s = ν·λ·N_w with N_w fixed by the film).
+On the axis ν = k·δ/(2·λ·N_w), N_w = 1/(2 sin U′).
 
 **Sampling and error.** :data:`SAMPLES` grid points across the stop
 diameter; for one frequency the step is chosen so the frequency falls on a
@@ -86,7 +93,8 @@ class RadialWave:
 
     ``coef`` (B, D + 1): Chebyshev coefficients in 2ρ² − 1 (waves);
     ``unit_lpmm`` (B,): the spatial frequency of a pupil shift of one stop
-    radius, sin U′/λ with U′ the image-space angle of the marginal ray.
+    radius, sin U′/λ with U′ the angle at the film's axial point of the marginal ray's point on the reference
+    sphere (the marginal ray's own angle when the object is in focus).
     """
 
     coef: np.ndarray
@@ -277,7 +285,7 @@ class WavefrontTracer:
         self.wavelength_mm = prescription.wavelength_nm * 1e-6
         self.n_object = prescription.object_index
         self.n_image = prescription.image_index
-        self._last_aims: tuple[float, np.ndarray, np.ndarray] | None = None
+        self._aims: dict[float, np.ndarray] = {}
 
     # -- launching and aiming ----------------------------------------------------------
 
@@ -357,20 +365,46 @@ class WavefrontTracer:
         return tuple(out)
 
     def _sphere_path(self, rays: tuple[Any, ...], centre_x: Any, centre_y: Any, film_z: Any) -> Any:
-        """Optical path of each ray to the reference sphere centred on (x, y, film), through the exit pupil."""
+        """Optical path of each ray to the reference sphere (:meth:`_sphere`)."""
+        return self._sphere(rays, centre_x, centre_y, film_z)[0]
+
+    def _sphere(self, rays: tuple[Any, ...], centre_x: Any, centre_y: Any, film_z: Any) -> tuple[Any, Any, Any]:
+        """Rays to the reference sphere centred on (x, y, film) through the exit pupil's centre on the axis.
+
+        Returns the optical path of each ray to the sphere and where it
+        crosses it, as direction cosines of the line to the centre projected
+        on the film (x, y): the canonical pupil coordinates whose differences
+        over λ are spatial frequencies on the film. A sphere through an exit
+        pupil at infinity (or beyond 1e6 mm) is replaced by one through the
+        last vertex.
+        """
         x, y, z, kx, ky, kz, path = rays
-        radius = film_z - self.first.z_x_mm
-        radius = np.where(np.isfinite(radius) & (np.abs(radius) < 1e6), radius, film_z - self.surfaces[-1].z)
+        axial = film_z - self.first.z_x_mm
+        axial = np.where(np.isfinite(axial) & (np.abs(axial) < 1e6), axial, film_z - self.surfaces[-1].z)
+        radius = np.sqrt(axial * axial + centre_x * centre_x + centre_y * centre_y)
         qx, qy, qz = x - centre_x, y - centre_y, z - film_z
         dot = qx * kx + qy * ky + qz * kz
         length = np.sqrt(qx * qx + qy * qy + qz * qz)
-        excess = (length - np.abs(radius)) * (length + np.abs(radius))
-        sign = np.where(radius > 0.0, -1.0, 1.0)
+        excess = (length - radius) * (length + radius)
+        sign = np.where(axial > 0.0, -1.0, 1.0)
         t = -dot + sign * np.sqrt(dot * dot - excess)
-        return path + self.n_image * t
+        return path + self.n_image * t, (qx + t * kx) / radius, (qy + t * ky) / radius
 
     def _r_stop(self, f_number: float) -> float:
         return self.first.efl_mm / (2.0 * f_number * self.first.m_e)
+
+    def _axial_aims(self, f_number: float) -> np.ndarray:
+        """The aims of the radial nodes for an object at infinity: the start of every object's search (one per N).
+
+        The same start whatever was traced before, so an answer never depends on the order of the questions.
+        """
+        if f_number not in self._aims:
+            if len(self._aims) >= 64:
+                del self._aims[next(iter(self._aims))]
+            with np.errstate(all="ignore"):
+                _, ay = self.aim(np.zeros((1, 1)), 0.0, 0.0, _RADII[None, :], self._r_stop(f_number))
+            self._aims[f_number] = np.where(np.isfinite(ay), ay, _RADII * self._r_stop(f_number) * self.first.m_e)
+        return self._aims[f_number]
 
     def radial(self, v: Any, f_number: float, film_z: Any, radii: Any = None) -> RadialWave:
         """On the axis: W(ρ²) of objects at pupil vergences v on films ``film_z``, by meridional rays.
@@ -392,23 +426,16 @@ class WavefrontTracer:
         v = np.atleast_1d(np.asarray(v, float))
         film = np.broadcast_to(np.asarray(film_z, float), v.shape)[:, None]
         nodes = _RADII if radii is None else np.asarray(radii, float)
-        guess = None
-        last = self._last_aims
-        if last is not None and last[0] == f_number and last[2].shape[1] == nodes.size:
-            # start from the aims of the nearest object traced before: one or two Newton steps instead of four
-            guess = last[2][np.abs(v[:, None] - last[1][None, :]).argmin(axis=1)]
+        guess = self._axial_aims(f_number) if radii is None else None
         with np.errstate(all="ignore"):
             _, ay = self.aim(v[:, None], 0.0, 0.0, nodes[None, :], self._r_stop(f_number), guess)
-        if np.all(np.isfinite(ay)):
-            self._last_aims = (f_number, v.copy(), np.broadcast_to(ay, (v.size, nodes.size)).copy())
         with np.errstate(all="ignore"):
             traced = self._to_image(v[:, None], 0.0, 0.0, ay)
-            total = self._sphere_path(traced, 0.0, 0.0, film)
+            total, _, cos_y = self._sphere(traced, 0.0, 0.0, film)
         values = (total - total[:, :1]) / self.wavelength_mm
         if not np.all(np.isfinite(values)):
             raise Vignetted(f"{self.rays._name()}: rays of the f/{f_number:g} beam cannot get through the lens")
-        ky = traced[4]
-        unit = np.abs(ky[:, -1]) * self.n_image / self.wavelength_mm
+        unit = np.abs(cos_y[:, -1]) * self.n_image / self.wavelength_mm
         coef = values if radii is not None else values @ _lobatto(RADIAL_NODES).T
         return RadialWave(coef, unit)
 
@@ -453,7 +480,7 @@ class WavefrontTracer:
         inside0 = rho2 <= 1.0 + 1e-12
         if field_deg == 0.0:
             wave = self.radial(v, f_number, film)
-            opd = cheb.chebval(2.0 * np.minimum(rho2, 1.0) - 1.0, wave.coef.T[:, :, None, None])
+            opd = cheb.chebval(2.0 * np.minimum(rho2, 1.0) - 1.0, wave.coef.T)
             inside = np.broadcast_to(inside0, opd.shape)
             lag = np.stack([wave.unit_lpmm, wave.unit_lpmm], axis=1) * step
             return PupilWave(np.where(inside, opd, 0.0), inside, step, lag, np.zeros((v.size, 2)))
@@ -479,9 +506,9 @@ class WavefrontTracer:
         """Off the axis: the chief ray's path to its sphere, where it meets the film, and the frequency units.
 
         The units (B, 2) are the spatial frequencies of a pupil shift of one
-        stop radius along ξ and η: half the difference of the direction
-        cosines of the opposite marginal rays, projected on the flat film (as
-        optiland calibrates its FFT MTF), over λ.
+        stop radius along ξ and η: half the difference of the canonical
+        coordinates (:meth:`_sphere`) of the opposite marginal rays, projected
+        on the flat film, over λ.
         """
         r_stop = self._r_stop(f_number)
         tan = math.tan(math.radians(field_deg))
@@ -498,10 +525,10 @@ class WavefrontTracer:
         with np.errstate(all="ignore"):
             t_film = (film - z[:, 0]) / kz[:, 0]
         cx, cy = x[:, 0] + t_film * kx[:, 0], y[:, 0] + t_film * ky[:, 0]
-        unit = np.stack([np.abs(kx[:, 1] - kx[:, 2]), np.abs(ky[:, 3] - ky[:, 4])], axis=1)
+        paths, cos_x, cos_y = self._sphere(rays, cx[:, None], cy[:, None], film[:, None])
+        unit = np.stack([np.abs(cos_x[:, 1] - cos_x[:, 2]), np.abs(cos_y[:, 3] - cos_y[:, 4])], axis=1)
         unit = unit * self.n_image / (2.0 * self.wavelength_mm)
-        chief = self._sphere_path(tuple(a[:, :1] for a in rays), cx[:, None], cy[:, None], film[:, None])
-        return chief, cx, cy, unit
+        return paths[:, :1], cx, cy, unit
 
     def mtf(self, v: Any, f_number: float, film_z: Any, frequency_lpmm: float, field_deg: float = 0.0,
             samples: int = SAMPLES) -> np.ndarray:
