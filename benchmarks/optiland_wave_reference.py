@@ -119,7 +119,8 @@ def main() -> None:
     version = installed("optiland")
 
     print(f"# optiland {version} FFTMTF (num_rays {NUM_RAYS}, grid_size {GRID}, strategy chief_ray, ray aiming "
-          "iterative); produced by: /tmp/optics-wave/bin/python benchmarks/optiland_wave_reference.py")
+          "iterative); produced by: /tmp/optics-wave/bin/python benchmarks/optiland_wave_reference.py "
+          "> tests/data/optiland-fft-mtf.csv")
     print("lens,f_number,object_z_mm,film_z_mm,defocus_quarter_waves,field_deg,frequency_lpmm,mtf_tangential,"
           "mtf_sagittal")
     for name, lens in shipped().items():

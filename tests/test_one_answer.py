@@ -220,3 +220,18 @@ def test_a_contrast_criterion_gives_one_answer_by_option_batch_and_api(criterion
     assert h["hyperfocal_mm"] == option["hyperfocal_mm"]
     (at_h,) = run_json("dof", "-f", "50", "-N", "8", "-s", f"{h['hyperfocal_mm']}mm", "--criterion", criterion)
     assert at_h["far_mm"] is None  # infinity
+
+
+def test_a_contrast_criterion_on_a_prescription_gives_one_answer_by_option_and_api() -> None:
+    """dof --prescription --criterion and the Python API: the one wave rung on the real wavefront, one answer."""
+    import camtool
+
+    (option,) = run_json("dof", "--prescription", "telephoto127", "-N", "11", "-s", "3", "--criterion", "mtf:0.3@20")
+    lens = load_db().prescription("telephoto127").optics
+    api = camtool.depth_of_field(None, 11, option["coc_mm"], 3000, prescription=lens, contrast_criterion="mtf:0.3@20")
+    assert option["model"] == api.model == "wave+prescription"
+    for key in ("near_mm", "far_mm", "hyperfocal_mm"):
+        assert option[key] == getattr(api, key)
+    (wave,) = run_json("dof", "--prescription", "telephoto127", "-N", "11", "-s", "3", "--model", "wave",
+                       "--criterion", "mtf:0.3@20")
+    assert wave["near_mm"] == option["near_mm"] and wave["far_mm"] == option["far_mm"]
