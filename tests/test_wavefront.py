@@ -60,7 +60,7 @@ def test_fft_mtf_of_a_perfect_pupil_agrees_with_the_analytic_otf(defocus: float)
 
 def test_the_row_transform_is_the_two_dimensional_otf() -> None:
     """otf_at_lag (one FFT per row) gives the 2-D FFT of the PSF along the axis, to rounding."""
-    coords, n = grid(2.0 / 40)
+    coords, _ = grid(2.0 / 40)
     x, y = np.meshgrid(coords, coords)
     rng = np.random.default_rng(3)
     phase = 0.7 * x * x + 0.3 * y ** 3 + 0.1 * rng.standard_normal(x.shape)

@@ -61,7 +61,7 @@ class NothingSharpHere(ContrastUnreachable):
         self.largest_f_number = None  # type: ignore[assignment]
         self.criterion = criterion
         DomainError.__init__(
-            self, 
+            self,
             "f_number", f_number, f"an f-number at which {name} in focus meets {criterion.label()}",
             detail=f"nothing is sharp enough: in focus the MTF of {name} at {frequency_lpmm:.3g} lp/mm is "
                    f"{mtf:.3g}, below {criterion.level:.3g}",
@@ -111,13 +111,13 @@ def prescription_wave_dof(prescription: Any, f_number: Any, coc_mm: Any, distanc
     >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> r = prescription_wave_dof(lens, 8.0, 0.03, 3000.0)
     >>> round(r.near_mm), round(r.far_mm)
-    (2834, 3187)
+    (2854, 3349)
     """
     if not all(is_scalar(v) for v in (f_number, coc_mm, distance_mm)):
-        n, c, d = np.broadcast_arrays(*(np.asarray(v, float) for v in (f_number, coc_mm, distance_mm)))
+        ns, cs, ds = np.broadcast_arrays(*(np.asarray(v, float) for v in (f_number, coc_mm, distance_mm)))
         rows = [prescription_wave_dof(prescription, float(a), float(b), float(e), distance_from, criterion,
-                                      field_deg) for a, b, e in zip(n.flat, c.flat, d.flat)]
-        return DofLimits(*(np.array(column, float).reshape(n.shape) for column in zip(*rows)))
+                                      field_deg) for a, b, e in zip(ns.flat, cs.flat, ds.flat)]
+        return DofLimits(*(np.array(column, float).reshape(ns.shape) for column in zip(*rows)))
     from camtool.dof.realray import _check_scene, closest_focus_mm, focus_for_film, real_focus
     from camtool.optics.transfer import defocus_at_level
     from camtool.optics.wavefront import radial_mtf, wavefront_tracer
