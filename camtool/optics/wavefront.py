@@ -48,7 +48,7 @@ On the axis ν = k·δ/(2·λ·N_w), N_w = 1/(2 sin U′).
 diameter; for one frequency the step is chosen so the frequency falls on a
 whole lag (no interpolation). Against the exact OTF of a perfect pupil with
 up to four waves of defocus (:func:`camtool.optics.transfer.defocus_mtf`)
-the largest error of the MTF on that grid is below 0.0015 (the staircase of
+the largest error of the MTF on that grid is 0.0017 (the staircase of
 the sampled circle; ``tests/test_wavefront.py``).
 
 numpy is imported with this module: it serves the ``wave`` rung with a
