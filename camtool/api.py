@@ -507,10 +507,11 @@ def depth_of_field(
     coc_mm : float or array, the circle of confusion on the sensor, mm
     distance_mm : float or array, focus distance from the plane ``distance_from``; ``inf`` allowed
     distance_from : ``"sensor"`` (default) or ``"lens"``
-    model : ``"approx"``, ``"thin"``, ``"thick"``, ``"paraxial"``, ``"raytrace"`` or ``"auto"``
+    model : ``"approx"``, ``"thin"``, ``"thick"``, ``"paraxial"``, ``"raytrace"``, ``"wave"`` or ``"auto"``
         (the cheapest rung whose estimated error stays within ``tolerance``)
     pupil_magnification, hiatus_mm : lens data for the ``thick`` rung (P = exit/entrance pupil diameter)
-    prescription : a :class:`camtool.optics.prescription.Prescription` for ``paraxial`` and ``raytrace``
+    prescription : a :class:`camtool.optics.prescription.Prescription` for ``paraxial``, ``raytrace`` and
+        ``wave`` (which then computes the real lens's wavefront and FFT MTF: model ``wave+prescription``)
     diffraction : bool, add the Airy disc to the blur (λ = ``wavelength_nm``)
     contrast_criterion : str or None, ``mtf:LEVEL@FREQ`` as ``--criterion`` takes it: the ``wave`` rung's
         criterion (given, ``auto`` runs ``wave``; docs/wave.md)

@@ -15,8 +15,8 @@ DGAUSS = str(Path(__file__).parent / "data" / "prescriptions" / "dgauss100.yaml"
 
 
 def test_model_all_rows_structure() -> None:
-    rows = run_json("dof", "-N", "2.8", "-s", "2", "--coc", "0.03", "--prescription", DGAUSS, "--model", "all")
-    assert [r["model"] for r in rows] == ["approx", "thin", "paraxial", "raytrace", "wave"]
+    rows = run_json("dof", "-N", "4", "-s", "2", "--coc", "0.03", "--prescription", DGAUSS, "--model", "all")
+    assert [r["model"] for r in rows] == ["approx", "thin", "paraxial", "raytrace", "wave+prescription"]
     for row in rows:
         assert {"model", "error_estimate", "difference_pct", "time_per_evaluation_s", "near_mm", "far_mm",
                 "total_mm"} <= set(row)

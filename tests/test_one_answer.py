@@ -259,3 +259,18 @@ def test_an_anamorphic_preset_and_its_squeeze_typed_on_a_spherical_lens_give_one
         assert result.exit_code == 0, result.output
         curves[way] = json.loads(data.read_text())["curves"]
     assert curves["preset"] == curves["typed"]
+
+
+def test_a_contrast_criterion_on_a_prescription_gives_one_answer_by_option_and_api() -> None:
+    """dof --prescription --criterion and the Python API: the one wave rung on the real wavefront, one answer."""
+    import camtool
+
+    (option,) = run_json("dof", "--prescription", "telephoto127", "-N", "11", "-s", "3", "--criterion", "mtf:0.3@20")
+    lens = load_db().prescription("telephoto127").optics
+    api = camtool.depth_of_field(None, 11, option["coc_mm"], 3000, prescription=lens, contrast_criterion="mtf:0.3@20")
+    assert option["model"] == api.model == "wave+prescription"
+    for key in ("near_mm", "far_mm", "hyperfocal_mm"):
+        assert option[key] == getattr(api, key)
+    (wave,) = run_json("dof", "--prescription", "telephoto127", "-N", "11", "-s", "3", "--model", "wave",
+                       "--criterion", "mtf:0.3@20")
+    assert wave["near_mm"] == option["near_mm"] and wave["far_mm"] == option["far_mm"]

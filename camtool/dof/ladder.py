@@ -383,6 +383,9 @@ def _run(name: str, applied: bool, f: Any, n: Any, c: Any, s: Any, plane: str, l
     return rungs.by_name()[name].run(f, n, usable if applied else c, s, plane, lens, focus)
 
 
+WAVE_PRESCRIPTION = "wave+prescription"
+"""The model a result names when the ``wave`` rung ran on a prescription's real wavefront (camtool.dof.wavetrace)."""
+
 DOMINANCE = 0.5 ** 0.5
 """``auto`` with ``diffraction``: the ``wave`` rung runs where the Airy disc exceeds this fraction of the CoC.
 
@@ -409,6 +412,8 @@ def _wave(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: run
     """The ``wave`` rung (diffraction built in), with its estimate: the lens data it leaves out."""
     limits = rungs.by_name()["wave"].run(f, n, c, s, plane, lens, focus, criterion=criterion,
                                          wavelength_nm=wavelength_nm)
+    if lens.prescription is not None:  # the real lens's wavefront: aberrations, pupils and hiatus included
+        return ModelResult(limits, WAVE_PRESCRIPTION, 0.0)
     effects = _effects(f, n, c, s, plane, lens, 0.0, focus)
     return ModelResult(limits, "wave", left_out(effects, "wave", True))
 
@@ -500,7 +505,8 @@ def depth_of_field(
     -------
     ModelResult
         ``model`` names the rung that ran (``+diffraction`` when the add-on
-        did); ``error_estimate`` the estimated relative error of the answer
+        did; ``wave+prescription`` for ``wave`` on a prescription's real
+        wavefront, :mod:`camtool.dof.wavetrace`); ``error_estimate`` the estimated relative error of the answer
         (what the rung leaves out; for ``raytrace`` 0).
 
     Raises

@@ -44,7 +44,7 @@ from camtool.optics.prescription import Prescription
 from camtool.optics.roots import brent
 from camtool.optics.tracer import _SQRT8, CRITERIA, RayTraceError, RealRayTracer, real_tracer
 
-__all__ = ["NoDepthOfField", "RealFocus", "closest_focus_mm", "raytrace_dof", "real_focus"]
+__all__ = ["NoDepthOfField", "RealFocus", "closest_focus_mm", "focus_for_film", "raytrace_dof", "real_focus"]
 
 _DEGREE = 16
 _TRUST = 1e-10
@@ -621,6 +621,34 @@ def real_focus(
         v, _, _ = _polish(problem, [])
     z, _, b = curves.exact([v])
     return _real_focus(curves, v, float(z[0]), float(b[0]) if criterion == "rms" else 0.0)
+
+
+def focus_for_film(prescription: Prescription, f_number: float, film_z_mm: float) -> RealFocus | None:
+    """The focus that puts the film at ``film_z_mm`` (lens coordinates): the object whose real best focus lies there.
+
+    None when no object between infinity and the closest focus has its best
+    focus there. The inverse of :func:`real_focus` (same definitions).
+
+    Examples
+    --------
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
+    >>> focus = real_focus(lens, 8.0, 1000.0)
+    >>> round(focus_for_film(lens, 8.0, focus.film_z_mm).distance_mm, 6)
+    1000.0
+    """
+    curves = _curves(prescription, float(f_number))
+
+    def behind(z: Any, s: Any, b: Any, v: Any) -> Any:
+        return z - film_z_mm
+
+    found = _first_crossing(curves, behind, 0.0, curves.v_cap)
+    if found is None:
+        return None
+    if not curves.trusts("defocus"):
+        found = brent(lambda v: float(curves.exact([v])[0][0]) - film_z_mm, 0.0, curves.v_cap)
+    z, _, _ = curves.exact([found])
+    return _real_focus(curves, found, float(z[0]), 0.0)
 
 
 def _real_focus(curves: _Curves, v: float, z_film: float, blur: float) -> RealFocus:

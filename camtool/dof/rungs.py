@@ -147,6 +147,10 @@ def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus:
 
 def _wave(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None,
           criterion: Any = None, wavelength_nm: float = 550.0) -> DofLimits:
+    if lens.prescription is not None:  # the real lens's wavefront, at the prescription's own wavelength
+        from camtool.dof.wavetrace import prescription_wave_dof
+
+        return prescription_wave_dof(lens.prescription, n, c, s, plane, criterion)
     from camtool.dof.wave import wave_dof
 
     return wave_dof(f, n, c, s, plane, criterion, wavelength_nm, _distances(focus, plane, 0.0))
@@ -177,7 +181,8 @@ RUNGS: tuple[Rung, ...] = (
     Rung("raytrace", _raytrace, (),
          "real rays", _has_prescription, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
     Rung("wave", _wave, ("pupil", "hiatus", "aberrations"),
-         "perfect thin lens, sharp where its defocused MTF meets --criterion (diffraction and defocus together)",
+         "sharp where the MTF meets --criterion (diffraction and defocus together): a perfect thin lens, or "
+         "with a prescription its real wavefront's FFT MTF",
          hyperfocal_help="by contrast: where the far limit's MTF meets --criterion (auto with --diffraction or "
                          "--criterion)", contrast=True),
 )

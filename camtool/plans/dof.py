@@ -281,7 +281,7 @@ def _direct_all(scene: _Scene) -> DofTable:
             "difference_pct": rung.difference * 100.0, "time_per_evaluation_s": rung.time_per_evaluation_s,
         }))
     rows = [model_rows[i] for i in range(count) for model_rows in per_model]  # every model of one scene together
-    reference = [rung.result.model for rung in rungs if rung.result.model != "wave"][-1]
+    reference = [rung.result.model for rung in rungs if str(rung.result.model).split("+")[0] != "wave"][-1]
     return DofTable(rows, "direct", False, False, None, frozenset(), False, False, reference)
 
 

@@ -389,7 +389,7 @@ def trade_data(focal_length_mm: float | None, f_number: float, coc_mm: float, di
         data.curves.append(Curve(str(row.result.model), group, "rung", [row.time_per_evaluation_s],
                                  [float(row.difference)]))
     data.extra["estimates"] = [float(row.result.error_estimate) for row in rows]
-    data.extra["reference"] = [str(row.result.model) for row in rows if row.result.model != "wave"][-1]
+    data.extra["reference"] = [str(row.result.model) for row in rows if str(row.result.model).split("+")[0] != "wave"][-1]
     return data
 
 
