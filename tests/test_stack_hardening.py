@@ -391,14 +391,14 @@ def test_a_long_rail_plan_streams_the_same_frames(sandbox: None) -> None:
 
 
 def test_a_long_rail_plan_is_written_in_bounded_memory(sandbox: None) -> None:
-    # the peak of Python allocations while a plan goes out is that of a chunk, not of the plan: three
-    # times the frames (60,000 and 180,000) may not raise it by a third (holding the rows would triple it:
-    # about a kilobyte a frame as dicts and text, some 180 MB)
+    # the peak of Python allocations while a plan goes out is that of a chunk (20,000 frames), not of the
+    # plan: three times the frames (40,000 and 120,000, two and six chunks) may not raise it by a third
+    # (holding the rows would triple it: about a kilobyte a frame as dicts and text, some 120 MB)
     import tracemalloc
 
     invoke(["stack", "-m", "1", "-N", "8", "--depth", "5mm", "--format", "json"])  # modules imported first
     peaks = []
-    for frames in (60_000, 180_000):
+    for frames in (40_000, 120_000):
         tracemalloc.start()
         try:
             status, _, err, size, exception = invoke(["stack", "-m", "1", "-N", "8", "--overlap", "0", "--depth",
