@@ -1163,8 +1163,8 @@ def pinhole(film_distance_mm: RealFilmDistance, *, subject_distance_mm: RealDist
     --------
     >>> p = pinhole(100.0)
     >>> [row["method"] for row in p.rows]
-    ['optimum', 'airy', 'rayleigh', 'young']
-    >>> round(p.rows[2]["pinhole_mm"], 4)  # Rayleigh: 1.9·√(0.00055 mm × 100 mm)
+    ['optimum', 'petzval', 'airy', 'rayleigh', 'young']
+    >>> round(p.rows[3]["pinhole_mm"], 4)  # Rayleigh: 1.9·√(0.00055 mm × 100 mm)
     0.4456
     """
     from camtool.plans.pinhole import pinhole_plan

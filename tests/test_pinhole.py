@@ -1,6 +1,7 @@
 """The pinhole: published rules and worked examples, the wave optics behind them, the command and the API.
 
-Independent values: the worked examples of the Airy rule (d = √(2.44·λ·f): 0.366 mm at 100 mm and 550 nm,
+Independent values: Petzval's rule as Sayanagi (J. Opt. Soc. Am. 57, 1091, 1967) quotes it and the worked examples
+of Wikipedia's "Pinhole camera" for it, the worked examples of the Airy rule (d = √(2.44·λ·f): 0.366 mm at 100 mm and 550 nm,
 sundial mailing list; 0.03679·√f mm at 555 nm, G. Penate on the pinhole-discussion list, 2002), Rayleigh's
 1.9·√(f·λ), Young's single Fresnel zone r² = λ·F (half a wave of path difference), the MTF against mpmath's
 pupil autocorrelation, and the optimum constant against a search that does not use the table.
@@ -30,6 +31,19 @@ def test_the_airy_rule_worked_examples() -> None:
                                                                                            rel=5e-4)
     d = ph.rule_diameter_mm(math.sqrt(2.44), 100.0)
     assert ph.airy_mm(d, 100.0) == pytest.approx(d, rel=1e-12)  # the Airy disc as wide as the hole
+
+
+def test_petzval_s_rule_and_its_worked_examples() -> None:
+    # Petzval: the patch is D = d + k·L·λ/d with k = 2, least where dD/dd = 1 - 2·L·λ/d² = 0: d = √2·√(λ·L)
+    petzval = next(rule for rule in ph.RULES if rule.name == "petzval")
+    length = 100.0
+    d = ph.rule_diameter_mm(petzval.constant, length)
+    patch = [x + 2 * length * 550e-6 / x for x in (d * 0.99, d, d * 1.01)]
+    assert patch[1] < patch[0] and patch[1] < patch[2]
+    # Wikipedia, "Pinhole camera": 0.17 mm for a pinhole-to-film distance of 1 inch, 0.23 mm for 5 cm, at 550 nm
+    assert round(ph.rule_diameter_mm(petzval.constant, 25.4), 2) == 0.17
+    assert round(ph.rule_diameter_mm(petzval.constant, 50.0), 2) == 0.23
+    assert ph.defocus_waves(d, length, math.inf) == pytest.approx(0.25, rel=1e-12)  # a quarter wave, k²/8
 
 
 def test_rayleigh_and_young() -> None:
@@ -109,7 +123,7 @@ def test_the_optimum_resolves_finer_detail_than_every_rule() -> None:
 
 def test_plan_geometry_and_exposure() -> None:
     plan = pinhole_plan(film_distance_mm=50.0, subject_distance_mm=1000.0, ev100=15.0, iso=100.0)
-    row = plan.rows[2]
+    row = plan.rows[3]
     assert row["method"] == "rayleigh"
     f_eff = 50.0 * 1000.0 / 1050.0
     assert plan.effective_distance_mm == pytest.approx(f_eff, rel=1e-15)
@@ -120,13 +134,13 @@ def test_plan_geometry_and_exposure() -> None:
     assert row["horizontal_deg"] == pytest.approx(math.degrees(2 * math.atan(36.0 / 100.0)), rel=1e-12)
     assert row["shutter_s"] == pytest.approx(row["f_number"] ** 2 / 2 ** 15, rel=1e-12)  # sunny 16: EV100 15
     far = pinhole_plan(film_distance_mm=5000.0)
-    assert far.rows[3]["f_number"] > 1024 and far.rows[3]["shutter_s"] is None
+    assert far.rows[4]["f_number"] > 1024 and far.rows[4]["shutter_s"] is None
 
 
 def test_the_command() -> None:
     out = run("pinhole", "-f", "50", "--format", "json")
     rows = json.loads(out.stdout)
-    assert out.exit_code == 0 and [r["method"] for r in rows] == ["optimum", "airy", "rayleigh", "young"]
+    assert out.exit_code == 0 and [r["method"] for r in rows] == ["optimum", "petzval", "airy", "rayleigh", "young"]
     assert run("pinhole", "-f", "50", "--contrast", "1.2").exit_code == 2
     assert run("pinhole", "-f", "0.1mm").exit_code == 2
     table = run("pinhole", "-f", "150", "-s", "2m")

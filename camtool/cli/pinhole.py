@@ -32,8 +32,8 @@ def pinhole(ctx: click.Context, film_distance, distance, contrast, wavelength, e
 
     Each row is a diameter d = k·√(λ·F), F = L·s/(L + s): the optimum for
     --contrast (the k whose MTF reaches that contrast at the highest
-    frequency on the film), then the Airy rule (k = 1.562), Rayleigh's 1.9
-    and Young's one Fresnel zone (2). Each shows its f-number L/d, the
+    frequency on the film), then Petzval's rule (k = √2), the Airy rule
+    (k = 1.562), Rayleigh's 1.9 and Young's one Fresnel zone (2). Each shows its f-number L/d, the
     hole's shadow d(1 + L/s), the Airy disc 2.44·λ·L/d, the defocus k²/8
     waves, the frequency at which its MTF falls to the contrast, the
     contrast at which that rule is itself the best, and the exposure time

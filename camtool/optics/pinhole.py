@@ -6,6 +6,11 @@ an Airy pattern, 2.44·λ·L/d across its first dark ring. The published rules
 balance the two as d = k·√(λ·F), with F = L·s/(L + s) the distance that
 plays the focal length (F = L for a distant subject; Young, below):
 
+- ``petzval``, k = √2 = 1.414: the first, J. Petzval (1857, 1859): the patch
+  is taken as the hole plus its diffraction, D = d + 2·λ·L/d, least for
+  d² = 2·λ·L (K. Sayanagi, "Pinhole imagery", J. Opt. Soc. Am. 57, 1091 (1967),
+  quoting Petzval's k = 2; the worked examples of Wikipedia's "Pinhole camera":
+  0.17 mm at 25 mm, 0.23 mm at 5 cm, at 550 nm);
 - ``airy``, k = √2.44 = 1.562: the Airy disc as wide as the hole, d² = 2.44·λ·F
   (the pinhole forums' rule, e.g. the sundial mailing list and the
   alt-photo-process list, 1997: "the pinhole should be the same size as the
@@ -16,7 +21,7 @@ plays the focal length (F = L for a distant subject; Young, below):
 - ``young``, k = 2: the hole is one Fresnel zone, r² = λ·F, where the image is
   best focused (M. Young, "Pinhole optics", Applied Optics 10, 2763 (1971)).
 
-The rules disagree by a quarter (1.562 to 2). The wave optics behind them is
+The rules disagree by about a third (1.414 to 2). The wave optics behind them is
 exact and short: the wave from the point, cut by the hole, reaches the film
 with the defocus W₂₀ = (d/2)²·(1/L + 1/s)/(2λ) waves (the pinhole is a lens
 of infinite focal length), so d = k·√(λ·F) means **W₂₀ = k²/8** whatever
@@ -62,6 +67,7 @@ class PinholeRule(NamedTuple):
 
 
 RULES: tuple[PinholeRule, ...] = (
+    PinholeRule("petzval", math.sqrt(2.0), "hole plus its diffraction least (Petzval 1857)"),
     PinholeRule("airy", math.sqrt(2.44), "Airy disc as wide as the hole"),
     PinholeRule("rayleigh", 1.9, "Lord Rayleigh (1891)"),
     PinholeRule("young", 2.0, "one Fresnel zone (Young 1971)"),
