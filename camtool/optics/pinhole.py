@@ -16,7 +16,8 @@ plays the focal length (F = L for a distant subject; Young, below):
   alt-photo-process list, 1997: "the pinhole should be the same size as the
   diffraction disk");
 - ``rayleigh``, k = 1.9: Lord Rayleigh's constant, the one most quoted
-  (Lord Rayleigh, "On pin-hole photography", Phil. Mag. 31 (1891); quoted as
+  (Lord Rayleigh, "On pin-hole photography", Phil. Mag. 31, 87–99 (1891), paper 178 of his
+  Scientific Papers, vol. 3; quoted as
   d = 1.9√(fλ));
 - ``young``, k = 2: the hole is one Fresnel zone, r² = λ·F, where the image is
   best focused (M. Young, "Pinhole optics", Applied Optics 10, 2763 (1971)).
