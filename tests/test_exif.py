@@ -312,3 +312,13 @@ def test_readme_examples_run() -> None:
                               capture_output=True, text=True)
         assert "Traceback" not in done.stderr and done.stdout, line
         assert done.returncode == (1 if "exit 1" in line else 0), (line, done.stderr)
+
+
+def test_a_scene_s_distance_fills_the_one_value_of_s() -> None:
+    # exif's -s takes one value; a --scene fills it with one number, not a list (a deep fuzz found a traceback)
+    path = str(Path(__file__).parent / "data" / "exif" / "fujifilm_subject.jpg")
+    by_scene = run("exif", "--scene", "portrait-85", "--lens", "sony-fe-85mm-f1.8", path, "--format", "json")
+    typed = run("exif", "--scene", "portrait-85", "--lens", "sony-fe-85mm-f1.8", "-s", "2m", path, "--format", "json")
+    assert by_scene.exit_code == typed.exit_code == 0, by_scene.stderr
+    (row,), (same,) = json.loads(by_scene.stdout), json.loads(typed.stdout)
+    assert row["focus_distance_mm"] == same["focus_distance_mm"] == 2000.0  # the scene's 2 m

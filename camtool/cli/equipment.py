@@ -17,7 +17,7 @@ from typing import Any
 import click
 
 from camtool.cli.options import param_named
-from camtool.cli.params import flatten
+from camtool.cli.params import flatten, one_value
 from camtool.core.errors import DomainError, InputError
 from camtool.plans import equipment
 from camtool.plans.equipment import FULL_FRAME, SensorChoice
@@ -148,7 +148,9 @@ def apply_equipment(ctx: click.Context, params: dict[str, Any]) -> dict[str, Any
 def _fill(ctx: click.Context, params: dict[str, Any], name: str, value: Any) -> None:
     """Put ``value`` in ``params[name]`` in the shape of its option (a list of lists for a repeatable list)."""
     option = param_named(ctx, name)
-    if name in equipment.LIST_INPUTS and option is not None and not getattr(option, "multiple", False):
+    if option is not None and getattr(option, "callback", None) is one_value:
+        params[name] = value  # an option of one value (exif's -s)
+    elif name in equipment.LIST_INPUTS and option is not None and not getattr(option, "multiple", False):
         params[name] = [value]  # a list option given once (exposure's --magnification)
     else:
         params[name] = [[value]] if name in equipment.LIST_INPUTS else value
