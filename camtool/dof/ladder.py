@@ -22,6 +22,7 @@ from camtool.core.planes import FOCUS_PLANES, check_plane
 from camtool.core.steps import step
 from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
+from camtool.dof.closed import thin_hyperfocal_mm
 from camtool.dof.limits import DofLimits
 from camtool.dof.rungs import NO_LENS, LensData
 from camtool.geometry.thinlens import FocusGeometry, focus_geometry
@@ -554,20 +555,89 @@ def depth_of_field(
         limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(model, diffraction), left_out(effects, model, diffraction))
     inputs = (f, f_number, coc_mm, distance_mm, usable)
-    if all(isinstance(v, (int, float)) for v in (*inputs, airy)):
-        name, applied = choose(effects, available_models(lens), diffraction, tolerance)
-        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
-        rung_h = _hyperfocal_rung_of(lens)
-        order = rungs.names()
-        if order.index(name) < order.index(rung_h):
-            at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
-            if limits.far_mm == float("inf") or at_h.far_mm == float("inf"):
+    number = (int, float)
+    if (isinstance(f, number) and isinstance(f_number, number) and isinstance(coc_mm, number)
+            and isinstance(distance_mm, number) and isinstance(usable, number) and isinstance(airy, number)):
+        models, rung_h, below_h, sums = _plan(lens)
+        if diffraction:
+            name, applied = choose(effects, models, diffraction, tolerance)
+            estimate = left_out(effects, name, applied)
+        else:  # the same sums as left_out, in the same order, without its look-ups
+            name, applied, estimate = models[-1], False, None
+            for candidate, fields in sums:
+                total = 0.0
+                for i in fields:
+                    total += effects[i]
+                if total <= tolerance:
+                    name, estimate = candidate, total
+                    break
+            if estimate is None:
+                estimate = total
+        if name in below_h:
+            # the hyperfocal rung's H alone (its closed form, not its limits): its far limit is ∞ exactly from H on
+            h = _hyperfocal_only(rung_h, f, f_number, usable if applied else coc_mm, distance_from, lens)
+            cheap = None if distance_mm >= h else _run(name, applied, f, f_number, coc_mm, distance_mm,
+                                                       distance_from, lens, usable, focus)
+            if cheap is None or cheap.far_mm == float("inf"):
                 # at or beyond the hyperfocal distance: its rung, whose far limit starts being infinite at H
-                return ModelResult(at_h, _label(rung_h, applied), left_out(effects, rung_h, applied))
-            limits = limits._replace(hyperfocal_mm=at_h.hyperfocal_mm)
-        return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
+                at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
+                if applied:
+                    return ModelResult(at_h, _label(rung_h, applied), left_out(effects, rung_h, applied))
+                total = 0.0
+                for i in dict(sums)[rung_h]:
+                    total += effects[i]
+                return ModelResult(at_h, rung_h, total)
+            # the fields in order, hyperfocal_mm the sixth (faster than _replace)
+            return ModelResult(DofLimits(*cheap[:5], h, *cheap[6:]), _label(name, applied), estimate)
+        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
+        return ModelResult(limits, _label(name, applied), estimate)
     return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
                       focus)
+
+
+Plan = tuple[tuple[str, ...], str, frozenset[str], tuple[tuple[str, tuple[int, ...]], ...]]
+_PLANS: dict[int, tuple[LensData, Any, Plan]] = {}
+
+
+def _plan(lens: LensData) -> Plan:
+    """(available rungs, the hyperfocal rung, the rungs cheaper than it, each rung's left-out effects as indices of
+    :class:`Effects`) of ``lens``, remembered by its identity.
+
+    ``auto`` asks on every call; hashing a prescription's surfaces for the
+    cached functions behind these costs more than a closed-form rung, so the
+    answer is kept per LensData object (held, so its id is not reused) and
+    per ladder (:data:`camtool.dof.rungs.RUNGS`, by identity).
+    """
+    entry = _PLANS.get(id(lens))
+    if entry is None or entry[0] is not lens or entry[1] is not rungs.RUNGS:
+        models, rung_h = available_models(lens), _hyperfocal_rung_of(lens)
+        order = rungs.names()
+        below = frozenset(m for m in models if rung_h in models and order.index(m) < order.index(rung_h))
+        sums = tuple((m, tuple(Effects._fields.index(e) for e in rungs.by_name()[m].left_out)) for m in models)
+        if len(_PLANS) >= 64:
+            _PLANS.clear()
+        entry = _PLANS[id(lens)] = (lens, rungs.RUNGS, (models, rung_h, below, sums))
+    return entry[2]
+
+
+@functools.cache
+def _thick_hyperfocal() -> Any:
+    """:func:`camtool.dof.thick.thick_hyperfocal_mm`, imported on first use (start-up) and then kept at hand."""
+    from camtool.dof.thick import thick_hyperfocal_mm
+
+    return thick_hyperfocal_mm
+
+
+def _hyperfocal_only(rung_h: str, f: Any, n: Any, c: Any, plane: str, lens: LensData) -> Any:
+    """The hyperfocal distance the rung ``rung_h`` (thin, thick or paraxial) reports, by its closed form alone."""
+    if rung_h == "thin":
+        return thin_hyperfocal_mm(f, n, c, plane)
+    thick_hyperfocal_mm = _thick_hyperfocal()
+    if rung_h == "paraxial":
+        fo = lens.first_order
+        return thick_hyperfocal_mm(fo.efl_mm, n, c, fo.pupil_magnification, fo.hiatus_mm, plane)
+    p, delta = lens.thick_parameters()  # type: ignore[misc]
+    return thick_hyperfocal_mm(f, n, c, p, delta, plane)
 
 
 def _hyperfocal_rung_of(lens: LensData) -> str:
