@@ -554,11 +554,11 @@ def depth_of_field(
     if model != "auto":
         limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(model, diffraction), left_out(effects, model, diffraction))
-    inputs = (f, f_number, coc_mm, distance_mm, usable)
     number = (int, float)
     if (isinstance(f, number) and isinstance(f_number, number) and isinstance(coc_mm, number)
-            and isinstance(distance_mm, number) and isinstance(usable, number) and isinstance(airy, number)):
-        models, rung_h, below_h, sums = _plan(lens)
+            and isinstance(distance_mm, number)
+            and (not diffraction or (isinstance(usable, number) and isinstance(airy, number)))):
+        models, rung_h, below_h, sums, h_data = _plan(lens)
         if diffraction:
             name, applied = choose(effects, models, diffraction, tolerance)
             estimate = left_out(effects, name, applied)
@@ -573,12 +573,12 @@ def depth_of_field(
                     break
             if estimate is None:
                 estimate = total
-        if name in below_h:
+        if below_h and name in below_h:
             # the hyperfocal rung's H alone (its closed form, not its limits): its far limit is ∞ exactly from H on
-            h = _hyperfocal_only(rung_h, f, f_number, usable if applied else coc_mm, distance_from, lens)
+            h = _hyperfocal_only(rung_h, h_data, f, f_number, usable if applied else coc_mm, distance_from)
             cheap = None if distance_mm >= h else _run(name, applied, f, f_number, coc_mm, distance_mm,
                                                        distance_from, lens, usable, focus)
-            if cheap is None or cheap.far_mm == float("inf"):
+            if cheap is None or cheap[1] == _INF:
                 # at or beyond the hyperfocal distance: its rung, whose far limit starts being infinite at H
                 at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
                 if applied:
@@ -587,21 +587,26 @@ def depth_of_field(
                 for i in dict(sums)[rung_h]:
                     total += effects[i]
                 return ModelResult(at_h, rung_h, total)
-            # the fields in order, hyperfocal_mm the sixth (faster than _replace)
-            return ModelResult(DofLimits(*cheap[:5], h, *cheap[6:]), _label(name, applied), estimate)
+            # the fields in order, hyperfocal_mm the sixth (tuple.__new__: a third of _replace's cost)
+            limits = _TUPLE_NEW(DofLimits, (cheap[0], cheap[1], cheap[2], cheap[3], cheap[4], h, cheap[6]))
+            return ModelResult(limits, _label(name, applied), estimate)
         limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(name, applied), estimate)
+    inputs = (f, f_number, coc_mm, distance_mm, usable)
     return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
                       focus)
 
 
-Plan = tuple[tuple[str, ...], str, frozenset[str], tuple[tuple[str, tuple[int, ...]], ...]]
+Plan = tuple[tuple[str, ...], str, frozenset[str], tuple[tuple[str, tuple[int, ...]], ...], tuple[float, ...]]
 _PLANS: dict[int, tuple[LensData, Any, Plan]] = {}
+_INF = float("inf")
+_TUPLE_NEW = tuple.__new__
 
 
 def _plan(lens: LensData) -> Plan:
     """(available rungs, the hyperfocal rung, the rungs cheaper than it, each rung's left-out effects as indices of
-    :class:`Effects`) of ``lens``, remembered by its identity.
+    :class:`Effects`, the hyperfocal rung's lens data: () for thin, (P, δ) for thick, (f, P, δ) for paraxial) of
+    ``lens``, remembered by its identity.
 
     ``auto`` asks on every call; hashing a prescription's surfaces for the
     cached functions behind these costs more than a closed-form rung, so the
@@ -614,9 +619,15 @@ def _plan(lens: LensData) -> Plan:
         order = rungs.names()
         below = frozenset(m for m in models if rung_h in models and order.index(m) < order.index(rung_h))
         sums = tuple((m, tuple(Effects._fields.index(e) for e in rungs.by_name()[m].left_out)) for m in models)
+        data: tuple[float, ...] = ()
+        if rung_h == "paraxial":
+            fo = lens.first_order
+            data = (fo.efl_mm, fo.pupil_magnification, fo.hiatus_mm)
+        elif rung_h == "thick":
+            data = lens.thick_parameters()  # type: ignore[assignment]
         if len(_PLANS) >= 64:
             _PLANS.clear()
-        entry = _PLANS[id(lens)] = (lens, rungs.RUNGS, (models, rung_h, below, sums))
+        entry = _PLANS[id(lens)] = (lens, rungs.RUNGS, (models, rung_h, below, sums, data))
     return entry[2]
 
 
@@ -628,16 +639,18 @@ def _thick_hyperfocal() -> Any:
     return thick_hyperfocal_mm
 
 
-def _hyperfocal_only(rung_h: str, f: Any, n: Any, c: Any, plane: str, lens: LensData) -> Any:
-    """The hyperfocal distance the rung ``rung_h`` (thin, thick or paraxial) reports, by its closed form alone."""
+def _hyperfocal_only(rung_h: str, data: tuple[float, ...], f: Any, n: Any, c: Any, plane: str) -> Any:
+    """The hyperfocal distance the rung ``rung_h`` (thin, thick or paraxial) reports, by its closed form alone.
+
+    ``data`` is the rung's lens data from :func:`_plan`: () for thin, (P, δ) for thick, (f, P, δ) for paraxial.
+    """
     if rung_h == "thin":
         return thin_hyperfocal_mm(f, n, c, plane)
-    thick_hyperfocal_mm = _thick_hyperfocal()
     if rung_h == "paraxial":
-        fo = lens.first_order
-        return thick_hyperfocal_mm(fo.efl_mm, n, c, fo.pupil_magnification, fo.hiatus_mm, plane)
-    p, delta = lens.thick_parameters()  # type: ignore[misc]
-    return thick_hyperfocal_mm(f, n, c, p, delta, plane)
+        f, p, delta = data
+    else:
+        p, delta = data
+    return _thick_hyperfocal()(f, n, c, p, delta, plane)
 
 
 def _hyperfocal_rung_of(lens: LensData) -> str:
