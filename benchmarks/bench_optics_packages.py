@@ -21,7 +21,8 @@ f-number and at f/8 (CoC 0.03 mm; 0.005 mm for the phone lens). Every package an
 checked against camtool's for the same scene (front and rear depth equal to 1e-7), and only
 then is the package's time per near/far pair divided by camtool's ``raytrace_dof`` for the
 same scene, cold (its interpolants rebuilt for every call; the tracer of the lens built once,
-as the package's model is; best of 5).
+as the package's model is; best of 5). Times are CPU time of this process (``time.process_time``),
+so other jobs on a shared machine do not count against either side.
 """
 
 from __future__ import annotations
@@ -234,9 +235,9 @@ def camtool_pair(lens, n, c, distance, repeat=5):
     best = math.inf
     for _ in range(repeat):
         realray._curves.cache_clear()
-        start = time.perf_counter()
+        start = time.process_time()
         result = realray.raytrace_dof(lens, n, c, distance)
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
     return result, best
 
 
@@ -315,9 +316,9 @@ def main() -> None:
             reference.summary(0.0, picked[0][0])  # warm: the package's lazy imports and caches
             times, differences = [], []
             for (n, c, d), (result, _seconds) in zip(picked, camtool):
-                start = time.perf_counter()
+                start = time.process_time()
                 near, far = reference.dof(n, c, d)
-                times.append(time.perf_counter() - start)
+                times.append(time.process_time() - start)
                 front, rear = d - near, far - d
                 rear_diff = 0.0 if math.isinf(far) and math.isinf(result.rear_mm) else abs(rear / result.rear_mm - 1.0)
                 differences.append(max(abs(front / result.front_mm - 1.0), rear_diff))

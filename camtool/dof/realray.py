@@ -226,17 +226,24 @@ class _CurvesCache:
     """Interpolants per (prescription, f-number), the most recent 256; several f-numbers are built in one trace."""
 
     def __init__(self) -> None:
-        self._store: dict[tuple[Prescription, float], _Curves] = {}
+        # keyed by the prescription's identity (held in the entry, so its id is not reused while stored):
+        # hashing a prescription, its every surface, costs about as much as a Brent search
+        self._store: dict[tuple[int, float], tuple[Prescription, _Curves]] = {}
+
+    def _get(self, prescription: Prescription, f_number: float) -> _Curves | None:
+        entry = self._store.get((id(prescription), f_number))
+        return entry[1] if entry is not None and entry[0] is prescription else None
 
     def __call__(self, prescription: Prescription, f_number: float) -> _Curves:
-        key = (prescription, f_number)
-        if key not in self._store:
-            self._keep(key, _Curves(real_tracer(prescription), f_number))
-        return self._store[key]
+        curves = self._get(prescription, f_number)
+        if curves is None:
+            curves = _Curves(real_tracer(prescription), f_number)
+            self._keep(prescription, f_number, curves)
+        return curves
 
     def prepare(self, prescription: Prescription, f_numbers: Any) -> None:
         """Build the missing interpolants of many f-numbers, up to 16 per batched trace (a batch or grid)."""
-        missing = sorted({float(n) for n in f_numbers if (prescription, float(n)) not in self._store})
+        missing = sorted({float(n) for n in f_numbers if self._get(prescription, float(n)) is None})
         if len(missing) < 2:
             return
         tracer = real_tracer(prescription)
@@ -252,12 +259,12 @@ class _CurvesCache:
                 part = slice(i * nodes.size, (i + 1) * nodes.size)
                 fields = (summary.z_best, summary.slope_rms, summary.best_blur, summary.edge_mm, summary.aim_mm)
                 traced = (type(summary)(*(field[part] for field in fields)), ok[part])
-                self._keep((prescription, n), _Curves(tracer, n, traced))
+                self._keep(prescription, n, _Curves(tracer, n, traced))
 
-    def _keep(self, key: tuple[Prescription, float], curves: _Curves) -> None:
+    def _keep(self, prescription: Prescription, f_number: float, curves: _Curves) -> None:
         if len(self._store) >= 256:
             del self._store[next(iter(self._store))]
-        self._store[key] = curves
+        self._store[(id(prescription), f_number)] = (prescription, curves)
 
     def cache_clear(self) -> None:
         """Forget every interpolant."""
