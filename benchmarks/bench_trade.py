@@ -19,7 +19,8 @@ For every model it prints a markdown table with
   prescription): each scene's auto call and the same dispatcher call of the
   rung auto picked (``--model RUNG``, which computes the same error estimate)
   timed in turn (A B A B …, best of each), summed over the scenes, overall and
-  per rung (budget 1.05×); and auto with a cold aberration cache.
+  per rung (budget 1.05×); over arrays, auto against each rung it picked run
+  on its own scenes; and auto with a cold aberration cache.
 
 Other jobs may share the two cores: compare ratios, not absolute times.
 """
@@ -195,6 +196,33 @@ def auto_against_picked(per_lens: int = 40, rounds: int = 9) -> dict[str, tuple[
     return {k: (int(v[0]), v[1], v[2]) for k, v in totals.items()}
 
 
+def auto_vector(count: int = 200_000, rounds: int = 7) -> list[tuple[str, str, float, float]]:
+    """Arrays: (lens, rungs picked, auto's CPU time, the picked rungs' over their own scenes), least of ``rounds``."""
+    rng = np.random.default_rng(11)
+    f = rng.uniform(14, 200, count)
+    n = rng.choice([1.4, 2.8, 5.6, 11.0, 22.0], count)
+    s = f * 4.6 + 20.0 + f * np.exp(rng.uniform(0, 7, count))
+    out = []
+    for label, data in (("no lens data", LensData()), ("P 0.8, hiatus 10 mm", LensData(pupil_magnification=0.8,
+                                                                                          hiatus_mm=10.0))):
+        for plane in ("sensor", "lens"):
+            picked = depth_of_field("auto", f, n, 0.03, s, plane, lens=data).model
+            groups = {str(name): np.nonzero(picked == name)[0] for name in sorted(set(picked))}
+
+            def direct(groups=groups, data=data, plane=plane):
+                for name, rows in groups.items():
+                    depth_of_field(name, f[rows], n[rows], 0.03, s[rows], plane, lens=data)
+
+            best_auto = best_rungs = float("inf")
+            for _ in range(rounds):
+                best_auto = min(best_auto, cpu_time(lambda data=data, plane=plane: depth_of_field(
+                    "auto", f, n, 0.03, s, plane, lens=data), 1))
+                best_rungs = min(best_rungs, cpu_time(direct, 1))
+            mix = ", ".join(f"{name} {rows.size / count:.0%}" for name, rows in groups.items())
+            out.append((f"{label}, from the {plane}", mix, best_auto, best_rungs))
+    return out
+
+
 def main() -> None:
     errs = errors()
     vec = vector_times()
@@ -219,6 +247,10 @@ def main() -> None:
     print("|---|---:|---:|---:|---:|")
     for key, (count, mine, theirs) in sorted(auto_against_picked().items(), key=lambda kv: kv[0] == "all"):
         print(f"| {key} | {count} | {mine * 1e3:.2f} ms | {theirs * 1e3:.2f} ms | {mine / theirs:.3f}× |")
+    print("\n| 200,000 scenes as arrays | rungs auto picks | auto | those rungs on their own scenes | ratio (budget 1.05×) |")
+    print("|---|---|---:|---:|---:|")
+    for label, mix, mine, theirs in auto_vector():
+        print(f"| {label} | {mix} | {mine * 1e3:.1f} ms | {theirs * 1e3:.1f} ms | {mine / theirs:.3f}× |")
     print("\n| scene | auto picks | auto / that model (budget 1.05×) | first call / later calls |")
     print("|---|---|---:|---:|")
     for label, picked, ratio, cold in auto_overhead():

@@ -715,14 +715,18 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
         rows = np.nonzero(cheaper & (applied == add))[0]
         if rows.size == 0:
             continue
-        at_h = run_rows(rung_h, add, rows)
-        beyond = np.isinf(fields[1][rows]) | np.isinf(np.broadcast_to(at_h.far_mm, rows.shape))
-        hyper_index = DofLimits._fields.index("hyperfocal_mm")
-        for k, (out, value) in enumerate(zip(fields, at_h)):
-            value = np.broadcast_to(np.asarray(value, dtype=float), rows.shape)
-            out[rows] = np.where(beyond | (k == hyper_index), value, out[rows])
-        names[rows[beyond]] = _label(rung_h, add)
-        estimate[rows[beyond]] = estimate_rows(rung_h, add, rows[beyond])
+        # the hyperfocal rung's H by its closed form; that rung runs only where the focus is at or beyond it
+        h_data = _plan(lens)[4]
+        f, n, c, s, usable = (v[rows] for v in flat[:5])
+        h = _hyperfocal_only(rung_h, h_data, f, n, usable if add else c, plane)
+        fields[DofLimits._fields.index("hyperfocal_mm")][rows] = h
+        beyond = rows[np.isinf(fields[1][rows]) | (s >= h)]
+        if beyond.size == 0:
+            continue
+        for out, value in zip(fields, run_rows(rung_h, add, beyond)):
+            out[beyond] = np.broadcast_to(np.asarray(value, dtype=float), beyond.shape)
+        names[beyond] = _label(rung_h, add)
+        estimate[beyond] = estimate_rows(rung_h, add, beyond)
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 
