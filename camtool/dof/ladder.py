@@ -13,6 +13,7 @@ runs every rung the inputs allow (:func:`compare_models`).
 from __future__ import annotations
 
 import functools
+import math
 import time
 from typing import Any, NamedTuple
 
@@ -676,57 +677,65 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     if focus is not None:  # the scenes' (u, v) go with them into each group
         inputs = (*inputs, focus.geometry.object_mm, focus.geometry.image_mm)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (*inputs, airy, *effects)))
-    flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in inputs]
-    each = Effects(*(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in effects))
-    count = flat[0].size
-    applied = np.full(count, False) if not diffraction else each.diffraction > tolerance
+
+    def flatten(v: Any) -> Any:
+        """One value per scene, flat (a view where it can be); a number stays a number (nothing to copy or index)."""
+        return float(v) if np.ndim(v) == 0 else np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
+
+    flat = [flatten(v) for v in inputs]
+    each = Effects(*(flatten(v) for v in effects))
+    count = math.prod(shape)
+    applied = np.full(count, False) if not diffraction else np.broadcast_to(each.diffraction > tolerance, (count,))
     chosen = np.full(count, len(models) - 1)
+    totals = []  # each rung's estimate over every scene (what it leaves out)
+    for index in range(len(models)):
+        totals.append(np.broadcast_to(left_out(each, models[index], True)
+                                      + np.where(applied | (not diffraction), 0.0, each.diffraction), (count,)))
     for index in reversed(range(len(models))):
-        fits = left_out(each, models[index], True) + np.where(applied | (not diffraction), 0.0, each.diffraction)
-        chosen = np.where(fits <= tolerance, index, chosen)
+        chosen = np.where(totals[index] <= tolerance, index, chosen)
+    rung_h = _hyperfocal_rung_of(lens)
+    h_index = models.index(rung_h) if rung_h in models else -1
+    hyper = None
+    if h_index > 0:
+        # a rung cheaper than the hyperfocal rung only in front of that rung's H (its closed form): from H on, it runs
+        f, n, c, s, usable = flat[:5]
+        hyper = np.broadcast_to(_hyperfocal_only(rung_h, _plan(lens)[4], f, n, np.where(applied, usable, c), plane),
+                                (count,))
+        chosen = np.where((chosen < h_index) & (np.broadcast_to(s, (count,)) >= hyper), h_index, chosen)
     fields = [np.empty(count) for _ in DofLimits._fields]
     names = np.empty(count, dtype=object)
     estimate = np.empty(count)
 
     def run_rows(name: str, add: bool, rows: Any) -> DofLimits:
         """The rung ``name`` over the scenes ``rows``, in one vectorised call."""
-        f, n, c, s, usable, *uv = (v[rows] for v in flat)
+        f, n, c, s, usable, *uv = (v if isinstance(v, float) else v[rows] for v in flat)
         part_focus = None if focus is None else rungs.Focus(
             FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
         return _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
 
-    def estimate_rows(name: str, add: bool, rows: Any) -> Any:
-        """The estimated error of the rung ``name`` over the scenes ``rows``."""
-        part = Effects(*(v[rows] for v in each))
-        return left_out(part, name, True) + (0.0 if add or not diffraction else part.diffraction)
+    def put(index: int, add: bool, rows: Any) -> None:
+        """Run rung ``index`` over ``rows`` and put its limits, name and estimate in place."""
+        for out, value in zip(fields, run_rows(models[index], add, rows)):
+            out[rows] = value
+        names[rows] = _label(models[index], add)
+        estimate[rows] = totals[index][rows]
 
-    for index, name in enumerate(models):
+    for index in range(len(models)):
         for add in (False, True):
             rows = np.nonzero((chosen == index) & (applied == add))[0]
-            if rows.size == 0:
-                continue
-            for out, value in zip(fields, run_rows(name, add, rows)):
-                out[rows] = value
-            names[rows] = _label(name, add)
-            estimate[rows] = estimate_rows(name, add, rows)
-    rung_h = _hyperfocal_rung_of(lens)
-    cheaper = chosen < models.index(rung_h) if rung_h in models else np.full(count, False)
-    for add in (False, True):
-        rows = np.nonzero(cheaper & (applied == add))[0]
-        if rows.size == 0:
-            continue
-        # the hyperfocal rung's H by its closed form; that rung runs only where the focus is at or beyond it
-        h_data = _plan(lens)[4]
-        f, n, c, s, usable = (v[rows] for v in flat[:5])
-        h = _hyperfocal_only(rung_h, h_data, f, n, usable if add else c, plane)
-        fields[DofLimits._fields.index("hyperfocal_mm")][rows] = h
-        beyond = rows[np.isinf(fields[1][rows]) | (s >= h)]
-        if beyond.size == 0:
-            continue
-        for out, value in zip(fields, run_rows(rung_h, add, beyond)):
-            out[beyond] = np.broadcast_to(np.asarray(value, dtype=float), beyond.shape)
-        names[beyond] = _label(rung_h, add)
-        estimate[beyond] = estimate_rows(rung_h, add, beyond)
+            if rows.size == count:  # one rung for every scene: views, not copies
+                put(index, add, slice(None))
+            elif rows.size:
+                put(index, add, rows)
+    if hyper is not None:
+        cheaper = np.nonzero(chosen < h_index)[0]
+        fields[DofLimits._fields.index("hyperfocal_mm")][cheaper] = hyper[cheaper]
+        # a cheaper rung's own far limit can reach ∞ a little before the hyperfocal rung's H: that rung then runs
+        again = cheaper[np.isinf(fields[1][cheaper])]
+        for add in (False, True):
+            rows = again[applied[again] == add]
+            if rows.size:
+                put(h_index, add, rows)
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 
