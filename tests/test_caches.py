@@ -163,7 +163,7 @@ def _table_mutations() -> dict[str, Callable[[dict[str, Any]], Any]]:
         "a row longer": rows(lambda t: [t[0], [*t[1], [2.0, 0.1]], *t[2:]]),
         "a row empty": rows(lambda t: [t[0], [], *t[2:]]),
         "pairs reordered": rows(lambda t: [t[0], swap(t[1], 0, 1), *t[2:]]),
-        "a pair of three": rows(lambda t: [t[0], [[*t[1][0], 0.0], *t[1][1:]], *t[2:]]),
+        "an entry of four": rows(lambda t: [t[0], [[*t[1][0], 0.0], *t[1][1:]], *t[2:]]),
         "a pair not a list": rows(lambda t: [t[0], [0.0, *t[1][1:]], *t[2:]]),
         "magnification changed": pair(0, 0.06),
         "magnification negative": pair(0, -0.05),
@@ -178,6 +178,12 @@ def _table_mutations() -> dict[str, Callable[[dict[str, Any]], Any]]:
         "share inf": pair(1, math.inf),
         "share -inf": pair(1, -math.inf),
         "share negative": pair(1, -0.001),
+        "an entry of two": rows(lambda t: [t[0], [t[1][0][:2], *t[1][1:]], *t[2:]]),
+        "focus shift a string": pair(2, "0.01"),
+        "focus shift an integer": pair(2, 0),
+        "focus shift null": pair(2, None),
+        "focus shift NaN": pair(2, math.nan),
+        "focus shift inf": pair(2, math.inf),
     }
     return out
 
@@ -219,7 +225,7 @@ def test_an_aberration_entry_with_other_valid_values_but_no_valid_checksum_is_re
     if plant == "rows reordered":
         data["table"][1], data["table"][4] = data["table"][4], data["table"][1]
     else:
-        data["table"] = [[[m, 0.5] for m, _ in row] for row in data["table"]]
+        data["table"] = [[[m, 0.5, shift] for m, _, shift in row] for row in data["table"]]
     planted = _dumps(data)
     path.write_bytes(_dumps({**header, "length": len(planted)}) + b"\n" + planted)
     assert answer(ABERRATION_COMMAND) == reference
@@ -587,7 +593,7 @@ def test_a_read_only_cache_directory_is_skipped(empty_home, references):
 def test_a_table_with_a_non_finite_share_is_not_written(empty_home):
     lens = _dgauss()
     grid, table = auto._compute_table(lens)
-    bad = (grid, (((0.0, math.nan), *table[0][1:]), *table[1:]))
+    bad = (grid, (((0.0, math.nan, 0.0), *table[0][1:]), *table[1:]))
     source = auto._source(lens)
     auto._write_table(auto._cache_path(source), source, bad)
     assert not list(empty_home.rglob("*.json")) and not temporary_files(empty_home)

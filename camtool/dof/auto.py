@@ -28,18 +28,23 @@ hyperfocal distance behaves, for the near limit that is left, like one at it):
   ≈ |1 − 1/P|·m;
 - hiatus (from the sensor): |δ|/(2a·u_e)·max(|(1 + m²)(1 ± a)² − 1|), ≈ |δ|/D;
 - diffraction: 1 − √(1 − (b_airy/c)²) ≈ (b_airy/c)²/2;
-- aberrations (real against paraxial rays, only with a prescription): the
-  relative change of the local depth of field in object vergence between
-  real and paraxial rays, 2√2·S·dz_best/dw against 2·u′·dz′/dw, measured
-  once per prescription over a grid of f-numbers (f/1 to f/64 in half stops)
-  at a few magnifications, times (1 + m), and interpolated (linearly in m,
+- aberrations (real against paraxial rays, only with a prescription): half
+  the relative change of the local depth of field in object vergence between
+  real and paraxial rays (2√2·S·dz_best/dw against 2·u′·dz′/dw: each limit
+  moves by about half the change of the depth), times a safety factor of
+  1.7; and, for a distance from the sensor, the shift of the focused object
+  that the real best focus causes (:func:`focus_shift_share`). Both are
+  measured once per prescription over a grid of f-numbers (f/1 to f/64 in
+  half stops) at a few magnifications and interpolated (linearly in m,
   log-log in N). The table is cached for the process and on disk, keyed by
   the prescription's content, so a command with a prescription traces no
   rays (and imports no numpy) unless its model is ``raytrace``.
 
 These are first-order results of the closed forms (the first four are within a
 few per cent of the exact differences over the whole domain); the aberration
-estimate is about twice the actual difference on the shared lenses.
+estimate bounds the ray trace's actual difference from ``paraxial`` on every
+scene of the grid of ``tests/test_auto_bound.py`` (every shipped prescription,
+closest focus to beyond the hyperfocal distance, design aperture to f/32).
 """
 
 from __future__ import annotations
@@ -54,7 +59,8 @@ from camtool.core.arrays import ops, quiet
 from camtool.dof.rungs import RUNGS, by_name
 
 __all__ = [
-    "EFFECTS", "LEFT_OUT", "Effects", "aberration_share", "aberration_table", "depth_error", "estimate_effects", "left_out",
+    "EFFECTS", "LEFT_OUT", "Effects", "aberration_share", "aberration_table", "depth_error", "estimate_effects",
+    "focus_shift", "focus_shift_share", "left_out",
 ]
 
 EFFECTS = ("approximation", "distance_plane", "pupil", "hiatus", "diffraction", "aberrations")
@@ -161,12 +167,56 @@ def estimate_effects(
         else:
             plane = hiatus = 0.0 * m
         diffraction = diffraction_share(coc_mm, airy_mm)
-    aberrations = 0.0 * m if prescription is None else aberration_share(prescription, f_number, m)
+    if prescription is None:
+        aberrations = 0.0 * m
+    else:
+        aberrations = aberration_share(prescription, f_number, m)
+        if distance_from == "sensor":
+            aberrations = aberrations + focus_shift_share(prescription, f, f_number, coc_mm, geometry)
     return Effects(approximation, plane, pupil, hiatus, diffraction, aberrations)
 
 
+def focus_shift_share(prescription: Any, focal_length_mm: Any, f_number: Any, coc_mm: Any, geometry: Any) -> Any:
+    """Estimated error from where the real rays put the focused object, for a distance from the sensor.
+
+    The paraxial rungs place the object at u with u + v(u) = L (L the
+    distance from the sensor less the hiatus); the real rays focus it
+    Δ = :func:`focus_shift` further back, so the focused object is the one
+    with u′ + v(u′) = L − Δ. Both in closed form, 1/u = (1 − √(1 − 4f/L))/(2f),
+    taken as 2/(L·(1 + √(1 − 4f/L))); the estimate is |1/u′ − 1/u| over the
+    thin lens's depth of field in vergence, (1/u + A) − max(1/u − A, 0) with
+    A = N·c·(1 − f/u)/f². Near 1:1, where L is least, a small Δ moves the
+    object far (dL/du = 1 − m² → 0); where L − Δ < 4f the real rays cannot
+    focus there and the estimate is 1 (everything uncertain).
+
+    Examples
+    --------
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> from camtool.optics.paraxial import first_order
+    >>> from camtool.geometry.thinlens import focus_geometry
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
+    >>> f = first_order(lens).efl_mm
+    >>> near, far = (focus_shift_share(lens, f, 8.0, 0.03, focus_geometry(f, d * f)) for d in (4.2, 100.0))
+    >>> near > far > 0.0
+    True
+    """
+    f = focal_length_mm
+    u, v = geometry.object_mm, geometry.image_mm
+    xp = ops(f, f_number, coc_mm, u, v)
+    with quiet(xp):
+        shift = focus_shift(prescription, f_number, f / (u - f))
+        g = 1.0 / u
+        moved = u + v - shift
+        reachable = moved >= 4.0 * f
+        span = xp.maximum(moved, 4.0 * f)
+        g_real = 2.0 / (span * (1.0 + xp.sqrt(1.0 - 4.0 * f / span)))
+        a_g = f_number * coc_mm * (1.0 - f * g) / (f * f)
+        depth = (g + a_g) - xp.maximum(g - a_g, 0.0)
+        return xp.where(reachable, xp.fabs(g_real - g) / depth, 1.0)
+
+
 def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> Any:
-    """Estimated relative difference between the real-ray and the paraxial depth of field.
+    """Estimated relative difference between the real-ray and the paraxial local depth of field.
 
     Interpolates the calibration of :func:`aberration_table` (one per
     prescription, over a grid of f-numbers): linearly in magnification, and
@@ -180,16 +230,39 @@ def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> An
     >>> aberration_share(lens, 2.8, 0.0) > aberration_share(lens, 16.0, 0.0)
     True
     """
+    return _interpolated(prescription, f_number, magnification, 1)
+
+
+def focus_shift(prescription: Any, f_number: Any, magnification: Any) -> Any:
+    """Estimated real best focus minus the paraxial image of the same object (mm, signed), from the table.
+
+    Interpolated as :func:`aberration_share` (geometrically in N where the
+    neighbours share a sign, else linearly).
+
+    Examples
+    --------
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
+    >>> abs(focus_shift(lens, 4.0, 0.0)) > abs(focus_shift(lens, 16.0, 0.0)) > 0.0
+    True
+    """
+    return _interpolated(prescription, f_number, magnification, 2)
+
+
+def _interpolated(prescription: Any, f_number: Any, magnification: Any, column: int) -> Any:
+    """Column ``column`` of the table (1 share, 2 focus shift) at (N, m): linear in m, log-log in N where it can."""
     grid_n, table = aberration_table(prescription)
     xp = ops(f_number, magnification)
     if xp.name == "math":
         i, t = _grid_position(grid_n, float(f_number))
-        low, high = _interpolate(table[i], float(magnification)), _interpolate(table[i + 1], float(magnification))
+        low = _interpolate(table[i], float(magnification), column)
+        high = _interpolate(table[i + 1], float(magnification), column)
         return _between(low, high, t)
     import numpy as np
 
     n, mags = np.broadcast_arrays(np.asarray(f_number, float), np.asarray(magnification, float))
-    rows = [np.interp(np.where(np.isfinite(mags), mags, ms[-1]), ms, shares) for ms, shares in (zip(*r) for r in table)]
+    rows = [np.interp(np.where(np.isfinite(mags), mags, row[-1][0]), [e[0] for e in row], [e[column] for e in row])
+            for row in table]
     grid = np.array(rows)  # (f-numbers, scenes)
     logs_n = np.log(grid_n)
     with np.errstate(all="ignore"):
@@ -200,13 +273,13 @@ def aberration_share(prescription: Any, f_number: Any, magnification: Any) -> An
     cells = grid.reshape(len(table), -1)
     below, above = cells[cell, flat], cells[cell + 1, flat]
     with np.errstate(all="ignore"):
-        logs = np.exp((1.0 - frac) * np.log(below) + frac * np.log(above))
-    return np.where((below > 0.0) & (above > 0.0), logs, (1.0 - frac) * below + frac * above)
+        logs = np.sign(below) * np.exp((1.0 - frac) * np.log(np.fabs(below)) + frac * np.log(np.fabs(above)))
+    return np.where(below * above > 0.0, logs, (1.0 - frac) * below + frac * above)
 
 
 _GRID_F_NUMBERS = tuple(2.0 ** (k / 2.0) for k in range(13))
 """N = 2^(k/2), f/1 to f/64 in half stops; a prescription's own design f-number is added."""
-_TABLE_VERSION = 2
+_TABLE_VERSION = 3
 
 
 def _grid_position(grid: tuple[float, ...], f_number: float) -> tuple[int, float]:
@@ -218,28 +291,28 @@ def _grid_position(grid: tuple[float, ...], f_number: float) -> tuple[int, float
 
 
 def _between(low: float, high: float, t: float) -> float:
-    """Interpolate two grid shares: geometrically when both are positive, else linearly."""
-    if low > 0.0 and high > 0.0:
-        return math.exp((1.0 - t) * math.log(low) + t * math.log(high))
+    """Interpolate two grid values: geometrically when they share a sign (and are not 0), else linearly."""
+    if low * high > 0.0:
+        return math.copysign(math.exp((1.0 - t) * math.log(abs(low)) + t * math.log(abs(high))), low)
     return (1.0 - t) * low + t * high
 
 
-def _interpolate(table: tuple[tuple[float, float], ...], m: float) -> float:
-    """Piecewise-linear interpolation in m; the last value beyond the table."""
+def _interpolate(row: tuple[tuple[float, float, float], ...], m: float, column: int = 1) -> float:
+    """Piecewise-linear interpolation of a row's ``column`` in m; the last value beyond the table."""
     if not math.isfinite(m):
-        return table[-1][1]
-    for (m0, s0), (m1, s1) in itertools.pairwise(table):
-        if m <= m1:
-            return s0 + (s1 - s0) * max(m - m0, 0.0) / (m1 - m0)
-    return table[-1][1]
+        return row[-1][column]
+    for low, high in itertools.pairwise(row):
+        if m <= high[0]:
+            return low[column] + (high[column] - low[column]) * max(m - low[0], 0.0) / (high[0] - low[0])
+    return row[-1][column]
 
 
-Table = tuple[tuple[float, ...], tuple[tuple[tuple[float, float], ...], ...]]
+Table = tuple[tuple[float, ...], tuple[tuple[tuple[float, float, float], ...], ...]]
 
 
 @functools.lru_cache(maxsize=64)
 def aberration_table(prescription: Any) -> Table:
-    """The aberration calibration of a prescription: its f-number grid and (magnification, share) pairs per f-number.
+    """The aberration calibration of a prescription: its f-number grid and (magnification, share, focus shift) per f-number.
 
     The f-numbers are N = 2^(k/2), f/1 to f/64 (k = 0…12), and the
     prescription's design f-number when it states one. Computing it
@@ -361,7 +434,7 @@ def _valid_table(data: Any, prescription: Any) -> Table | None:
 
     The f-number grid and the magnifications must be exactly the ones
     :func:`_compute_table` uses for this prescription (increasing, the same
-    in every row), and every share a finite number ≥ 0.
+    in every row), every share a finite number ≥ 0 and every focus shift finite.
     """
     if not isinstance(data, dict) or set(data) != {"f_numbers", "table"}:
         return None
@@ -381,17 +454,17 @@ def _valid_table(data: Any, prescription: Any) -> Table | None:
     for row in rows:
         if not isinstance(row, list) or len(row) != len(expected_ms):
             return None
-        pairs = []
-        for pair, m_expected in zip(row, expected_ms, strict=True):
-            if not isinstance(pair, list) or len(pair) != 2:
+        entries = []
+        for entry, m_expected in zip(row, expected_ms, strict=True):
+            if not isinstance(entry, list) or len(entry) != 3:
                 return None
-            m, share = pair
-            if type(m) is not float or m != m_expected or type(share) is not float:
+            m, share, shift = entry
+            if type(m) is not float or m != m_expected or type(share) is not float or type(shift) is not float:
                 return None
-            if not (math.isfinite(share) and share >= 0.0):
+            if not (math.isfinite(share) and share >= 0.0 and math.isfinite(shift)):
                 return None
-            pairs.append((m, share))
-        table.append(tuple(pairs))
+            entries.append((m, share, shift))
+        table.append(tuple(entries))
     return tuple(expected_grid), tuple(table)
 
 
@@ -414,7 +487,7 @@ def _grid(prescription: Any) -> tuple[float, ...]:
 
 
 def _compute_table(prescription: Any) -> Table:
-    """(magnification, |real/paraxial − 1|·(1 + m)) of the local depth of field, per grid f-number.
+    """(magnification, 0.85·|real/paraxial − 1| of the local depth of field, focus shift), per grid f-number.
 
     At a few magnifications m (objects at vertex vergence w), with a
     neighbouring object at w + dw: the real rays' 2√2·S·dz_best/dw (S the RMS
@@ -423,7 +496,9 @@ def _compute_table(prescription: Any) -> Table:
     depths of field in vergence (the limits are where the blur, proportional
     to these, reaches c). Magnifications the real rays cannot reach are left
     out; where the rays cannot be traced the estimate is 1 (everything
-    uncertain).
+    uncertain). The focus shift is z_best minus the paraxial image of the
+    same object (mm), which :func:`focus_shift_share` turns into the shift of
+    the focused object when the distance is given from the sensor.
     """
     from camtool.optics.paraxial import first_order, paraxial_trace
     from camtool.optics.tracer import real_tracer
@@ -455,17 +530,21 @@ def _compute_table(prescription: Any) -> Table:
             z0, slope = paraxial_image(w0)
             z1, _ = paraxial_image(w1)
             real = _SQRT8 * float(summary.slope_rms[2 * i]) * float(summary.z_best[2 * i + 1] - summary.z_best[2 * i])
-            share = abs(real / (2.0 * slope * (z1 - z0)) - 1.0)
-            good = bool(ok[2 * i] and ok[2 * i + 1]) and math.isfinite(share)
-            # (1 + m): at close range the real focus shift adds about as much again (shared lenses)
-            row.append((m, share * (1.0 + m) if good else 1.0))
+            # each limit moves by about half the relative change of the depth; the safety factor bounds the
+            # measured ratio of actual to half-change on the shipped prescriptions (docs/design.md §4.10)
+            share = 0.5 * _SHARE_SAFETY * abs(real / (2.0 * slope * (z1 - z0)) - 1.0)
+            shift = float(summary.z_best[2 * i]) - z0
+            good = bool(ok[2 * i] and ok[2 * i + 1]) and math.isfinite(share) and math.isfinite(shift)
+            row.append((m, share, shift) if good else (m, 1.0, 0.0))
         if len(row) == 1:
-            row.append((1.0, row[0][1]))
+            row.append((1.0, *row[0][1:]))
         table.append(tuple(row))
     return grid, tuple(table)
 
 
 _SQRT8 = 2.0 * math.sqrt(2.0)
+_SHARE_SAFETY = 1.7
+"""Half the relative change of the local depth understates the actual error by up to 1.65x (shipped lenses)."""
 
 
 def _object_points(fo: Any) -> tuple[list[float], list[float]]:

@@ -109,6 +109,29 @@ def approx_dof(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: An
     return DofLimits(near, far, front, rear, front + rear, broadcast(h0, s, focal_length_mm), m)
 
 
+def thin_hyperfocal_mm(focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_from: str = "sensor") -> Any:
+    """The hyperfocal distance of :func:`thin_dof` in the plane ``distance_from`` (mm), without the limits.
+
+    From the lens H = f²/(N·c) + f; from the sensor H + v_H = H + f + N·c
+    while H ≥ 2f. Below 2f (N·c > f, pinholes) every reachable focus lies
+    beyond H, but D = u + v grows again as u drops under 2f, so the
+    hyperfocal distance is the closest focus, 4f. A focus at or beyond it
+    has a far limit of ∞.
+
+    Examples
+    --------
+    >>> round(thin_hyperfocal_mm(50.0, 8.0, 0.03, "lens"), 1), round(thin_hyperfocal_mm(50.0, 8.0, 0.03), 2)
+    (10466.7, 10516.91)
+    """
+    f = focal_length_mm
+    h = f * f / (f_number * coc_mm) + f
+    if distance_from != "sensor":
+        return h
+    if type(h) is float:  # one scene: no array machinery (auto asks for it on every call)
+        return h + f + f_number * coc_mm if h >= 2.0 * f else 4.0 * f
+    return ops(f, f_number, coc_mm).where(h >= 2.0 * f, h + f + f_number * coc_mm, 4.0 * f)
+
+
 def thin_dof(
     focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor",
     focus: LensPlaneDistances | None = None,
@@ -160,10 +183,7 @@ def thin_dof(
     if check_plane(distance_from, DISTANCE_PLANES) == "sensor":
         u, v = lens_distances(f, distance_mm) if focus is None else focus
         offset = v
-        # H + v_H = H + f + N·c while H ≥ 2f. Below 2f (N·c > f, pinholes) every
-        # reachable focus lies beyond H, but D = u + v grows again as u drops
-        # under 2f, so the hyperfocal distance is the closest focus, 4f.
-        hyperfocal = xp.where(h >= 2.0 * f, h + f + f_number * coc_mm, 4.0 * f)
+        hyperfocal = thin_hyperfocal_mm(f, f_number, coc_mm, "sensor")
     else:
         require_positive("distance_mm", distance_mm, allow_inf=True)
         require("distance_mm", distance_mm, distance_mm > f,

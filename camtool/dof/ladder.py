@@ -13,6 +13,7 @@ runs every rung the inputs allow (:func:`compare_models`).
 from __future__ import annotations
 
 import functools
+import math
 import time
 from typing import Any, NamedTuple
 
@@ -22,6 +23,7 @@ from camtool.core.planes import FOCUS_PLANES, check_plane
 from camtool.core.steps import step
 from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out
+from camtool.dof.closed import thin_hyperfocal_mm
 from camtool.dof.limits import DofLimits
 from camtool.dof.rungs import NO_LENS, LensData
 from camtool.geometry.thinlens import FocusGeometry, focus_geometry
@@ -559,21 +561,103 @@ def depth_of_field(
     if model != "auto":
         limits = _run(model, diffraction, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
         return ModelResult(limits, _label(model, diffraction), left_out(effects, model, diffraction))
-    inputs = (f, f_number, coc_mm, distance_mm, usable)
-    if all(isinstance(v, (int, float)) for v in (*inputs, airy)):
-        name, applied = choose(effects, available_models(lens), diffraction, tolerance)
-        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
-        rung_h = _hyperfocal_rung_of(lens)
-        order = rungs.names()
-        if order.index(name) < order.index(rung_h):
-            at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
-            if limits.far_mm == float("inf") or at_h.far_mm == float("inf"):
+    number = (int, float)
+    if (isinstance(f, number) and isinstance(f_number, number) and isinstance(coc_mm, number)
+            and isinstance(distance_mm, number)
+            and (not diffraction or (isinstance(usable, number) and isinstance(airy, number)))):
+        models, rung_h, below_h, sums, h_data = _plan(lens)
+        if diffraction:
+            name, applied = choose(effects, models, diffraction, tolerance)
+            estimate = left_out(effects, name, applied)
+        else:  # the same sums as left_out, in the same order, without its look-ups
+            name, applied, estimate = models[-1], False, None
+            for candidate, fields in sums:
+                total = 0.0
+                for i in fields:
+                    total += effects[i]
+                if total <= tolerance:
+                    name, estimate = candidate, total
+                    break
+            if estimate is None:
+                estimate = total
+        if below_h and name in below_h:
+            # the hyperfocal rung's H alone (its closed form, not its limits): its far limit is ∞ exactly from H on
+            h = _hyperfocal_only(rung_h, h_data, f, f_number, usable if applied else coc_mm, distance_from)
+            cheap = None if distance_mm >= h else _run(name, applied, f, f_number, coc_mm, distance_mm,
+                                                       distance_from, lens, usable, focus)
+            if cheap is None or cheap[1] == _INF:
                 # at or beyond the hyperfocal distance: its rung, whose far limit starts being infinite at H
-                return ModelResult(at_h, _label(rung_h, applied), left_out(effects, rung_h, applied))
-            limits = limits._replace(hyperfocal_mm=at_h.hyperfocal_mm)
-        return ModelResult(limits, _label(name, applied), left_out(effects, name, applied))
+                at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
+                if applied:
+                    return ModelResult(at_h, _label(rung_h, applied), left_out(effects, rung_h, applied))
+                total = 0.0
+                for i in dict(sums)[rung_h]:
+                    total += effects[i]
+                return ModelResult(at_h, rung_h, total)
+            # the fields in order, hyperfocal_mm the sixth (tuple.__new__: a third of _replace's cost)
+            limits = _TUPLE_NEW(DofLimits, (cheap[0], cheap[1], cheap[2], cheap[3], cheap[4], h, cheap[6]))
+            return ModelResult(limits, _label(name, applied), estimate)
+        limits = _run(name, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
+        return ModelResult(limits, _label(name, applied), estimate)
+    inputs = (f, f_number, coc_mm, distance_mm, usable)
     return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
                       focus)
+
+
+Plan = tuple[tuple[str, ...], str, frozenset[str], tuple[tuple[str, tuple[int, ...]], ...], tuple[float, ...]]
+_PLANS: dict[int, tuple[LensData, Any, Plan]] = {}
+_INF = float("inf")
+_TUPLE_NEW = tuple.__new__
+
+
+def _plan(lens: LensData) -> Plan:
+    """(available rungs, the hyperfocal rung, the rungs cheaper than it, each rung's left-out effects as indices of
+    :class:`Effects`, the hyperfocal rung's lens data: () for thin, (P, δ) for thick, (f, P, δ) for paraxial) of
+    ``lens``, remembered by its identity.
+
+    ``auto`` asks on every call; hashing a prescription's surfaces for the
+    cached functions behind these costs more than a closed-form rung, so the
+    answer is kept per LensData object (held, so its id is not reused) and
+    per ladder (:data:`camtool.dof.rungs.RUNGS`, by identity).
+    """
+    entry = _PLANS.get(id(lens))
+    if entry is None or entry[0] is not lens or entry[1] is not rungs.RUNGS:
+        models, rung_h = available_models(lens), _hyperfocal_rung_of(lens)
+        order = rungs.names()
+        below = frozenset(m for m in models if rung_h in models and order.index(m) < order.index(rung_h))
+        sums = tuple((m, tuple(Effects._fields.index(e) for e in rungs.by_name()[m].left_out)) for m in models)
+        data: tuple[float, ...] = ()
+        if rung_h == "paraxial":
+            fo = lens.first_order
+            data = (fo.efl_mm, fo.pupil_magnification, fo.hiatus_mm)
+        elif rung_h == "thick":
+            data = lens.thick_parameters()  # type: ignore[assignment]
+        if len(_PLANS) >= 64:
+            _PLANS.clear()
+        entry = _PLANS[id(lens)] = (lens, rungs.RUNGS, (models, rung_h, below, sums, data))
+    return entry[2]
+
+
+@functools.cache
+def _thick_hyperfocal() -> Any:
+    """:func:`camtool.dof.thick.thick_hyperfocal_mm`, imported on first use (start-up) and then kept at hand."""
+    from camtool.dof.thick import thick_hyperfocal_mm
+
+    return thick_hyperfocal_mm
+
+
+def _hyperfocal_only(rung_h: str, data: tuple[float, ...], f: Any, n: Any, c: Any, plane: str) -> Any:
+    """The hyperfocal distance the rung ``rung_h`` (thin, thick or paraxial) reports, by its closed form alone.
+
+    ``data`` is the rung's lens data from :func:`_plan`: () for thin, (P, δ) for thick, (f, P, δ) for paraxial.
+    """
+    if rung_h == "thin":
+        return thin_hyperfocal_mm(f, n, c, plane)
+    if rung_h == "paraxial":
+        f, p, delta = data
+    else:
+        p, delta = data
+    return _thick_hyperfocal()(f, n, c, p, delta, plane)
 
 
 def _hyperfocal_rung_of(lens: LensData) -> str:
@@ -599,53 +683,65 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     if focus is not None:  # the scenes' (u, v) go with them into each group
         inputs = (*inputs, focus.geometry.object_mm, focus.geometry.image_mm)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (*inputs, airy, *effects)))
-    flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in inputs]
-    each = Effects(*(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in effects))
-    count = flat[0].size
-    applied = np.full(count, False) if not diffraction else each.diffraction > tolerance
+
+    def flatten(v: Any) -> Any:
+        """One value per scene, flat (a view where it can be); a number stays a number (nothing to copy or index)."""
+        return float(v) if np.ndim(v) == 0 else np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
+
+    flat = [flatten(v) for v in inputs]
+    each = Effects(*(flatten(v) for v in effects))
+    count = math.prod(shape)
+    applied = np.full(count, False) if not diffraction else np.broadcast_to(each.diffraction > tolerance, (count,))
     chosen = np.full(count, len(models) - 1)
+    totals = []  # each rung's estimate over every scene (what it leaves out)
+    for index in range(len(models)):
+        totals.append(np.broadcast_to(left_out(each, models[index], True)
+                                      + np.where(applied | (not diffraction), 0.0, each.diffraction), (count,)))
     for index in reversed(range(len(models))):
-        fits = left_out(each, models[index], True) + np.where(applied | (not diffraction), 0.0, each.diffraction)
-        chosen = np.where(fits <= tolerance, index, chosen)
+        chosen = np.where(totals[index] <= tolerance, index, chosen)
+    rung_h = _hyperfocal_rung_of(lens)
+    h_index = models.index(rung_h) if rung_h in models else -1
+    hyper = None
+    if h_index > 0:
+        # a rung cheaper than the hyperfocal rung only in front of that rung's H (its closed form): from H on, it runs
+        f, n, c, s, usable = flat[:5]
+        hyper = np.broadcast_to(_hyperfocal_only(rung_h, _plan(lens)[4], f, n, np.where(applied, usable, c), plane),
+                                (count,))
+        chosen = np.where((chosen < h_index) & (np.broadcast_to(s, (count,)) >= hyper), h_index, chosen)
     fields = [np.empty(count) for _ in DofLimits._fields]
     names = np.empty(count, dtype=object)
     estimate = np.empty(count)
 
     def run_rows(name: str, add: bool, rows: Any) -> DofLimits:
         """The rung ``name`` over the scenes ``rows``, in one vectorised call."""
-        f, n, c, s, usable, *uv = (v[rows] for v in flat)
+        f, n, c, s, usable, *uv = (v if isinstance(v, float) else v[rows] for v in flat)
         part_focus = None if focus is None else rungs.Focus(
             FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
         return _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
 
-    def estimate_rows(name: str, add: bool, rows: Any) -> Any:
-        """The estimated error of the rung ``name`` over the scenes ``rows``."""
-        part = Effects(*(v[rows] for v in each))
-        return left_out(part, name, True) + (0.0 if add or not diffraction else part.diffraction)
+    def put(index: int, add: bool, rows: Any) -> None:
+        """Run rung ``index`` over ``rows`` and put its limits, name and estimate in place."""
+        for out, value in zip(fields, run_rows(models[index], add, rows)):
+            out[rows] = value
+        names[rows] = _label(models[index], add)
+        estimate[rows] = totals[index][rows]
 
-    for index, name in enumerate(models):
+    for index in range(len(models)):
         for add in (False, True):
             rows = np.nonzero((chosen == index) & (applied == add))[0]
-            if rows.size == 0:
-                continue
-            for out, value in zip(fields, run_rows(name, add, rows)):
-                out[rows] = value
-            names[rows] = _label(name, add)
-            estimate[rows] = estimate_rows(name, add, rows)
-    rung_h = _hyperfocal_rung_of(lens)
-    cheaper = chosen < models.index(rung_h) if rung_h in models else np.full(count, False)
-    for add in (False, True):
-        rows = np.nonzero(cheaper & (applied == add))[0]
-        if rows.size == 0:
-            continue
-        at_h = run_rows(rung_h, add, rows)
-        beyond = np.isinf(fields[1][rows]) | np.isinf(np.broadcast_to(at_h.far_mm, rows.shape))
-        hyper_index = DofLimits._fields.index("hyperfocal_mm")
-        for k, (out, value) in enumerate(zip(fields, at_h)):
-            value = np.broadcast_to(np.asarray(value, dtype=float), rows.shape)
-            out[rows] = np.where(beyond | (k == hyper_index), value, out[rows])
-        names[rows[beyond]] = _label(rung_h, add)
-        estimate[rows[beyond]] = estimate_rows(rung_h, add, rows[beyond])
+            if rows.size == count:  # one rung for every scene: views, not copies
+                put(index, add, slice(None))
+            elif rows.size:
+                put(index, add, rows)
+    if hyper is not None:
+        cheaper = np.nonzero(chosen < h_index)[0]
+        fields[DofLimits._fields.index("hyperfocal_mm")][cheaper] = hyper[cheaper]
+        # a cheaper rung's own far limit can reach ∞ a little before the hyperfocal rung's H: that rung then runs
+        again = cheaper[np.isinf(fields[1][cheaper])]
+        for add in (False, True):
+            rows = again[applied[again] == add]
+            if rows.size:
+                put(h_index, add, rows)
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 

@@ -32,7 +32,7 @@ from camtool.core.planes import PLANES, check_plane
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import LensPlaneDistances, lens_distances
 
-__all__ = ["DISTANCE_PLANES", "entrance_pupil_offset_mm", "thick_dof", "working_f_number"]
+__all__ = ["DISTANCE_PLANES", "entrance_pupil_offset_mm", "thick_dof", "thick_hyperfocal_mm", "working_f_number"]
 
 DISTANCE_PLANES = PLANES
 """Planes a distance may be measured from: the sensor (image) plane, the front
@@ -125,6 +125,33 @@ def _focus(f: Any, distance: Any, hiatus: Any, e: Any, distance_from: str,
     require("distance_mm", distance, u > f,
             "more than f from the front principal plane (closer, the lens forms no real image)")
     return u, f / (1.0 - f / u), (0.0 if distance_from == "entrance_pupil" else e)
+
+
+def thick_hyperfocal_mm(focal_length_mm: Any, f_number: Any, coc_mm: Any, pupil_magnification: Any,
+                        hiatus_mm: Any, distance_from: str = "sensor") -> Any:
+    """The hyperfocal distance of :func:`thick_dof` in the plane ``distance_from`` (mm), without the limits.
+
+    u_H = max(f²/(N·c) + f, 2f) from H; from the sensor u_H + f·u_H/(u_H − f) + δ;
+    from the entrance pupil u_H − e. A focus at or beyond it has a far limit of ∞.
+
+    Examples
+    --------
+    100 mm f/4, c = 0.03 mm, δ = 20 mm: u_H = 83433.33, v_H = 100.12:
+
+    >>> round(thick_hyperfocal_mm(100.0, 4.0, 0.03, 0.7, 20.0), 1)
+    83553.5
+    """
+    f, nc = focal_length_mm, f_number * coc_mm
+    if distance_from == "sensor" and type(nc) is float and type(f) is float and type(hiatus_mm) is float:
+        u_hyp = max(f * f / nc + f, 2.0 * f)  # one scene: no array machinery (auto asks for it on every call)
+        return u_hyp + f / (1.0 - f / u_hyp) + hiatus_mm
+    xp = ops(f, f_number, coc_mm, pupil_magnification, hiatus_mm)
+    with quiet(xp):
+        u_hyp = xp.maximum(f * f / nc + f, 2.0 * f)
+        if distance_from == "sensor":
+            return u_hyp + f / (1.0 - f / u_hyp) + hiatus_mm
+        e = entrance_pupil_offset_mm(f, pupil_magnification)
+        return u_hyp - (e if distance_from == "entrance_pupil" else 0.0)
 
 
 def thick_dof(
@@ -223,11 +250,7 @@ def thick_dof(
         # near from E: x·f²/(f² + k), with numerator and denominator divided by w (finite at u = ∞)
         near_pupil = f2 * (1.0 + f / (p * w)) / (f2 / w + nc)
         near = to_pupil + near_pupil  # not focus − front: that cancels badly far away
-        u_hyp = xp.maximum(f2 / nc + f, 2.0 * f)
-        if distance_from == "sensor":
-            hyperfocal = u_hyp + f / (1.0 - f / u_hyp) + hiatus_mm
-        else:
-            hyperfocal = u_hyp - (e if distance_from == "entrance_pupil" else 0.0)
+        hyperfocal = thick_hyperfocal_mm(f, f_number, coc_mm, p, hiatus_mm, distance_from)
         beyond = distance_mm >= hyperfocal
         gap = f2 - k
         usable = gap > 0

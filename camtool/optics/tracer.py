@@ -397,9 +397,15 @@ def _sag(s: _Surface, r: Any) -> tuple[Any, Any]:
     return sag, slope
 
 
-@functools.lru_cache(maxsize=16)
+_BY_IDENTITY: dict[int, tuple[Prescription, RealRayTracer]] = {}
+
+
 def real_tracer(prescription: Prescription) -> RealRayTracer:
     """A cached :class:`RealRayTracer` for a prescription.
+
+    The same prescription object finds its tracer by identity (the object is
+    held, so its id is not reused); an equal one by value, as a cache keyed
+    by the prescription would (hashing every surface costs tens of µs).
 
     Examples
     --------
@@ -407,7 +413,22 @@ def real_tracer(prescription: Prescription) -> RealRayTracer:
     >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
     >>> real_tracer(lens) is real_tracer(lens)
     True
+    >>> real_tracer(prescription_from_mapping(EXAMPLE_SINGLET)) is real_tracer(lens)
+    True
     """
+    hit = _BY_IDENTITY.get(id(prescription))
+    if hit is not None and hit[0] is prescription:
+        return hit[1]
+    tracer = _real_tracer(prescription)
+    if len(_BY_IDENTITY) >= 16:
+        _BY_IDENTITY.clear()
+    _BY_IDENTITY[id(prescription)] = (prescription, tracer)
+    return tracer
+
+
+@functools.lru_cache(maxsize=16)
+def _real_tracer(prescription: Prescription) -> RealRayTracer:
+    """The tracer of a prescription, cached by value."""
     return RealRayTracer(prescription)
 
 
