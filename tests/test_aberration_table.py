@@ -128,8 +128,9 @@ def test_the_shipped_tables_are_those_of_the_shipped_prescriptions_computed_afre
         assert shipped["prescriptions"][auto._source(lens)] == name
         assert table["f_numbers"] == list(grid)
         for shipped_row, row in zip(table["table"], rows, strict=True):
-            assert [m for m, _ in shipped_row] == [m for m, _ in row]
-            assert [s for _, s in shipped_row] == pytest.approx([s for _, s in row], rel=1e-9, abs=1e-15), name
+            assert [entry[0] for entry in shipped_row] == [entry[0] for entry in row]  # the magnifications
+            for shipped_entry, entry in zip(shipped_row, row, strict=True):  # the shares the table keeps
+                assert list(shipped_entry[1:]) == pytest.approx(list(entry[1:]), rel=1e-9, abs=1e-15), name
         assert auto._shipped_table(auto._source(lens), lens) is not None  # passes the same checks as a cache entry
 
 

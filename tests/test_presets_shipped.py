@@ -99,7 +99,7 @@ def test_a_shipped_record_that_is_not_its_file_is_never_used(change, cache_home:
 
 def test_a_first_command_parses_no_yaml(tmp_path: Path) -> None:
     code = ("import sys\n"
-            "sys.argv = ['camtool', 'dof', '--lens', 'dgauss100-lens', '-N', '4', '-s', '1m', '--format', 'json']\n"
+            "sys.argv = ['camtool', 'dof', '--lens', 'dgauss100-lens', '-N', '4', '-s', '2m', '--format', 'json']\n"
             "from camtool.cli import main\n"
             "try:\n    main()\nexcept SystemExit as done:\n    assert not done.code, done.code\n"
             "print(sorted(m for m in ('yaml', 'numpy') if m in sys.modules), file=sys.stderr)\n")
