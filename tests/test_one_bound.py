@@ -117,15 +117,21 @@ def test_a_focal_length_outside_the_option_s_range_is_refused_on_both_paths(valu
 
 def test_every_pupil_magnification_option_takes_one_range() -> None:
     """--pupil-mag is one quantity on every command that takes it (exposure's bellows factor included)."""
+    found = _every_option("--pupil-mag")
+    assert len(found) >= 5 and set(found.values()) == {(0.05, 20.0)}, found
+
+
+def _every_option(option: str) -> dict[str, tuple[float, float] | None]:
+    """The bounds of ``option`` on every command and chart subcommand that takes it, by "command subcommand"."""
     found = {}
     ctx = click.Context(cli)
     for name in cli.list_commands(ctx):
         command = cli.get_command(ctx, name)
         for sub in list(getattr(command, "commands", {}).values()) or [command]:
             for param in sub.params:
-                if "--pupil-mag" in getattr(param, "opts", ()):
+                if option in getattr(param, "opts", ()):
                     found[f"{name} {sub.name}"] = _option_bounds_of(param)
-    assert len(found) >= 5 and set(found.values()) == {(0.05, 20.0)}, found
+    return found
 
 
 def _option_bounds_of(param: click.Parameter) -> tuple[float, float] | None:
@@ -142,14 +148,7 @@ def test_every_squeeze_takes_one_range_option_preset_and_plan() -> None:
     from camtool.plans.equipment import lens_squeeze
     from camtool.presets.schema import Bad, squeeze_factor
 
-    found = {}
-    ctx = click.Context(cli)
-    for name in cli.list_commands(ctx):
-        command = cli.get_command(ctx, name)
-        for sub in list(getattr(command, "commands", {}).values()) or [command]:
-            for param in sub.params:
-                if "--squeeze" in getattr(param, "opts", ()):
-                    found[f"{name} {sub.name}"] = _option_bounds_of(param)
+    found = _every_option("--squeeze")
     assert set(found) >= {"fov fov", "dof dof", "compose compose", "chart dof"} and set(found.values()) == {SQUEEZE}
     for value in SQUEEZE:
         assert squeeze_factor(value) == value == lens_squeeze(None, squeeze=value)

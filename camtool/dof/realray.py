@@ -27,7 +27,6 @@
 
 from __future__ import annotations
 
-import functools
 import itertools
 import math
 from dataclasses import dataclass
@@ -40,6 +39,7 @@ from camtool.core.arrays import is_scalar
 from camtool.core.errors import DomainError, require_positive
 from camtool.core.planes import check_plane
 from camtool.dof.limits import DofLimits
+from camtool.optics.chebyshev import lobatto_matrix
 from camtool.optics.prescription import Prescription
 from camtool.optics.roots import brent
 from camtool.optics.tracer import _SQRT8, CRITERIA, RayTraceError, RealRayTracer, real_tracer
@@ -87,18 +87,6 @@ class RealFocus:
     magnification: float
     film_to_entrance_pupil_mm: float
     film_to_front_principal_mm: float
-
-
-@functools.lru_cache(maxsize=4)
-def _lobatto_matrix(degree: int) -> np.ndarray:
-    """Matrix taking values at x_j = −cos(πj/n) (j = 0…n) to Chebyshev coefficients (discrete cosine sums)."""
-    j = np.arange(degree + 1)
-    matrix = 2.0 / degree * np.cos(np.pi * np.outer(j, j) / degree) * (-1.0) ** j[:, None]
-    matrix[:, 0] *= 0.5
-    matrix[:, -1] *= 0.5
-    matrix[0] *= 0.5
-    matrix[-1] *= 0.5
-    return matrix
 
 
 def _clenshaw(coef: list[float], x: float) -> float:
@@ -169,7 +157,7 @@ class _Curves:
 
     def _fit(self, nodes: np.ndarray, summary: Any) -> None:
         """Chebyshev interpolants through the traced nodes, and whether to trust them."""
-        matrix = _lobatto_matrix(nodes.size - 1)
+        matrix = lobatto_matrix(nodes.size - 1)
         values = np.stack([summary.z_best - self._base(nodes), summary.slope_rms, summary.best_blur**2, summary.aim_mm])
         self.coef_z, self.coef_s, self.coef_b2, self.coef_aim = values @ matrix.T
         self._stacked = np.stack([self.coef_z, self.coef_s, self.coef_b2], axis=1)

@@ -65,6 +65,7 @@ from typing import Any
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
+from camtool.optics.chebyshev import lobatto_matrix
 from camtool.optics.prescription import Prescription
 from camtool.optics.tracer import RayTraceError, RealRayTracer, _sag, _Surface, real_tracer
 
@@ -438,7 +439,7 @@ class WavefrontTracer:
         if not np.all(np.isfinite(values)):
             raise Vignetted(f"{self.rays._name()}: rays of the f/{f_number:g} beam cannot get through the lens")
         unit = np.abs(cos_y[:, -1]) * self.n_image / self.wavelength_mm
-        coef = values if radii is not None else values @ _lobatto(RADIAL_NODES).T
+        coef = values if radii is not None else values @ lobatto_matrix(RADIAL_NODES).T
         return RadialWave(coef, unit)
 
     def axial_mtf(self, v: Any, f_number: float, film_z: Any, frequency_lpmm: float,
@@ -594,18 +595,6 @@ def _radii(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     unique, inverse = np.unique(key, return_inverse=True)
     weights = np.where(rows == 0, 1.0, 2.0)
     return unique.astype(float), inverse.reshape(key.shape), weights
-
-
-@functools.lru_cache(maxsize=4)
-def _lobatto(degree: int) -> np.ndarray:
-    """The matrix taking values at x_j = −cos(πj/n) (j = 0…n) to Chebyshev coefficients (discrete cosine sums)."""
-    j = np.arange(degree + 1)
-    matrix = 2.0 / degree * np.cos(np.pi * np.outer(j, j) / degree) * (-1.0) ** j[:, None]
-    matrix[:, 0] *= 0.5
-    matrix[:, -1] *= 0.5
-    matrix[0] *= 0.5
-    matrix[-1] *= 0.5
-    return matrix
 
 
 def _distance_to(s: _Surface, x: Any, y: Any, z0: Any, kx: Any, ky: Any, kz: Any) -> Any:
