@@ -63,6 +63,7 @@ from hypothesis import strategies as st
 from camtool.cli import cli
 from camtool.cli.params import FNumberType, LengthType, NumberType, TimeType
 from camtool.core import ranges
+from camtool.core.text import printable
 
 QUICK_EXAMPLES = 1000
 DEEP_EXAMPLES = 5000
@@ -644,6 +645,7 @@ def check_error(outcome: Outcome) -> str:
             if line.startswith("camtool: left out to fit "):  # the table's note on columns it had no room for
                 continue
             named = [*argv[1:], *outcome.stdin.decode("utf-8", "surrogateescape").splitlines()]
+            named += [printable(a) for a in named]  # a name with bytes that are no text is printed escaped (\xff)
             if line.startswith("camtool") and any(a in line for a in named if a):
                 continue
             if line.startswith("Error: ") and OPTION.search(line):
