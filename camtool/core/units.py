@@ -135,7 +135,7 @@ _TIME_UNITS = {"h": 3600.0, "min": 60.0, "m": 60.0, "'": 60.0, "s": 1.0, '"': 1.
 _TIME_RANK = {"h": 0, "min": 1, "m": 1, "'": 1, "s": 2, '"': 2}
 # Patterns of the time parser, compiled on first use (re caches them): commands without times pay nothing.
 _TIME_PART = rf"\s*({_NUMBER})\s*(h|min|m|s|'|\"|)\s*"  # matched on lower case
-_FRACTION = re.compile(rf"^\s*({_NUMBER})\s*/\s*({_NUMBER})\s*s?\s*$")
+_FRACTION = rf"^\s*({_NUMBER})\s*/\s*({_NUMBER})\s*s?\s*$"  # compiled on first use (re's cache)
 _CLOCK = r"^\s*(\d+):(\d\d(?:\.\d*)?)(?::(\d\d(?:\.\d*)?))?\s*$"
 _TIME_EXAMPLES = "examples: 1/250, 0.5, 2s, 90s, 1m30s, 1:30, 2h5m, 1:02:03"
 
@@ -167,7 +167,7 @@ def parse_time(text: str | float) -> float:
     """
     if isinstance(text, (int, float)):
         return float(text)
-    match = _FRACTION.match(text)
+    match = re.match(_FRACTION, text)
     if match:
         denominator = float(match.group(2))
         if denominator == 0:
@@ -292,7 +292,7 @@ def parse_criterion(text: str) -> tuple[float, float | None]:
     """
     from camtool.core.ranges import FREQUENCY_LPMM, MTF_LEVEL, describe, in_range
 
-    match = _CRITERION.match(str(text))
+    match = re.match(_CRITERION, str(text), re.IGNORECASE)
     if not match:
         raise UnitError(f"{text!r} is not a contrast criterion (examples: mtf:0.3@40, mtf:50%@coc)")
     level = float(match.group(1)) / (100.0 if match.group(2) else 1.0)
@@ -307,7 +307,7 @@ def parse_criterion(text: str) -> tuple[float, float | None]:
     return level, frequency
 
 
-_CRITERION = re.compile(rf"^\s*mtf\s*:\s*({_NUMBER})\s*(%?)\s*@\s*(coc|{_NUMBER})\s*(?:lp/mm)?\s*$", re.IGNORECASE)
+_CRITERION = rf"^\s*mtf\s*:\s*({_NUMBER})\s*(%?)\s*@\s*(coc|{_NUMBER})\s*(?:lp/mm)?\s*$"  # compiled on first use (re's cache)
 
 
 def _bounded(text: str, number: float, bounds: tuple[float, float], unit: str, what: str = "") -> float:
@@ -421,8 +421,8 @@ def parse_point(text: str) -> tuple[float, float]:
     return distance, height
 
 
-_DIGITS = re.compile(r"^[0-9]+$")
-_DIGITS_UNIT = re.compile(r"^([0-9]+)\s*([a-zA-Zµ\"']+)$")
+_DIGITS = r"^[0-9]+$"  # compiled on first use (re's cache)
+_DIGITS_UNIT = r"^([0-9]+)\s*([a-zA-Zµ\"']+)$"  # compiled on first use (re's cache)
 
 F_NUMBER_THIRD_STOPS = (0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.4, 1.6, 1.8, 2.0, 2.2, 2.5, 2.8, 3.2, 3.5, 4.0,
                         4.5, 5.0, 5.6, 6.3, 7.1, 8.0, 9.0, 10.0, 11.0, 13.0, 14.0, 16.0, 18.0, 20.0,
@@ -436,8 +436,8 @@ def decimal_comma_length(value: str, first: str, second: str, unit: str) -> str 
 
     A list of two bare numbers (``-s 3,5``) stays a list: it gives a row each, in plain sight.
     """
-    with_unit = _DIGITS_UNIT.match(second)
-    if not (_DIGITS.match(first) and with_unit):
+    with_unit = re.match(_DIGITS_UNIT, second)
+    if not (re.match(_DIGITS, first) and with_unit):
         return None
     shown = "µm" if unit == "um" else unit
     return (f"{value!r} is ambiguous: {first}.{with_unit.group(1)} {with_unit.group(2)} is written {first}.{second} "
@@ -449,7 +449,7 @@ def decimal_comma_f_number(value: str, first: str, second: str) -> str | None:
 
     ``8,11`` and ``4,8`` (no third stop) stay lists of two f-numbers.
     """
-    if not (_DIGITS.match(first) and _DIGITS.match(second)) or len(first) + len(second) > 4:
+    if not (re.match(_DIGITS, first) and re.match(_DIGITS, second)) or len(first) + len(second) > 4:
         return None  # a third-stop f-number is at most two digits either side of the comma
     decimal = float(f"{first}.{second}")
     if decimal != int(decimal) and decimal in F_NUMBER_THIRD_STOPS:
@@ -458,7 +458,7 @@ def decimal_comma_f_number(value: str, first: str, second: str) -> str | None:
     return None
 
 
-_FIGURE_SIZE = re.compile(r"^\s*(\d+(?:\.\d*)?)\s*[x×X]\s*(\d+(?:\.\d*)?)\s*(in|cm|mm)?\s*$")
+_FIGURE_SIZE = r"^\s*(\d+(?:\.\d*)?)\s*[x×X]\s*(\d+(?:\.\d*)?)\s*(in|cm|mm)?\s*$"  # compiled on first use (re's cache)
 
 
 def parse_figure_size(text: str) -> tuple[float, float]:
@@ -471,7 +471,7 @@ def parse_figure_size(text: str) -> tuple[float, float]:
     """
     from camtool.core.ranges import CHART_SIDE_IN
 
-    match = _FIGURE_SIZE.match(str(text))
+    match = re.match(_FIGURE_SIZE, str(text))
     if not match:
         raise UnitError(f"{text!r} is not a size (examples: 8x5, 8x5in, 20x12cm)")
     per_inch = {"in": 1.0, None: 1.0, "cm": 2.54, "mm": 25.4}[match.group(3)]

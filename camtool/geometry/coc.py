@@ -48,8 +48,8 @@ class CocChoice(NamedTuple):
 
 
 _DIAGONAL = re.compile(r"^\s*d\s*/\s*(\d+(?:\.\d*)?)\s*$", re.IGNORECASE)
-_PIXELS = re.compile(r"^\s*px\s*:\s*(\d+(?:\.\d*)?)\s*$", re.IGNORECASE)
-_PRINT = re.compile(r"^\s*print\s*:\s*([^x×@]+)\s*[x×]\s*([^@]+)@(.+)$", re.IGNORECASE)
+_PIXELS = r"^\s*px\s*:\s*(\d+(?:\.\d*)?)\s*$"  # compiled on first use (re's cache)
+_PRINT = r"^\s*print\s*:\s*([^x×@]+)\s*[x×]\s*([^@]+)@(.+)$"  # compiled on first use (re's cache)
 
 
 def coc_from_rule(
@@ -91,13 +91,13 @@ def coc_from_rule(
         if divisor <= 0:
             raise UnitError(f"{rule!r}: the divisor must be > 0")
         return CocChoice(diagonal / divisor, f"{rule.strip()} of {diagonal:.1f} mm")
-    match = _PIXELS.match(rule)
+    match = re.match(_PIXELS, rule, re.IGNORECASE)
     if match:
         if pixel_pitch_mm is None:
             raise UnitError(f"{rule!r} needs the pixel pitch: give --camera or --pixel-pitch")
         factor = float(match.group(1))
         return CocChoice(factor * pixel_pitch_mm, f"{rule.strip()} × {pixel_pitch_mm * 1000:.2f} µm")
-    match = _PRINT.match(rule)
+    match = re.match(_PRINT, rule, re.IGNORECASE)
     if match:
         return _print_coc(rule, match.groups(), width_mm, height_mm)
     raise UnitError(f"{rule!r} is not a CoC rule (d/1500, cine, d/1730, d/1442, d/K, px:K, print:WxH@DIST)")

@@ -38,7 +38,7 @@ from camtool.geometry.coc import CINE_RULE, DEFAULT_RULE, coc_from_rule
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 _SIDE = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)\s*([a-zA-Zµ\"]*)"
-_INLINE = re.compile(rf"^\s*{_SIDE}\s*[x×X*]\s*{_SIDE}\s*$")
+_INLINE = rf"^\s*{_SIDE}\s*[x×X*]\s*{_SIDE}\s*$"  # compiled on first use (re's cache)
 
 Database = Callable[[], Any]
 """A function returning the preset database, called only when a preset is named."""
@@ -125,7 +125,7 @@ def resolve_sensor(*, sensor: str | None = None, crop: float | None = None, came
                             body.coc_mm, camera.pixel_pitch_mm)
     if sensor is None:
         return FULL_FRAME
-    match = _INLINE.match(sensor)
+    match = re.match(_INLINE, sensor)
     unitless = match is not None and not match.group(2) and not match.group(4)
     preset = _sensor_preset(database, sensor, quiet=match is not None)
     if preset is not None:
