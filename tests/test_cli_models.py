@@ -115,3 +115,23 @@ def test_unreadable_prescription_is_exit_1_naming_option_and_file() -> None:
     assert (result.exit_code, result.stdout, result.stderr) == (
         1, "", "Error: Invalid value for '--prescription': /nonexistent.yaml: cannot read the file: "
                f"{os.strerror(errno.ENOENT)}\n")  # the C library's words for ENOENT
+
+
+def test_a_prescription_not_in_air_is_refused_by_the_traced_models_and_used_by_the_others(tmp_path) -> None:
+    # object space of index 1.333 (a lens under water): the paraxial, real-ray and wavefront paths assume air; they are
+    # unavailable (one line on --model, exit 2) where a ValueError's traceback used to come out, and auto, thick and the
+    # perfect-lens wave rung answer with the prescription's first-order data
+    text = Path(DGAUSS).read_text(encoding="utf-8")
+    water = tmp_path / "water.yaml"
+    water.write_text(text.replace("object_index: 1.0", "object_index: 1.333") if "object_index:" in text
+                     else text.replace("\nsurfaces:", "\nobject_index: 1.333\nsurfaces:", 1), encoding="utf-8")
+    base = ["-N", "4", "-s", "3m", "--prescription", str(water)]
+    for model in ("raytrace", "paraxial"):
+        result = run("dof", *base, "--model", model)
+        assert result.exit_code == 2 and result.stderr.startswith("Error: Invalid value for '--model'"), result.stderr
+        assert result.stderr.count("\n") == 1 and "in air" in result.stderr
+    for model, answered in (("auto", None), ("thick", "thick"), ("wave", "wave")):
+        (row,) = run_json("dof", *base, "--model", model)
+        assert row["near_mm"] > 0 and (answered is None or row["model"] == answered), row
+    tilted = run("tilt", "-N", "8", "-s", "3m", "--tilt", "2", "--prescription", str(water), "--model", "raytrace")
+    assert tilted.exit_code == 2 and "in air" in tilted.stderr and tilted.stderr.count("\n") == 1

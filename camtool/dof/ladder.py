@@ -147,7 +147,7 @@ def _available(ladder: int, lens: LensData) -> tuple[str, ...]:
     # RUNGS is a new ladder) and on which data the lens carries
     by_hand = lens.pupil_magnification is not None or lens.hiatus_mm is not None
     # with a prescription and no values by hand, thick is paraxial by another name
-    skip = "thick" if lens.prescription is not None and not by_hand else ""
+    skip = "thick" if rungs.traceable(lens) and not by_hand else ""
     return tuple(rung.name for rung in rungs.geometric() if rung.name != skip and rung.can_run(lens))
 
 
@@ -156,6 +156,8 @@ def _unavailable(model: str, lens: LensData) -> ModelUnavailable | None:
     rung = rungs.by_name()[model]
     if rung.can_run(lens):
         return None
+    if rung.can_run is rungs.traceable and lens.prescription is not None:  # one, but not in air
+        return ModelUnavailable(model, rungs.in_air(lens.prescription))
     return ModelUnavailable(model, f"{rung.needs} ({either(rung.supplied_by)})", rung.needs, rung.supplied_by)
 
 
@@ -414,7 +416,7 @@ def _wave(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: run
     """The ``wave`` rung (diffraction built in), with its estimate: the lens data it leaves out."""
     limits = rungs.by_name()["wave"].run(f, n, c, s, plane, lens, focus, criterion=criterion,
                                          wavelength_nm=wavelength_nm)
-    if lens.prescription is not None:  # the real lens's wavefront: aberrations, pupils and hiatus included
+    if rungs.traceable(lens):  # the real lens's wavefront: aberrations, pupils and hiatus included
         return ModelResult(limits, WAVE_PRESCRIPTION, 0.0)
     effects = _effects(f, n, c, s, plane, lens, 0.0, focus)
     return ModelResult(limits, "wave", left_out(effects, "wave", True))

@@ -20,7 +20,7 @@ from camtool.dof.closed import approx_dof, thin_dof
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import FocusGeometry, LensPlaneDistances, focus_geometry
 
-__all__ = ["NO_LENS", "RUNGS", "Focus", "LensData", "Rung", "by_name", "geometric", "names"]
+__all__ = ["NO_LENS", "RUNGS", "Focus", "LensData", "Rung", "by_name", "geometric", "in_air", "names", "traceable"]
 
 
 @dataclass(frozen=True)
@@ -147,7 +147,7 @@ def _raytrace(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus:
 
 def _wave(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None,
           criterion: Any = None, wavelength_nm: float = 550.0) -> DofLimits:
-    if lens.prescription is not None:  # the real lens's wavefront, at the prescription's own wavelength
+    if traceable(lens):  # the real lens's wavefront, at the prescription's own wavelength
         from camtool.dof.wavetrace import prescription_wave_dof
 
         return prescription_wave_dof(lens.prescription, n, c, s, plane, criterion)
@@ -160,8 +160,18 @@ def _has_thick_data(lens: LensData) -> bool:
     return lens.thick_parameters() is not None
 
 
-def _has_prescription(lens: LensData) -> bool:
-    return lens.prescription is not None
+def in_air(prescription: Any) -> str:
+    """What a prescription the traced paths cannot use needs: "" when it is in air (n = 1 before and after it)."""
+    if prescription.object_index == 1.0 and prescription.image_index == 1.0:
+        return ""
+    return (f"a lens prescription in air (object and image space of index 1; this one has {prescription.object_index:g} "
+            f"and {prescription.image_index:g})")
+
+
+def traceable(lens: LensData) -> bool:
+    """Whether the lens has a prescription the paraxial, real-ray and wavefront paths can use: in air (n = 1 before
+    and after it); another one still gives its first-order data to ``thick``."""
+    return lens.prescription is not None and not in_air(lens.prescription)
 
 
 _PRESCRIPTION = "a lens prescription"
@@ -177,9 +187,9 @@ RUNGS: tuple[Rung, ...] = (
          ("--pupil-mag", "--hiatus", "a --lens that has them", "--prescription"),
          hyperfocal_help="with the lens's pupil magnification and hiatus (--lens, --pupil-mag, --hiatus)"),
     Rung("paraxial", _paraxial, ("aberrations",),
-         "first-order trace of --prescription", _has_prescription, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
+         "first-order trace of --prescription", traceable, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
     Rung("raytrace", _raytrace, (),
-         "real rays", _has_prescription, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
+         "real rays", traceable, _PRESCRIPTION, _PRESCRIPTION_SOURCES),
     Rung("wave", _wave, ("pupil", "hiatus", "aberrations"),
          "sharp where the MTF meets --criterion (diffraction and defocus together): a perfect thin lens, or "
          "with a prescription its real wavefront's FFT MTF",

@@ -257,9 +257,12 @@ def _models(model: str, lens: LensData | None) -> list[tuple[str, bool]]:
     if model not in MODELS:
         raise DomainError("model", model, ", ".join(MODELS))
     thick = lens is not None and lens.thick_parameters() is not None
-    traced = lens is not None and lens.prescription is not None
+    from camtool.dof.rungs import in_air, traceable
+
+    traced = lens is not None and traceable(lens)
     if model == "raytrace" and not traced:
-        raise ModelUnavailable("raytrace", "a lens prescription")
+        found = lens.prescription if lens is not None else None
+        raise ModelUnavailable("raytrace", in_air(found) if found is not None else "a lens prescription")
     if model == "auto":  # the rung of the hyperfocal distance, as dof and hyperfocal have it at H and beyond
         from camtool.dof.ladder import hyperfocal_rung
 
