@@ -16,14 +16,12 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-import yaml
 from timing import best
 
 from camtool.dof import realray, wavetrace
 from camtool.dof.wave import DEFAULT_CRITERION, Criterion
 from camtool.optics import tracer, wavefront
 from camtool.optics.paraxial import first_order
-from camtool.optics.prescription import prescription_from_mapping
 
 ROOT = Path(__file__).resolve().parent.parent
 BUDGET_S = 0.200
@@ -32,17 +30,17 @@ WIDE_OPEN = Criterion(0.1, None)
 
 
 def shipped() -> dict[str, object]:
-    out = {}
-    for path in sorted((ROOT / "lens_db" / "prescriptions").glob("*.yaml")):
-        data = yaml.safe_load(path.read_text())
-        out[str(data.get("id", path.stem))] = prescription_from_mapping(data, path.stem)
-    return out
+    """The shipped prescriptions by id (:func:`camtool.presets.shipped.prescriptions_by_id`)."""
+    from camtool.presets.shipped import prescriptions_by_id
+
+    return prescriptions_by_id()
 
 
 def forget() -> None:
     """Empty every cache the prescription path keeps."""
     realray._curves.cache_clear()
-    tracer.real_tracer.cache_clear()
+    tracer._BY_IDENTITY.clear()
+    tracer._real_tracer.cache_clear()
     wavefront._CACHE.clear()
     wavetrace._HYPERFOCAL_FILM.clear()
 

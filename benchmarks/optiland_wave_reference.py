@@ -36,11 +36,9 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 import numpy as np  # noqa: E402
-import yaml  # noqa: E402
 
 from camtool.dof.realray import real_focus  # noqa: E402
 from camtool.optics.paraxial import first_order  # noqa: E402
-from camtool.optics.prescription import prescription_from_mapping  # noqa: E402
 from camtool.optics.tracer import real_tracer  # noqa: E402
 
 NUM_RAYS = 129
@@ -50,12 +48,10 @@ LAGS = (4, 8, 16, 28)
 
 
 def shipped() -> dict[str, object]:
-    """The shipped prescriptions by id."""
-    out = {}
-    for path in sorted((ROOT / "lens_db" / "prescriptions").glob("*.yaml")):
-        data = yaml.safe_load(path.read_text())
-        out[str(data.get("id", path.stem))] = prescription_from_mapping(data, path.stem)
-    return out
+    """The shipped prescriptions by id (:func:`camtool.presets.shipped.prescriptions_by_id`)."""
+    from camtool.presets.shipped import prescriptions_by_id
+
+    return prescriptions_by_id()
 
 
 def optiland_lens(lens, f_number: float, object_z: float, film_z: float, field_deg: float):

@@ -15,7 +15,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from camtool.core.errors import DomainError
 from camtool.dof.ladder import LensData, depth_of_field
@@ -31,11 +30,10 @@ DATA = Path(__file__).resolve().parent / "data"
 
 
 def shipped() -> dict[str, object]:
-    out = {}
-    for path in sorted((ROOT / "lens_db" / "prescriptions").glob("*.yaml")):
-        data = yaml.safe_load(path.read_text())
-        out[str(data.get("id", path.stem))] = prescription_from_mapping(data, path.stem)
-    return out
+    """The shipped prescriptions by id (:func:`camtool.presets.shipped.prescriptions_by_id`)."""
+    from camtool.presets.shipped import prescriptions_by_id
+
+    return prescriptions_by_id()
 
 
 LENSES = shipped()

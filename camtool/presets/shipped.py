@@ -52,6 +52,11 @@ def build_records() -> bytes:
     return index.encode("utf-8") + b"\n" + b"".join(blobs)
 
 
+def prescriptions_by_id() -> dict[str, Any]:
+    """Every prescription of ``lens_db/prescriptions/`` by its id (its file's name without ``.yaml``)."""
+    return {lens.source: lens for _name, lens in shipped_prescriptions()}
+
+
 def shipped_prescriptions() -> list[tuple[str, Any]]:
     """``(file name, prescription)`` of every file in ``lens_db/prescriptions/``, in name order."""
     from camtool.optics.prescription import prescription_from_mapping
