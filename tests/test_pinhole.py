@@ -155,3 +155,13 @@ def test_a_scene_or_camera_preset_with_pinhole_answers_or_refuses_in_one_line() 
         result = run("pinhole", "--camera", "apple-iphone-15-pro", "--scene", scene, "--format", "csv",
                      "--film-distance", "1")
         assert result.exit_code in (0, 2) and "Traceback" not in result.output
+
+
+def test_a_scene_gives_the_subject_distance_a_typed_one_wins() -> None:
+    rows = json.loads(run("pinhole", "-f", "50", "--scene", "portrait-85", "--format", "json").stdout)
+    assert {r["subject_distance_mm"] for r in rows} == {2000.0}  # the scene's 2 m (F = L·s/(L + s))
+    assert rows[1]["pinhole_mm"] == pytest.approx(math.sqrt(2.0) * math.sqrt(550e-6 * 50.0 * 2000.0 / 2050.0), rel=1e-12)
+    typed = json.loads(run("pinhole", "-f", "50", "--scene", "portrait-85", "-s", "5m", "--format", "json").stdout)
+    assert {r["subject_distance_mm"] for r in typed} == {5000.0}
+    alone = json.loads(run("pinhole", "-f", "50", "--format", "json").stdout)
+    assert {r["subject_distance_mm"] for r in alone} == {None}  # infinity, null in JSON

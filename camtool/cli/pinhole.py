@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import click
 
 from camtool.cli.command import Output, camtool_command
@@ -17,8 +19,8 @@ from camtool.render.views.pinhole import COLUMNS, KEYS
 @camtool_command("pinhole", keys=KEYS)
 @click.option("-f", "--film-distance", "film_distance", type=FOCAL_MM, required=True, callback=one_value,
               help="Pinhole-to-film distance (the focal length), e.g. 50 or 5cm (bare numbers are mm).")
-@click.option("-s", "--distance", type=DISTANCE_M, default="inf", show_default=True, callback=one_value,
-              help="Subject distance from the pinhole (bare numbers are metres).")
+@click.option("-s", "--distance", type=DISTANCE_M, callback=one_value,
+              help="Subject distance from the pinhole (bare numbers are metres); default: a --scene's, else inf.")
 @click.option("--contrast", type=NumberType(*ranges.MTF_LEVEL), default=DEFAULT_LEVEL, show_default=True, callback=one_value,
               help="The MTF level the optimum resolves the finest detail at (0.5: MTF50).")
 @wavelength_option()
@@ -46,7 +48,8 @@ def pinhole(ctx: click.Context, film_distance, distance, contrast, wavelength, e
     """
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     with library_errors(ctx):
-        plan = pinhole_plan(film_distance_mm=film_distance, subject_distance_mm=distance, wavelength_nm=wavelength,
+        plan = pinhole_plan(film_distance_mm=film_distance, subject_distance_mm=math.inf if distance is None else distance,
+                            wavelength_nm=wavelength,
                             level=contrast, sensor_width_mm=chosen.width_mm, sensor_height_mm=chosen.height_mm,
                             ev100=ev100, iso=iso)
     angle = plan.rows[0]
