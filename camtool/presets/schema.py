@@ -249,20 +249,29 @@ def close_focus_rows(value: Any) -> list[dict[str, float]]:
     ...
     camtool.presets.schema.Bad: row 2: focal_length_mm must be greater than the row before (70)
     """
+    return _by_focal_length(value, CLOSE_FOCUS_FIELDS, ("focal_length_mm", "min_focus_mm"), "row",
+                            "{focal_length_mm, min_focus_mm[, max_magnification]}")
+
+
+def _by_focal_length(value: Any, fields: Mapping[str, Any], required: tuple[str, ...], word: str, shape: str,
+                     also: Callable[[int, dict[str, float]], None] | None = None) -> list[dict[str, float]]:
+    """A non-empty list of mappings of ``fields``, each checked (and by ``also``), in increasing
+    ``focal_length_mm``; a problem names the ``word`` ("row", "member") and its number."""
     if not isinstance(value, list) or not value:
-        raise Bad(f"expected a non-empty list of {{focal_length_mm, min_focus_mm[, max_magnification]}}, "
-                  f"got {show(value)}")
+        raise Bad(f"expected a non-empty list of {shape}, got {show(value)}")
     out: list[dict[str, float]] = []
     for number, raw in enumerate(value, start=1):
         if not isinstance(raw, Mapping):
-            raise Bad(f"row {number} must be a mapping, got {show(raw)}")
-        record, problems = check_fields(raw, CLOSE_FOCUS_FIELDS, ("focal_length_mm", "min_focus_mm"))
+            raise Bad(f"{word} {number} must be a mapping, got {show(raw)}")
+        record, problems = check_fields(raw, fields, required)
         if problems:
             key, problem = problems[0]
-            raise Bad(f"row {number}, {key}: {problem}")
+            raise Bad(f"{word} {number}, {key}: {problem}")
         if out and record["focal_length_mm"] <= out[-1]["focal_length_mm"]:
-            raise Bad(f"row {number}: focal_length_mm must be greater than the row before "
+            raise Bad(f"{word} {number}: focal_length_mm must be greater than the {word} before "
                       f"({out[-1]['focal_length_mm']:g})")
+        if also is not None:
+            also(number, record)
         out.append(record)
     return out
 
@@ -326,25 +335,13 @@ def set_members(value: Any) -> list[dict[str, float]]:
     ...
     camtool.presets.schema.Bad: member 2: focal_length_mm must be greater than the member before (50)
     """
-    if not isinstance(value, list) or not value:
-        raise Bad(f"expected a non-empty list of {{focal_length_mm[, t_number_min, min_focus_mm, ...]}}, "
-                  f"got {show(value)}")
-    out: list[dict[str, float]] = []
-    for number, raw in enumerate(value, start=1):
-        if not isinstance(raw, Mapping):
-            raise Bad(f"member {number} must be a mapping, got {show(raw)}")
-        record, problems = check_fields(raw, SET_FIELDS, ("focal_length_mm",))
-        if problems:
-            key, problem = problems[0]
-            raise Bad(f"member {number}, {key}: {problem}")
-        if out and record["focal_length_mm"] <= out[-1]["focal_length_mm"]:
-            raise Bad(f"member {number}: focal_length_mm must be greater than the member before "
-                      f"({out[-1]['focal_length_mm']:g})")
+    def t_stop_not_below_f_number(number: int, record: dict[str, float]) -> None:
         low, t_stop = record.get("f_number_min"), record.get("t_number_min")
         if low is not None and t_stop is not None and t_stop < low:
             raise Bad(f"member {number}: a T-stop cannot be below the f-number ({low:g})")
-        out.append(record)
-    return out
+
+    return _by_focal_length(value, SET_FIELDS, ("focal_length_mm",), "member",
+                            "{focal_length_mm[, t_number_min, min_focus_mm, ...]}", t_stop_not_below_f_number)
 
 
 def sensor_ref(value: Any) -> str | dict[str, Any]:
