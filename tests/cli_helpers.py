@@ -48,3 +48,16 @@ def time_limit(seconds: int) -> Iterator[None]:
 def time_bound() -> Iterator[None]:
     """Every test here ends within 60 s: a hang fails instead of stalling the run."""
     yield from time_limit(60)
+
+
+def exif_image_maker() -> Any:
+    """The module tests/data/exif/make_images.py, which writes the tiny test images (it is a script, not a package)."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent / "data" / "exif" / "make_images.py"
+    spec = importlib.util.spec_from_file_location("make_images", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

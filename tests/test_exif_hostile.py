@@ -15,7 +15,6 @@ default (CAMTOOL_EXIF_FUZZ_SEED picks the seed).
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
 import os
@@ -32,7 +31,7 @@ from click.testing import CliRunner, Result
 
 from camtool.cli import cli
 from camtool.core import domain, ranges
-from tests.cli_helpers import run, time_limit
+from tests.cli_helpers import exif_image_maker, run, time_limit
 
 exiv2 = pytest.importorskip("exiv2")
 
@@ -44,15 +43,7 @@ OURS = sorted(DATA.glob("*.jpg"))
 CONTROL = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f]")  # every C0 but TAB and LF, DEL, C1
 
 
-def _make_images() -> Any:
-    spec = importlib.util.spec_from_file_location("make_images", DATA / "make_images.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-IMAGES = _make_images()
+IMAGES = exif_image_maker()
 BASE: list[tuple[str, Any]] = [
     ("Exif.Image.Make", "Canon"), ("Exif.Image.Model", "Canon EOS 5D"),
     ("Exif.Photo.FocalLength", IMAGES.rational(50)), ("Exif.Photo.FNumber", IMAGES.rational(8)),

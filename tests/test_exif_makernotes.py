@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from camtool.exif import makernotes
+from tests.cli_helpers import exif_image_maker
 
 exiv2 = pytest.importorskip("exiv2")
 
@@ -24,12 +25,7 @@ DATA = Path(__file__).resolve().parent / "data" / "exif"
 
 def _printed(tags: list[tuple[str, object]], key: str, tmp_path: Path) -> str:
     """exiv2's print() of ``key`` after writing ``tags`` into a fresh tiny JPEG."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("make_images", DATA / "make_images.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    module = exif_image_maker()
     path = tmp_path / "x.jpg"
     path.write_bytes(module.tiny_jpeg())
     image = exiv2.ImageFactory.open(str(path))

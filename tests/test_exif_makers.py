@@ -9,7 +9,6 @@ the same files (tests/test_exif_exiftool.py runs it on :func:`maker_files`).
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
 from pathlib import Path
@@ -17,7 +16,7 @@ from typing import Any
 
 import pytest
 
-from tests.cli_helpers import run
+from tests.cli_helpers import exif_image_maker, run
 
 exiv2 = pytest.importorskip("exiv2")
 
@@ -25,15 +24,7 @@ DATA = Path(__file__).resolve().parent / "data" / "exif"
 SAMPLES = Path(__file__).resolve().parent.parent.parent / "shared" / "reference" / "exif-samples"
 
 
-def _make_images() -> Any:
-    spec = importlib.util.spec_from_file_location("make_images", DATA / "make_images.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-IMAGES = _make_images()
+IMAGES = exif_image_maker()
 R, U = IMAGES.rational, IMAGES.ushort
 SHOT = [("Exif.Photo.FNumber", R(56, 10)), ("Exif.Photo.ExposureTime", R(1, 250))]
 FILES: dict[str, list[tuple[str, Any]]] = {
