@@ -28,12 +28,7 @@ COLUMNS = [
 
 ALL_COLUMNS = [
     Column("model", "model", TEXT),
-    Column("focal_length_mm", "f", SMALL),
-    Column("f_number", "N", FNUMBER),
-    Column("distance_mm", "focus"),
-    Column("near_mm", "near"),
-    Column("far_mm", "far"),
-    Column("total_mm", "depth"),
+    *COLUMNS[:6],  # f, N, focus, near, far, depth
     Column("difference_shown", "difference", TEXT),
     Column("estimate_shown", "est. error", TEXT),
     Column("time_shown", "time/eval", TEXT),
