@@ -14,6 +14,8 @@ from camtool.cli.exposure import single
 from camtool.cli.lensdata import lens_geometry_options, pupil_and_hiatus
 from camtool.cli.options import DISTANCE_M, FOCAL_MM, coc_options, library_errors, sensor_options
 from camtool.cli.params import FNumberType, LengthType, NumberType, one_value
+from camtool.dof.cocmap import NUKE_MATHS
+from camtool.plans.cocmap import MODES
 from camtool.render.views.cocmap import COLUMNS, KEYS
 
 ONE: dict[str, Any] = {"callback": one_value}
@@ -22,7 +24,7 @@ ONE: dict[str, Any] = {"callback": one_value}
 @camtool_command("cocmap", keys=KEYS, batch=False)
 @click.argument("depth", metavar="DEPTH")
 @click.option("-o", "--output", required=True, help="Map file (.exr, .png, .npy); for a sequence a folder or coc.%04d.exr.")
-@click.option("--mode", type=click.Choice(["physical", "blender", "nuke"]), default="physical", show_default=True,
+@click.option("--mode", type=click.Choice(MODES), default="physical", show_default=True,
               help="camtool's thin/thick lens, Blender's Defocus node or Nuke's ZDefocus (docs/cine.md).")
 @click.option("-s", "--distance", type=DISTANCE_M, multiple=True, help="Focus from the sensor (bare: m); default: header.")
 @click.option("-N", "--f-number", "f_number", type=FNumberType(t_stops=True), multiple=True, help="f-number or T-stop.")
@@ -34,7 +36,7 @@ ONE: dict[str, Any] = {"callback": one_value}
 @click.option("--f-stop", type=NumberType(0.5, 128), **ONE, help="blender: the node's F-Stop (default -N).")
 @click.option("--max-blur", type=NumberType(0, 10000), default="0", **ONE, help="blender: Max Blur radius, px (0: none).")
 @click.option("--z-scale", type=NumberType(0, 1000), **ONE, help="blender: no Z-buffer; radius = value · Z-Scale.")
-@click.option("--math", type=click.Choice(["depth", "far=0", "direct"]), default="depth", help="nuke: ZDefocus math.")
+@click.option("--math", type=click.Choice(NUKE_MATHS), default="depth", help="nuke: ZDefocus math.")
 @click.option("--size", type=NumberType(0, 10000), default="10", **ONE, help="nuke: blur size at infinity, px.")
 @click.option("--maximum", type=NumberType(0, 10000), default="100", **ONE, help="nuke: largest blur, px.")
 @click.option("--jobs", type=click.IntRange(1, 1024), help="Frames at once, in processes (default: one per core).")

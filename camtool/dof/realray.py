@@ -89,14 +89,6 @@ class RealFocus:
     film_to_front_principal_mm: float
 
 
-def _clenshaw(coef: list[float], x: float) -> float:
-    """Σ c_k T_k(x) for a scalar x in [−1, 1] (Clenshaw's recurrence, plain floats)."""
-    b1 = b2 = 0.0
-    for c in reversed(coef[1:]):
-        b1, b2 = 2.0 * x * b1 - b2 + c, b1
-    return x * b1 - b2 + coef[0]
-
-
 class _Curves:
     """z_best, S and B of one lens at one f-number as Chebyshev interpolants in pupil vergence v."""
 
@@ -193,8 +185,8 @@ class _Curves:
     def curve(self, v: float) -> tuple[float, float, float]:
         """Interpolated (z_best, S, B) at one pupil vergence (plain floats).
 
-        The three Clenshaw recurrences of :func:`_clenshaw` run side by side in one loop (the same
-        operations on each, so the same numbers; a third of the loops' overhead).
+        Σ c_k T_k(x) by Clenshaw's recurrence (b_k = 2x·b_{k+1} − b_{k+2} + c_k, the sum x·b_1 − b_2 + c_0),
+        the three curves' recurrences side by side in one loop (a third of three loops' overhead).
         """
         x = 2.0 * v / self.v_cap - 1.0
         x2 = 2.0 * x

@@ -49,9 +49,6 @@ _F_THIRD = F_NUMBER_THIRD_STOPS
 _F_HALF = (0.7, 0.84, 1.0, 1.2, 1.4, 1.7, 2.0, 2.4, 2.8, 3.3, 4.0, 4.8, 5.6, 6.7, 8.0, 9.5,
            11.0, 13.0, 16.0, 19.0, 22.0, 27.0, 32.0, 38.0, 45.0, 54.0, 64.0)
 
-THIRD_STOP_F_NUMBERS = frozenset(_F_THIRD)
-"""The f-numbers a camera shows in third stops (the marks a decimal comma most often hides: 2,8 and 5,6)."""
-
 # Shutter times in seconds, third stops, index j = 3·log2(1/t) from j = -15 (30 s) to
 # 39 (1/8000 s): the series on current camera dials and displays (full stops as in
 # ISO 516 "Camera shutters": 1, 1/2, 1/4, 1/8, 1/15, 1/30, 1/60, 1/125, ...).

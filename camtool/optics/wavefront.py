@@ -609,10 +609,6 @@ def _distance_to(s: _Surface, x: Any, y: Any, z0: Any, kx: Any, ky: Any, kz: Any
     return _general_path(s, x, y, z0, kx, ky, kz)
 
 
-def _at_field(field_deg: float) -> str:
-    return "" if field_deg == 0.0 else f" at {field_deg:g}° off the axis"
-
-
 _CACHE: dict[Prescription, WavefrontTracer] = {}
 
 
