@@ -46,6 +46,7 @@ from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
 from camtool.core.records import CAMERA_DATA_COLUMNS, Chunk, camera_cells, chunks, floats, group_rows, open_source, unit_column
+from camtool.core.units import plain_number
 from camtool.render.columnar import ColumnRows, placed, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter
@@ -301,7 +302,7 @@ class _Batch:
                     array[index] = np.nan
                     continue
                 try:
-                    number = float(text) if "_" not in text else math.nan  # 1_000: no number an option takes
+                    number = plain_number(text)  # not 1_000, as no option takes it
                 except ValueError:
                     number = math.nan
                 array[index] = number * factor if number == number else self._one(
