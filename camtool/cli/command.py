@@ -146,8 +146,15 @@ def camtool_command(
 
                 run_batch(ctx, equipped, params, source, on_error, fields)
                 return
-            grid = ctx.meta[GRID] = Grid(whole=fmt == "table")
+            grid = ctx.meta[GRID] = Grid(whole=fmt == "table", scalar=True)
             out = equipped(ctx, **params)
+            if grid.scalar:
+                outs = one_at_a_time(grid, out, lambda: equipped(ctx, **params))
+                if outs is not None:
+                    emit_all(outs, fmt, units, fields)
+                    return
+                grid = ctx.meta[GRID] = Grid()  # a row without an answer: the grid as a whole says how
+                out = equipped(ctx, **params)
             if grid.done:
                 emit(out, fmt, units, fields)
                 return
@@ -190,8 +197,31 @@ def stream_grid(ctx: click.Context, grid: Grid, first: Output, compute: Callable
     writer.close()
 
 
+def one_at_a_time(grid: Grid, first: Output, compute: Callable[[], Output]) -> list[Output] | None:
+    """Every combination of a short grid, one call each; None if one fails.
+
+    The vectorised grid decides what a combination without an answer means
+    (a row with its reason, or the command's error), so a failure hands the
+    whole grid back to it and nothing has been written yet.
+    """
+    outs = [first]
+    try:
+        while not grid.done:
+            grid.advance()
+            outs.append(compute())
+    except click.ClickException:
+        return None
+    return outs
+
+
+def emit_all(outs: Sequence[Output], fmt: str, units: str, fields: Sequence[str] = ()) -> None:
+    """Write the outputs of a grid computed one combination at a time through one writer."""
+    writer = open_writer(fmt, units, fields)
+    for out in outs:
+        writer.write(out.rows, out.columns, out.keys, out.footer)
+    writer.close()
+
+
 def emit(out: Output, fmt: str, units: str, fields: Sequence[str] = ()) -> None:
     """Write one command's output: ``--field`` values, or the chosen format."""
-    writer = open_writer(fmt, units, fields)
-    writer.write(out.rows, out.columns, out.keys, out.footer)
-    writer.close()
+    emit_all([out], fmt, units, fields)

@@ -10,6 +10,15 @@ A grid of more than :data:`CHUNK` combinations is not built whole: a
 columns of one slice from the row numbers alone (index arithmetic, the same
 order as :func:`combine`), so memory stays flat however many combinations
 the lists ask for (docs/design.md §3.4).
+
+For JSON, CSV and ``--field`` (a :class:`Grid` made with ``scalar=True``), a
+grid of a few combinations (at most :data:`SCALAR_ROWS`) is computed one
+combination at a time with plain floats instead: the command's formulas then
+run on Python's floats, and a short list (``-N 2.8,4,5.6``) answers without
+importing numpy, whose import costs more than the rows (docs/design.md §7).
+Rows are written as they come, so the output is the same either way
+(``tests/test_scalar_grid.py``). A table keeps the vectorised path: its
+footer and sharp-zone axis are drawn from every row at once.
 """
 
 from __future__ import annotations
@@ -23,6 +32,9 @@ from camtool.render.columnar import values_of
 
 CHUNK = 20_000
 """Combinations computed and written at a time (the chunk of ``--batch`` too)."""
+
+SCALAR_ROWS = 256
+"""The most combinations computed one at a time with plain floats (no numpy)."""
 
 
 def combine(*lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
@@ -67,6 +79,20 @@ def combine_slice(lists: Sequence[Sequence[float]], start: int, stop: int) -> tu
     return len(index), tuple(columns)
 
 
+def one_combination(lists: Sequence[Sequence[float]], index: int) -> list[list[float]]:
+    """Combination ``index`` (0-based) of :func:`combine`'s order, one single-item list per list.
+
+    >>> one_combination([[24.0, 35.0, 50.0], [2.8, 4.0]], 3)
+    [[35.0], [4.0]]
+    """
+    stride = math.prod(len(values) for values in lists)
+    chosen = []
+    for values in lists:
+        stride //= len(values)
+        chosen.append([values[(index // stride) % len(values)]])
+    return chosen
+
+
 class Grid:
     """Which slice of the combinations the current call of a command computes.
 
@@ -77,16 +103,20 @@ class Grid:
     combinations, known once the command has combined its lists.
     """
 
-    def __init__(self, whole: bool = False, chunk: int | None = None) -> None:
+    def __init__(self, whole: bool = False, chunk: int | None = None, scalar: bool = False) -> None:
         self.whole = whole
+        self.scalar_allowed = scalar and not whole
         self.chunk = max(2, chunk if chunk is not None else CHUNK)
         self.start = 0
         self.count: int | None = None
+        self.scalar = False
 
     @property
     def stop(self) -> int:
         """The end of the current slice; a lone last combination joins the slice before it."""
         assert self.count is not None
+        if self.scalar:
+            return self.start + 1
         stop = min(self.start + self.chunk, self.count)
         return self.count if self.count - stop == 1 else stop
 
@@ -104,10 +134,14 @@ class Grid:
         count = math.prod(len(values) for values in lists)
         if self.count is None:
             self.count = count
+            if self.scalar_allowed and 1 < count <= SCALAR_ROWS:  # one combination a call, as plain floats
+                self.scalar = True
         elif count != self.count:
             raise RuntimeError("the list options changed between the chunks of one grid")
         if count == 1:
             return combine(*lists)
+        if self.scalar:
+            return combine(*one_combination(lists, self.start))
         return combine_slice(lists, 0, count) if self.whole else combine_slice(lists, self.start, self.stop)
 
 

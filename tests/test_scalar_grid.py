@@ -1,0 +1,90 @@
+"""A short list of option values is computed one combination at a time with plain floats (no numpy) for JSON,
+CSV and --field; its output is the vectorised path's, byte for byte, on every documented example with a list."""
+
+from __future__ import annotations
+
+import shlex
+import subprocess
+import sys
+
+import pytest
+from cli_helpers import run
+from conftest import point_xdg_at, presets_home
+from test_doc_examples import help_examples
+
+from camtool.cli import grid as grid_module
+
+# every --help example that gives a list option and computes rows (not a file-writing or stdin example)
+LISTED = sorted({line for _, line in help_examples()
+                 if "," in line and "--batch" not in line and "-o " not in line and "--output" not in line
+                 and "|" not in line and "#" not in line and "<" not in line})
+EXTRA = [
+    "camtool dof -f 50 -N 2.8,4,5.6 -s 3m",
+    "camtool dof -f 24,50,85 -N 2.8,8 -s 1m,3m,inf --model auto",
+    "camtool dof -f 100 -N 2.8,8,22 -s 0.4m,1m --pupil-mag 0.6 --model thick --diffraction",
+    "camtool dof --lens dgauss100-lens -N 2,4,8 -s 1m,5m --model auto",
+    "camtool dof -f 50 -N 8 -m 0.5,1,2 --diffraction",
+    "camtool fov -f 8,24,50,85 --sensor aps-c",
+    "camtool hyperfocal -f 14,24,35 -N 2.8,11",
+    "camtool equiv -f 25,50 -N 1.4,2.8 --iso 200 --sensor m43",
+    "camtool flash --gn 40 -N 4,8,16 --iso 100,400",
+    "camtool flash --gn 20 -s 2,5,9 --iso 100",
+    "camtool exposure -N 8,11 -t 1/60,1/30 --iso 400",
+    "camtool focus -f 100 -s 0.5m,1m -N 8,16",
+    "camtool focus -f 50 -m 0.1,0.5",
+    "camtool stars -f 14,24 -N 2.8,4 --pixel-pitch 4um",
+    "camtool compose --subject-size 1.8m --fill 0.8 -N 2.8,8 -f 50,85 --background 20m",
+]
+
+
+@pytest.fixture(autouse=True)
+def isolated(request, monkeypatch, shared_presets_home):
+    root = presets_home(request, shared_presets_home, "tmp_path")
+    point_xdg_at(root, monkeypatch)
+    return root
+
+
+def _args(line: str) -> list[str]:
+    words = shlex.split(line)
+    return words[words.index("camtool") + 1:]
+
+
+def test_the_examples_give_lists() -> None:
+    assert len(LISTED) >= 10, LISTED  # the test below runs over enough of them to mean something
+
+
+@pytest.mark.parametrize("line", LISTED + EXTRA)
+@pytest.mark.parametrize("output", [["--format", "json"], ["--format", "csv"]], ids=["json", "csv"])
+def test_a_short_list_gives_the_vectorised_bytes(line: str, output: list[str],
+                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    args = [a for a in _args(line) if a not in ("--format", "table")] + output
+    one_at_a_time = run(*args)
+    monkeypatch.setattr(grid_module, "SCALAR_ROWS", 1)  # every grid vectorised
+    vectorised = run(*args)
+    assert (one_at_a_time.exit_code, one_at_a_time.stdout, one_at_a_time.stderr) == \
+        (vectorised.exit_code, vectorised.stdout, vectorised.stderr)
+
+
+def test_the_field_of_a_short_list_is_the_same_too(monkeypatch: pytest.MonkeyPatch) -> None:
+    args = ["dof", "-f", "35,50", "-N", "2,5.6,16", "-s", "2m", "--field", "near_mm", "--field", "model"]
+    scalar = run(*args).stdout
+    monkeypatch.setattr(grid_module, "SCALAR_ROWS", 1)
+    assert scalar == run(*args).stdout and len(scalar.splitlines()) == 6
+
+
+def test_a_bad_row_of_a_short_list_ends_the_output_as_a_long_list_does(monkeypatch: pytest.MonkeyPatch) -> None:
+    args = ["dof", "--lens", "nikon-z-50mm-f1.8-s", "-N", "2,4,32", "-s", "3m", "--format", "json"]
+    scalar = run(*args)
+    monkeypatch.setattr(grid_module, "SCALAR_ROWS", 1)
+    vectorised = run(*args)
+    assert scalar.exit_code == vectorised.exit_code == 2
+    assert scalar.stderr == vectorised.stderr and scalar.stdout == vectorised.stdout
+
+
+@pytest.mark.parametrize("output", [["--format", "json"], ["--format", "csv"], ["--field", "near_mm"]])
+def test_a_short_list_imports_no_numpy(output: list[str]) -> None:
+    code = ("import atexit, sys; from camtool.cli import main; "
+            "atexit.register(lambda: print('numpy' in sys.modules, file=sys.stderr)); "
+            "sys.argv = ['camtool', 'dof', '-f', '50', '-N', '2.8,4,5.6', '-s', '3m,5m', *sys.argv[1:]]; main()")
+    done = subprocess.run([sys.executable, "-c", code, *output], capture_output=True, text=True, check=True)
+    assert done.stderr.strip() == "False" and len(done.stdout.splitlines()) >= 6
