@@ -1,7 +1,9 @@
 """Option grids stream in chunks: the same bytes in one piece or in many, in nested-loop order, any size.
 
 The chunk size is made small here (monkeypatched) so that a grid of a few
-dozen combinations goes through the same slicing as a million-row one.
+dozen combinations goes through the same slicing as a million-row one, and
+every grid is vectorised (a short grid is otherwise computed a combination
+at a time: ``tests/test_scalar_grid.py``).
 """
 
 from __future__ import annotations
@@ -35,6 +37,11 @@ GRIDS = [
      "-f", "24,35,50,85,135,200"],
 ]
 OUTPUTS = [["--format", "json"], ["--format", "csv"]]
+
+
+@pytest.fixture(autouse=True)
+def vectorised(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(grid, "SCALAR_ROWS", 1)
 
 
 def _fields(args: list[str]) -> list[str]:

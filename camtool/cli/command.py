@@ -149,11 +149,12 @@ def camtool_command(
             grid = ctx.meta[GRID] = Grid(whole=fmt == "table", scalar=True)
             out = equipped(ctx, **params)
             if grid.scalar:
-                outs = one_at_a_time(grid, out, lambda: equipped(ctx, **params))
+                outs = one_at_a_time(grid, out, lambda: equipped(ctx, **params), fmt == "table")
                 if outs is not None:
                     emit_all(outs, fmt, units, fields)
                     return
-                grid = ctx.meta[GRID] = Grid()  # a row without an answer: the grid as a whole says how
+                # a row without an answer (the grid as a whole says how), or a table drawn only from every row
+                grid = ctx.meta[GRID] = Grid(whole=fmt == "table")
                 out = equipped(ctx, **params)
             if grid.done:
                 emit(out, fmt, units, fields)
@@ -197,21 +198,27 @@ def stream_grid(ctx: click.Context, grid: Grid, first: Output, compute: Callable
     writer.close()
 
 
-def one_at_a_time(grid: Grid, first: Output, compute: Callable[[], Output]) -> list[Output] | None:
-    """Every combination of a short grid, one call each; None if one fails.
+def one_at_a_time(grid: Grid, first: Output, compute: Callable[[], Output], table: bool) -> list[Output] | None:
+    """Every combination of a short grid, one call each (a table: one output drawn from them all); None if one
+    fails or a table cannot be drawn from their plans merged.
 
     The vectorised grid decides what a combination without an answer means
     (a row with its reason, or the command's error), so a failure hands the
     whole grid back to it and nothing has been written yet.
     """
+    if (table and first.redraw is None) or "t_stop" in first.keys:  # a T-stop's row is told from all the rows
+        return None
     outs = [first]
     try:
         while not grid.done:
             grid.advance()
             outs.append(compute())
+        if not table:
+            return outs
+        drawn = first.redraw([out.plan for out in outs]) if all(out.redraw is not None for out in outs) else None
     except click.ClickException:
         return None
-    return outs
+    return None if drawn is None else [drawn]
 
 
 def emit_all(outs: Sequence[Output], fmt: str, units: str, fields: Sequence[str] = ()) -> None:

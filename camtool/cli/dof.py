@@ -23,7 +23,7 @@ from camtool.cli.rows import ZIP
 from camtool.dof.ladder import focal_lengths, model_choices, model_help
 from camtool.plans.cine import ANAMORPHIC_KEYS, with_anamorphic
 from camtool.plans.closeup import CLOSE_UP
-from camtool.plans.dof import dof_table, lens_behind_converter
+from camtool.plans.dof import DofTable, dof_table, lens_behind_converter, merge_tables
 from camtool.render.views.closeup import CLOSEUP_KEYS, DIFFRACTION_KEYS
 from camtool.render.views.common import footer
 from camtool.render.views.dof import FAR_KEYS, dof_view
@@ -94,12 +94,22 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
                           pupil_magnification=pupil_mag, hiatus_mm=hiatus, lens_preset=ctx.meta.get(LENS),
                           extension_mm=extension, teleconverter=teleconverter, diffraction=diffraction,
                           wavelength_nm=wavelength, tolerance=tolerance, criterion=criterion)
-    rows = table.rows
     where = footer(None, cocs, coc_origin, chosen.label, distance_from)
     if squeeze and model != "all":
-        with library_errors(ctx):
-            rows = with_anamorphic(rows, squeeze=squeeze, distance_from=distance_from)
         where += f" · {squeeze:g}× anamorphic: near/far for vertical blur (f as marked), horizontal of f/{squeeze:g}"
-    columns, keys, note = dof_view(table, rows, model=model, anamorphic_keys=ANAMORPHIC_KEYS if squeeze else [],
-                                   diffraction=diffraction, where=where, table_shown=fmt == "table", close_up=CLOSE_UP)
-    return Output(rows, columns, keys, note)
+
+    def drawn(table: DofTable) -> Output:
+        rows = table.rows
+        if squeeze and model != "all":
+            with library_errors(ctx):
+                rows = with_anamorphic(rows, squeeze=squeeze, distance_from=distance_from)
+        columns, keys, note = dof_view(table, rows, model=model, anamorphic_keys=ANAMORPHIC_KEYS if squeeze else [],
+                                       diffraction=diffraction, where=where, table_shown=fmt == "table",
+                                       close_up=CLOSE_UP)
+        return Output(rows, columns, keys, note, table, redraw)
+
+    def redraw(tables: list[DofTable]) -> Output | None:
+        merged = merge_tables(tables)
+        return None if merged is None else drawn(merged)
+
+    return drawn(table)

@@ -11,14 +11,15 @@ columns of one slice from the row numbers alone (index arithmetic, the same
 order as :func:`combine`), so memory stays flat however many combinations
 the lists ask for (docs/design.md §3.4).
 
-For JSON, CSV and ``--field`` (a :class:`Grid` made with ``scalar=True``), a
-grid of a few combinations (at most :data:`SCALAR_ROWS`) is computed one
-combination at a time with plain floats instead: the command's formulas then
-run on Python's floats, and a short list (``-N 2.8,4,5.6``) answers without
-importing numpy, whose import costs more than the rows (docs/design.md §7).
-Rows are written as they come, so the output is the same either way
-(``tests/test_scalar_grid.py``). A table keeps the vectorised path: its
-footer and sharp-zone axis are drawn from every row at once.
+A grid of a few combinations (at most :data:`SCALAR_ROWS`, a :class:`Grid`
+made with ``scalar=True``) is computed one combination at a time with plain
+floats instead: the command's formulas then run on Python's floats, and a
+short list (``-N 2.8,4,5.6``) answers without importing numpy, whose import
+costs more than the rows (docs/design.md §7). JSON, CSV and ``--field`` rows
+are written as they come; a table, whose footer and sharp-zone axis are drawn
+from every row at once, is drawn from the combinations' plans merged (where
+the command can, see :class:`camtool.cli.rows.Output`), else computed
+vectorised. The output is the same either way (``tests/test_scalar_grid.py``).
 """
 
 from __future__ import annotations
@@ -105,7 +106,7 @@ class Grid:
 
     def __init__(self, whole: bool = False, chunk: int | None = None, scalar: bool = False) -> None:
         self.whole = whole
-        self.scalar_allowed = scalar and not whole
+        self.scalar_allowed = scalar
         self.chunk = max(2, chunk if chunk is not None else CHUNK)
         self.start = 0
         self.count: int | None = None
@@ -135,7 +136,7 @@ class Grid:
         if self.count is None:
             self.count = count
             if self.scalar_allowed and 1 < count <= SCALAR_ROWS:  # one combination a call, as plain floats
-                self.scalar = True
+                self.scalar, self.whole = True, False
         elif count != self.count:
             raise RuntimeError("the list options changed between the chunks of one grid")
         if count == 1:

@@ -27,6 +27,12 @@ class Output(NamedTuple):
     columns: Sequence[Column]
     keys: Sequence[str]
     footer: str = ""
+    plan: Any = None
+    """The plan's result the output was drawn from, for :attr:`redraw`."""
+    redraw: Any = None
+    """``redraw(merged, plans)``: the output of several combinations' plans at once (a short grid's table,
+    computed a combination at a time), drawn from the plan ``merged`` of them, or None when they cannot be
+    merged; None here: the table is computed vectorised."""
 
 
 

@@ -11,6 +11,7 @@ is the rule for a prescription behind a teleconverter.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any, NamedTuple
 
 from camtool.dof.ladder import LensData, depth_of_field, hyperfocal_rung
@@ -46,6 +47,27 @@ class DofTable(NamedTuple):
     by_magnification: bool
     lens_focus_setting: bool
     reference_model: str
+
+
+def merge_tables(tables: Sequence[DofTable]) -> DofTable | None:
+    """The table of several scenes computed one at a time, as one call over all of them gives it; None when the
+    scenes took different paths (the close-up planner for some), or for ``--model all``.
+
+    >>> one = dof_table(model="thin", focal_length_mm=50.0, f_number=8.0, wanted=3000.0, coc_mm=0.03)
+    >>> two = dof_table(model="thin", focal_length_mm=50.0, f_number=16.0, wanted=3000.0, coc_mm=0.03)
+    >>> merged = merge_tables([one, two])
+    >>> [row["f_number"] for row in merged.rows], merged.path
+    ([8.0, 16.0], 'direct')
+    """
+    first = tables[0]
+    if any((t.path, t.by_magnification, t.lens_focus_setting, t.reference_model)
+           != (first.path, first.by_magnification, first.lens_focus_setting, "") for t in tables):
+        return None
+    rungs = {t.hyperfocal_model for t in tables} - {None}  # the H rung, where some row's limits came from another
+    return DofTable([row for t in tables for row in t.rows], first.path, any(t.close for t in tables),
+                    any(t.focus_column for t in tables), rungs.pop() if len(rungs) == 1 else None,
+                    frozenset().union(*(t.dominated_by for t in tables)), first.by_magnification,
+                    first.lens_focus_setting, "") if len(rungs) <= 1 else None
 
 
 def lens_behind_converter(lens: LensData | None, *, teleconverter: float | None, model: str,
