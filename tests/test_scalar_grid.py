@@ -84,7 +84,7 @@ def _untimed(out: str) -> str:
     header = out.split("\n", 1)[0].split(",")
     if "time_per_evaluation_s" in header:  # CSV
         at = header.index("time_per_evaluation_s")
-        out = "\n".join(",".join(cells[:at] + ["T"] + cells[at + 1:]) if len(cells) > at else line
+        out = "\n".join(",".join([*cells[:at], "T", *cells[at + 1:]]) if len(cells) > at else line
                         for line in out.split("\n") for cells in [line.split(",")])
     out = re.sub(r"[0-9.]+ [µm]?s\b", "T", out)
     return re.sub("─+", "─", re.sub(" +", " ", out)) if "time/eval" in out else out  # a time's width moves columns
