@@ -4,6 +4,7 @@ byte, on every documented example with a list."""
 
 from __future__ import annotations
 
+import os
 import re
 import shlex
 import subprocess
@@ -106,11 +107,19 @@ def test_a_bad_row_of_a_short_list_ends_the_output_as_a_long_list_does(monkeypat
     assert scalar.stderr == vectorised.stderr and scalar.stdout == vectorised.stdout
 
 
-@pytest.mark.parametrize("output", [["--format", "json"], ["--format", "csv"], ["--field", "near_mm"],
-                                    ["--format", "table"], ["--model", "auto", "--pupil-mag", "0.7"]])
-def test_a_short_list_imports_no_numpy(output: list[str]) -> None:
+DOF = ["dof", "-f", "50", "-N", "2.8,4,5.6", "-s", "3m,5m"]
+FOV = ["fov", "-f", "24,50,85", "-s", "2m,5m"]
+HYPERFOCAL = ["hyperfocal", "-f", "24,35", "-N", "8,11,16"]
+
+
+@pytest.mark.parametrize("command", [
+    [*DOF, "--format", "json"], [*DOF, "--format", "csv"], [*DOF, "--field", "near_mm"], [*DOF, "--format", "table"],
+    [*DOF, "--model", "auto", "--pupil-mag", "0.7"], [*FOV, "--format", "json"], [*FOV, "--field", "horizontal_deg"],
+    FOV, HYPERFOCAL, [*HYPERFOCAL, "--format", "csv"]], ids=lambda c: " ".join(c))
+def test_a_short_list_imports_no_numpy(command: list[str]) -> None:
     code = ("import atexit, sys; from camtool.cli import main; "
             "atexit.register(lambda: print('numpy' in sys.modules, file=sys.stderr)); "
-            "sys.argv = ['camtool', 'dof', '-f', '50', '-N', '2.8,4,5.6', '-s', '3m,5m', *sys.argv[1:]]; main()")
-    done = subprocess.run([sys.executable, "-c", code, *output], capture_output=True, text=True, check=True)
+            "sys.argv = ['camtool', *sys.argv[1:]]; main()")
+    done = subprocess.run([sys.executable, "-c", code, *command], capture_output=True, text=True, check=True,
+                          env={**os.environ, "COLUMNS": "200"})
     assert done.stderr.strip() == "False" and len(done.stdout.splitlines()) >= 6

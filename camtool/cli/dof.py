@@ -108,8 +108,8 @@ def dof(ctx: click.Context, focal_length, f_number, exact_stops, distance, magni
                                        close_up=CLOSE_UP)
         return Output(rows, columns, keys, note, table, redraw)
 
-    def redraw(tables: list[DofTable]) -> Output | None:
-        merged = merge_tables(tables)
+    def redraw(outputs: list[Output]) -> Output | None:
+        merged = merge_tables([out.plan for out in outputs])
         return None if merged is None else drawn(merged)
 
     return drawn(table)

@@ -18,6 +18,7 @@ from camtool.cli.options import (
     squeeze_option,
 )
 from camtool.cli.params import flatten
+from camtool.cli.rows import joined
 from camtool.geometry.projection import PROJECTIONS
 from camtool.plans.fov import field_of_view
 from camtool.render.views.fov import DISTANCE_KEYS, KEYS, fov_view
@@ -83,4 +84,4 @@ def fov(ctx: click.Context, focal_length, distance, magnification, extension, te
                              teleconverter=teleconverter, squeeze=squeeze, projection=projection)
     columns, keys, note = fov_view(seen, table=fmt == "table", squeeze=squeeze, sensor=chosen, lens_note=lens_note,
                                    distance_from=distance_from)
-    return Output(rows_from(count, seen.values), columns, keys, note)
+    return Output(rows_from(count, seen.values), columns, keys, note, redraw=joined)

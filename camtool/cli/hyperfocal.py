@@ -17,6 +17,7 @@ from camtool.cli.options import (
     library_errors,
     sensor_options,
 )
+from camtool.cli.rows import joined
 from camtool.dof.ladder import hyperfocal_choices, hyperfocal_help
 from camtool.plans.depth import hyperfocal_plan
 from camtool.render.views.common import footer
@@ -71,4 +72,4 @@ def hyperfocal(ctx: click.Context, focal_length, f_number, exact_stops, sensor, 
         "coc_mm": c, "model": result.model, "distance_from": distance_from,
     })
     note = footer(result.model, cocs, coc_origin, chosen.label, distance_from) if fmt == "table" else ""
-    return Output(rows, COLUMNS, KEYS, note)
+    return Output(rows, COLUMNS, KEYS, note, redraw=joined)

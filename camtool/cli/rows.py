@@ -30,9 +30,17 @@ class Output(NamedTuple):
     plan: Any = None
     """The plan's result the output was drawn from, for :attr:`redraw`."""
     redraw: Any = None
-    """``redraw(merged, plans)``: the output of several combinations' plans at once (a short grid's table,
-    computed a combination at a time), drawn from the plan ``merged`` of them, or None when they cannot be
-    merged; None here: the table is computed vectorised."""
+    """``redraw(outputs)``: one output of the outputs of a short grid's combinations, each computed on its own
+    (a table is drawn from every row at once), or None when they cannot make one; None here: a table of a grid
+    is computed vectorised. :func:`joined` for a command whose columns and footer depend on its options alone."""
+
+
+def joined(outputs: Sequence[Output]) -> Output | None:
+    """The rows of ``outputs`` under their columns, keys and footer, when every output has the same ones."""
+    first = outputs[0]
+    if any((out.columns, out.keys, out.footer) != (first.columns, first.keys, first.footer) for out in outputs):
+        return None
+    return first._replace(rows=[row for out in outputs for row in out.rows])
 
 
 
