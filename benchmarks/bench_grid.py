@@ -21,7 +21,8 @@ import sys
 import tempfile
 import time
 
-WHOLE = "import sys; from camtool.cli import grid, main; grid.CHUNK = 10**9; sys.argv[0] = 'camtool'; main()"
+WHOLE = ("import sys; from camtool.plans import grid; from camtool.cli import main; grid.CHUNK = 10**9; "
+         "sys.argv[0] = 'camtool'; main()")
 
 
 def measure(args: list[str]) -> tuple[float, float, int]:

@@ -15,9 +15,9 @@ import random
 import pytest
 from cli_helpers import run
 
-from camtool.cli import grid
 from camtool.cli.command import MAX_TABLE_ROWS
-from camtool.cli.grid import Grid, combine, combine_slice
+from camtool.plans import grid
+from camtool.plans.grid import Grid, combine, combine_slice
 
 GRIDS = [
     ["dof", "-f", "24,50,85", "-N", "1.4,2.8,8,16", "-s", "0.5m,2m,10m,inf", "--coc", "0.03,0.02"],

@@ -16,7 +16,7 @@ from conftest import point_xdg_at, presets_home
 from test_cli_grid import GRIDS
 from test_doc_examples import help_examples
 
-from camtool.cli import grid as grid_module
+from camtool.plans import grid as grid_module
 
 # every --help example that gives a list option and computes rows (not a file-writing or stdin example)
 LISTED = sorted({line for _, line in help_examples()

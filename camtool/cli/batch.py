@@ -40,13 +40,13 @@ from typing import Any
 
 import click
 
-from camtool.cli.grid import CHUNK as GRID_CHUNK
 from camtool.cli.params import FNumberType, LengthType, NumberType, _ListType, flatten
 from camtool.cli.rows import CELLS, ZIP, Output, open_writer
 from camtool.core.files import FileProblem
 from camtool.core.ranges import F_NUMBER
 from camtool.core.records import CAMERA_DATA_COLUMNS, Chunk, camera_cells, chunks, floats, group_rows, open_source, unit_column
 from camtool.core.units import plain_number
+from camtool.plans.grid import CHUNK as GRID_CHUNK
 from camtool.render.columnar import ColumnRows, placed, write_block
 from camtool.render.columns import TEXT, Column
 from camtool.render.output import RowWriter

@@ -11,7 +11,7 @@ never prints.
 In a batch, rows of the input file are zipped into the list options instead
 of combined: :func:`combine_params` does either, as the context says. A grid
 of combinations larger than one chunk is streamed: the command is called once
-per chunk of :data:`camtool.cli.grid.CHUNK` combinations, each chunk written
+per chunk of :data:`camtool.plans.grid.CHUNK` combinations, each chunk written
 as it comes, as ``--batch`` does with its input rows.
 """
 
@@ -24,9 +24,9 @@ from typing import Any
 
 import click
 
-from camtool.cli.grid import Grid
 from camtool.cli.options import file_completion, preset_completion, stack
 from camtool.cli.rows import DYNAMIC_KEYS, ZIP, Output, check_fields, open_writer
+from camtool.plans.grid import Grid
 from camtool.render.output import FORMATS
 
 MAX_TABLE_ROWS = 100_000
@@ -38,7 +38,7 @@ MAX_COMBINATIONS = 2**63 - 1
 """The most combinations of any grid: row numbers are 64-bit integers."""
 
 GRID = "camtool.grid"
-"""The ``ctx.meta`` key of the :class:`~camtool.cli.grid.Grid` a command run on the command line walks."""
+"""The ``ctx.meta`` key of the :class:`~camtool.plans.grid.Grid` a command run on the command line walks."""
 
 
 def combine_params(ctx: click.Context, *lists: Sequence[float]) -> tuple[int, tuple[Any, ...]]:
