@@ -114,6 +114,35 @@ def batch_options(function: Callable[..., Any]) -> Callable[..., Any]:
                              "units; other columns are passed through to the output.")(function)
 
 
+class Command(click.Command):
+    """A click command whose parser reads a known short option (``-f 50``, ``-N8``) as short at once.
+
+    click's parser tries every option as a long one first; a short one then
+    fails that match, which looks for close matches (importing ``difflib``)
+    and builds an error, before it is read as short: about a millisecond of
+    every command's start-up (docs/design.md §7). The parse is the same
+    (``tests/test_short_options.py``); a parser without the parts this relies
+    on, or a context that normalises tokens, is used as click makes it.
+    """
+
+    def make_parser(self, ctx: click.Context) -> Any:
+        parser: Any = super().make_parser(ctx)
+        parts = ("_short_opt", "_long_opt", "_opt_prefixes", "_process_opts", "_match_short_opt")
+        if not all(hasattr(parser, name) for name in parts) or ctx.token_normalize_func is not None:
+            return parser
+        shorts, longs, prefixes = parser._short_opt, parser._long_opt, parser._opt_prefixes
+        process, short = parser._process_opts, parser._match_short_opt
+
+        def process_opts(arg: str, state: Any) -> None:
+            if "=" not in arg and arg[:2] in shorts and arg[:2] not in prefixes and arg not in longs:
+                short(arg, state)
+            else:
+                process(arg, state)
+
+        parser._process_opts = process_opts
+        return parser
+
+
 def camtool_command(
     name: str, keys: Sequence[str] = (), batch: bool = True
 ) -> Callable[[Callable[..., Output]], click.Command]:
@@ -164,7 +193,7 @@ def camtool_command(
         wrapped: Callable[..., Any] = equipment_options(output_options(run))
         if batch:
             wrapped = batch_options(wrapped)
-        command = click.command(name)(click.pass_context(wrapped))
+        command = click.command(name, cls=Command)(click.pass_context(wrapped))
         command.output_keys = frozenset(keys)  # type: ignore[attr-defined]
         command.output_key_list = list(keys)  # type: ignore[attr-defined]
         return command
