@@ -69,8 +69,7 @@ class LensData:
 NO_LENS = LensData()
 
 
-@dataclass(frozen=True)
-class Rung:
+class Rung(NamedTuple):
     """One model of the ladder.
 
     ``run(f, N, c, s, plane, lens, focus)`` returns :class:`camtool.dof.limits.DofLimits`
