@@ -14,12 +14,12 @@ from camtool.cli.options import (
     distance_plane_option,
     focal_option,
     library_errors,
+    projection_option,
     sensor_options,
     squeeze_option,
 )
 from camtool.cli.params import flatten
 from camtool.cli.rows import joined
-from camtool.geometry.projection import PROJECTIONS
 from camtool.plans.fov import field_of_view
 from camtool.render.views.fov import DISTANCE_KEYS, KEYS, fov_view
 
@@ -35,9 +35,7 @@ from camtool.render.views.fov import DISTANCE_KEYS, KEYS, fov_view
 @squeeze_option
 @distance_plane_option
 @lens_geometry_options
-@click.option("--projection", type=click.Choice(PROJECTIONS), default=None,
-              help="The lens's mapping (default: the --lens preset's, else rectilinear); a fisheye covers at most "
-                   "its field (the preset's, else 180°).")
+@projection_option
 def fov(ctx: click.Context, focal_length, distance, magnification, extension, teleconverter, sensor, crop, squeeze,
         distance_from, pupil_mag, hiatus, projection, fmt, units, preset_files) -> Output:
     """Angle of view (horizontal, vertical, diagonal) and the field covered at a distance.

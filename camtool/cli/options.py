@@ -358,3 +358,12 @@ def show_length(mm: float, metres: bool = False) -> str:
     if metres and abs(mm) >= 1000:
         return f"{mm / 1000:.4g} m"
     return f"{mm:.4g} mm"
+
+
+def projection_option(function: Callable[..., Any]) -> Callable[..., Any]:
+    """``--projection``: the lens's mapping, rectilinear or a fisheye's."""
+    from camtool.geometry.projection import PROJECTIONS
+
+    return click.option("--projection", type=click.Choice(PROJECTIONS), default=None,
+                        help="The lens's mapping (default: the --lens preset's, else rectilinear); a fisheye covers "
+                             "at most its field (the preset's, else 180°).")(function)

@@ -38,6 +38,7 @@ from camtool.core.errors import DomainError, require, require_positive
 __all__ = [
     "FISHEYE_FIELD_DEG",
     "PROJECTIONS",
+    "fill_magnification",
     "fisheye_angle_of_view_deg",
     "fisheye_field_of_view",
     "fisheye_field_size_mm",
@@ -230,3 +231,51 @@ def fisheye_field_size_mm(angle_deg: Any, lens_distance_mm: Any) -> Any:
     with quiet(xp):
         size = 2.0 * lens_distance_mm * xp.tan(xp.radians(xp.minimum(angle_deg, 179.0) / 2.0))
     return xp.where(angle_deg >= 180.0, xp.inf, size)
+
+
+def fill_magnification(focal_length_mm: Any, subject_size_mm: Any, fill: Any, frame_mm: Any, projection: str) -> Any:
+    """The magnification m at the centre of the frame at which a centred flat subject S fills F of a frame dimension h.
+
+    The subject's edges image at r = F·h/2 from the centre. Under ``projection``
+    they lie at the angle θ the mapping gives for r at the focal length in
+    effect f(1 + m) (as :func:`fisheye_angle_of_view_deg` takes it), so the
+    subject is u = (S/2)/tan θ in front of the lens and m = f/(u − f), the thin
+    lens's magnification at u: the fixed point of these, from m = 0 (focus at
+    infinity). Rectilinear gives m = F·h/S (the fixed point at once).
+
+    A subject whose edges would lie at 90° or beyond (a flat subject cannot
+    fill that much of a fisheye's frame) or closer than f is a
+    :class:`DomainError` on ``fill``.
+
+    Examples
+    --------
+    A 1.8 m subject filling 0.8 of a 24 mm frame height with a 15 mm equisolid
+    fisheye: r = 9.6 mm, at infinity focus θ = 2·asin(9.6/30) = 37.3° and
+    u = 0.9 m/tan θ = 1.18 m; the focal length in effect there, f(1 + m),
+    takes θ to 36.8° and the subject to 1.20 m:
+
+    >>> m = fill_magnification(15.0, 1800.0, 0.8, 24.0, "equisolid")
+    >>> round(15.0 * (1.0 + 1.0 / m))
+    1201
+    """
+    check_projection(projection)
+    require_positive("focal_length_mm", focal_length_mm)
+    require_positive("subject_size_mm", subject_size_mm)
+    require("fill", fill, (fill > 0) & (fill <= 1), "in (0, 1]")
+    require_positive("frame_mm", frame_mm)
+    xp = ops(focal_length_mm, subject_size_mm, fill, frame_mm)
+    r, half = fill * frame_mm / 2.0, subject_size_mm / 2.0
+    m = 0.0 * (focal_length_mm * r)
+    for _ in range(200):
+        theta = xp.radians(_half_angle(r, focal_length_mm * (1.0 + m), projection, xp))
+        if not bool(xp.all(theta < math.pi / 2.0)):
+            raise DomainError("fill", fill, "less than the frame a flat subject can fill: its edges would lie at "
+                                            "90° or beyond")
+        u = half / xp.tan(theta)
+        if not bool(xp.all(u > focal_length_mm)):
+            raise DomainError("fill", fill, "a fill that puts the subject beyond the front focal point")
+        following = focal_length_mm / (u - focal_length_mm)
+        if bool(xp.all(xp.fabs(following - m) <= 1e-15 * following)):
+            return following
+        m = following
+    raise DomainError("fill", fill, "a fill whose magnification converges")

@@ -40,7 +40,8 @@ def lenses(*, focal_lengths_mm: list[float], f_numbers: list[float], teleconvert
 def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: float, reference_focal_length_mm: float,
             magnification: Any = None, subject_size_mm: float | None = None, fill: float | None = None,
             frame_mm: float | None = None, f_number: Any = None, coc_mm: Any = None, distance_from: str = "sensor",
-            background_mm: float | None = None, foreground_mm: float | None = None) -> dict[str, Any]:
+            background_mm: float | None = None, foreground_mm: float | None = None, projection: str = "rectilinear",
+            field_max_deg: float | None = None) -> dict[str, Any]:
     """Every row of ``camtool compose`` by key (scalars or arrays, one per scene).
 
     The magnification is ``magnification``, or ``subject_size_mm`` filling
@@ -52,6 +53,13 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
     against ``reference_focal_length_mm``, visible width and blur disc; a
     foreground beyond the front focal point is a :class:`DomainError` on
     ``foreground_mm``.
+
+    Under a fisheye ``projection`` (at most ``field_max_deg``) the subject's
+    edges lie where the mapping puts them
+    (:func:`camtool.geometry.projection.fill_magnification`), the angles are
+    the mapping's at that focus and the fields 2u·tan(α/2), as ``camtool fov``
+    gives them; ``magnification`` and the blur are those at the centre of the
+    frame (the thin lens at u), a plane's visible width is its field.
 
     50 mm at 1:10 from the lens: u = f(1 + 1/m) = 550 mm.
 
@@ -68,8 +76,23 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
     f, n, c = focal_length_mm, f_number, coc_mm
     values: dict[str, Any] = {"f_number": n, "coc_mm": c, "distance_from": distance_from,
                               "background_mm": background_mm, "foreground_mm": foreground_mm}
-    m = magnification if magnification is not None else magnification_for_fill(subject_size_mm, fill, frame_mm)
+    fisheye = projection != "rectilinear"
+    if magnification is not None:
+        m = magnification
+    elif fisheye:
+        from camtool.geometry.projection import fill_magnification
+
+        m = fill_magnification(f, subject_size_mm, fill, frame_mm, projection)
+    else:
+        m = magnification_for_fill(subject_size_mm, fill, frame_mm)
     shot = composition(f, m, sensor_width_mm, sensor_height_mm)
+    if fisheye:
+        from camtool.geometry.projection import fisheye_field_of_view, fisheye_field_size_mm
+
+        angles = fisheye_field_of_view(sensor_width_mm, sensor_height_mm, f, projection, m, 1.0, field_max_deg)
+        shot = shot._replace(horizontal_deg=angles.horizontal_deg, vertical_deg=angles.vertical_deg,
+                             field_width_mm=fisheye_field_size_mm(angles.horizontal_deg, shot.lens_distance_mm),
+                             field_height_mm=fisheye_field_size_mm(angles.vertical_deg, shot.lens_distance_mm))
     distance = shot.distance_mm if distance_from == "sensor" else shot.lens_distance_mm
     values.update({key: getattr(shot, key) for key in ("focal_length_mm", "magnification", "horizontal_deg",
                                                         "vertical_deg", "field_width_mm", "field_height_mm")})
@@ -92,6 +115,8 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
                 raise
             raise DomainError(f"{name}_mm", given, "less than the distance from the subject to the lens's front "
                               "focal point") from None
-        values.update({f"{name}_scale": view.scale, f"{name}_width_mm": view.visible_width_mm,
+        visible = view.visible_width_mm if not fisheye else fisheye_field_size_mm(
+            shot.horizontal_deg, shot.lens_distance_mm + offset)
+        values.update({f"{name}_scale": view.scale, f"{name}_width_mm": visible,
                        f"{name}_blur_mm": view.blur_mm, f"{name}_blur_pct": view.blur_pct})
     return values

@@ -36,7 +36,7 @@ def _plane_columns(name: str, short: str) -> list[Column]:
 def compose_view(*, apertures: bool, background: bool, foreground: bool, table: bool, magnifications: Sequence[float],
                  subject_size_mm: float | None, fill: float | None, fill_axis: str, reference_mm: float,
                  cocs: Sequence[float] | None, coc_origin: str, sensor_label: str, distance_from: str,
-                 squeeze: float | None) -> tuple[list[Column], str]:
+                 squeeze: float | None, projection: str = "rectilinear") -> tuple[list[Column], str]:
     """(columns, footer) of a composition: the planes asked for, the subject, the scale's reference, the CoC."""
     from camtool.render.views.common import footer
 
@@ -49,5 +49,6 @@ def compose_view(*, apertures: bool, background: bool, foreground: bool, table: 
                else f"subject {(subject_size_mm or 0.0) / 1000:g} m fills {fill:g} of the {fill_axis}")
     scale = f"scale vs {reference_mm:g} mm" if background or foreground else ""
     anamorphic = f"{squeeze:g}× anamorphic: widths de-squeezed, blur discs vertical" if squeeze else ""
+    mapping = f"{projection} projection: m and blur at the centre" if projection != "rectilinear" else ""
     return shown, footer("thin" if apertures else None, cocs, coc_origin, sensor_label, distance_from,
-                         " · ".join(part for part in (subject, scale, anamorphic) if part))
+                         " · ".join(part for part in (subject, scale, anamorphic, mapping) if part))
