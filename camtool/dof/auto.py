@@ -132,7 +132,9 @@ def estimate_effects(
     Returns
     -------
     Effects
-        Relative errors in the measure of :func:`depth_error`.
+        Relative errors in the measure of :func:`depth_error`; a term that is
+        exactly 0 for every scene (P = 1, no hiatus, no Airy disc, no
+        prescription, a distance from the lens) is the plain number 0.0.
 
     Examples
     --------
@@ -150,30 +152,43 @@ def estimate_effects(
     xp = ops(f, f_number, coc_mm, distance_mm, p, delta, airy_mm)
     if geometry is None:
         geometry = focus_geometry(f, distance_mm, distance_from, delta)
+    # a symmetric lens (P = 1), no hiatus and no Airy disc leave their terms exactly 0: not computed
+    symmetric, no_hiatus = _is(p, 1.0), _is(delta, 0.0)
     with quiet(xp):
         u_e = xp.minimum(geometry.object_mm, f * f / nc + f)
         w = u_e - f
         m = f / w
         a = nc * w / (f * f)
         approximation = 0.5 * m
-        e = xp.fabs(f - f / p)
-        pupil = e * (1.0 + a) / (2.0 * u_e) * (1.0 + 1.5 * e / u_e)
+        if symmetric:
+            pupil: Any = 0.0
+        else:
+            e = xp.fabs(f - f / p)
+            pupil = e * (1.0 + a) / (2.0 * u_e) * (1.0 + 1.5 * e / u_e)
         if distance_from == "sensor":
             ratio = (u_e + geometry.image_mm + delta) / u_e
             plane = ratio * ratio - 1.0
-            grow = (1.0 + m * m) * (1.0 + a) * (1.0 + a) - 1.0
-            shrink = xp.where(a < 1.0, xp.fabs((1.0 + m * m) * (1.0 - a) * (1.0 - a) - 1.0), 0.0)
-            hiatus = xp.fabs(delta) / (2.0 * a * u_e) * xp.maximum(xp.fabs(grow), shrink)
+            if no_hiatus:
+                hiatus: Any = 0.0
+            else:
+                grow = (1.0 + m * m) * (1.0 + a) * (1.0 + a) - 1.0
+                shrink = xp.where(a < 1.0, xp.fabs((1.0 + m * m) * (1.0 - a) * (1.0 - a) - 1.0), 0.0)
+                hiatus = xp.fabs(delta) / (2.0 * a * u_e) * xp.maximum(xp.fabs(grow), shrink)
         else:
-            plane = hiatus = 0.0 * m
-        diffraction = diffraction_share(coc_mm, airy_mm)
+            plane = hiatus = 0.0
+        diffraction = 0.0 if _is(airy_mm, 0.0) else diffraction_share(coc_mm, airy_mm)
     if prescription is None:
-        aberrations = 0.0 * m
+        aberrations = 0.0
     else:
         aberrations = aberration_share(prescription, f_number, m)
         if distance_from == "sensor":
             aberrations = aberrations + focus_shift_share(prescription, f, f_number, coc_mm, geometry)
     return Effects(approximation, plane, pupil, hiatus, diffraction, aberrations)
+
+
+def _is(value: Any, number: float) -> bool:
+    """Whether ``value`` is the plain number ``number`` (an array is never taken for one)."""
+    return isinstance(value, (int, float)) and value == number
 
 
 def focus_shift_share(prescription: Any, focal_length_mm: Any, f_number: Any, coc_mm: Any, geometry: Any) -> Any:
