@@ -274,3 +274,18 @@ def test_a_contrast_criterion_on_a_prescription_gives_one_answer_by_option_and_a
     (wave,) = run_json("dof", "--prescription", "telephoto127", "-N", "11", "-s", "3", "--model", "wave",
                        "--criterion", "mtf:0.3@20")
     assert wave["near_mm"] == option["near_mm"] and wave["far_mm"] == option["far_mm"]
+
+
+@pytest.mark.parametrize("lens", [["--lens", "telephoto127-lens"], ["--lens", "dgauss100-lens"]])
+def test_hyperfocal_by_contrast_on_a_prescription_is_the_wavefronts_h_dof_reports(lens: list[str]) -> None:
+    """hyperfocal and dof's H column by a contrast criterion on a real lens: the one wave+prescription H."""
+    (h,) = run_json("hyperfocal", *lens, "-N", "8", "--criterion", "mtf:0.3@coc")
+    assert h["model"] == "wave+prescription"
+    for distance in ("3", "20", f"{h['hyperfocal_mm']!r}mm"):
+        (row,) = run_json("dof", *lens, "-N", "8", "-s", distance, "--criterion", "mtf:0.3@coc")
+        assert row["model"] == h["model"]
+        # the far limit's search ends within 1e-7 of its step, so H agrees to that search's tolerance
+        assert row["hyperfocal_mm"] == pytest.approx(h["hyperfocal_mm"], rel=1e-9)
+    assert row["far_mm"] is None and row["near_mm"] == pytest.approx(h["near_mm"], rel=1e-9)  # focused at H
+    (thin,) = run_json("hyperfocal", *lens, "-N", "8", "--criterion", "mtf:0.3@coc", "--model", "thin")
+    assert thin["model"] == "thin"  # a geometric rung named keeps its closed form

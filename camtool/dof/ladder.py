@@ -288,7 +288,10 @@ def hyperfocal(
     focal_length_mm, f_number, coc_mm : float or array, all > 0
     distance_from : ``"sensor"`` or ``"lens"``
     lens : LensData or None
-        Pupil magnification and hiatus (a prescription is not used).
+        Pupil magnification and hiatus; a prescription (in air) only by
+        contrast, where ``wave`` traces its wavefront (``wave+prescription``,
+        the H ``depth_of_field`` reports for it); the geometric rungs take its
+        first-order data.
 
     References
     ----------
@@ -308,6 +311,8 @@ def hyperfocal(
     p, delta = known if known is not None else (1.0, 0.0)
     data = LensData(pupil_magnification=p, hiatus_mm=delta) if (p, delta) != (1.0, 0.0) else None
     by_contrast = model == "wave" or (model == "auto" and (diffraction or criterion is not None))
+    if by_contrast and lens is not None and rungs.traceable(lens):
+        data = lens  # by contrast the real lens's wavefront, as depth_of_field's wave rung takes it
     rung = "wave" if by_contrast else hyperfocal_rung(lens) if model == "auto" else model
     extra = {"diffraction": diffraction and not by_contrast, "wavelength_nm": wavelength_nm, "criterion": criterion}
     at_infinity = depth_of_field(rung, focal_length_mm, f_number, coc_mm, float("inf"), distance_from, lens=data,
