@@ -49,6 +49,12 @@ CITED = [
     ("nikon-z-dx-12-28mm-f3.5-5.6-pz-vr", 28, 190, None, (5.6, 25), 0.21),
     # review copy: 0.7m, or 28 inches, 0.08x; f/1
     ("fujifilm-xf50mm-f1-r-wr", 50, 700, 0.08, (1, None), 0.08),
+    # Head Topics: 0.8 meters at 200mm and 3.3m at 800mm, 0.25x at 200mm and 0.2x at 800mm; f/6.3-9
+    ("canon-rf-200-800mm-f6.3-9-is-usm", 200, 800, 0.25, (6.3, None), 0.25),
+    ("canon-rf-200-800mm-f6.3-9-is-usm", 800, 3300, 0.2, (9, None), 0.25),
+    # Ken Rockwell: 5.9'/1.8m close focus, 0.16x macro ratio; The Digital Picture: 0.16x; f/2.8
+    ("canon-rf-100-300mm-f2.8l-is-usm", 100, 1800, None, (2.8, None), 0.16),
+    ("canon-rf-100-300mm-f2.8l-is-usm", 300, 1800, None, (2.8, None), 0.16),
 ]
 
 
