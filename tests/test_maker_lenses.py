@@ -44,24 +44,24 @@ CITED = [
     # Photography Life: 0.2 m at 28mm, 1.2 m at 400mm, 0.35x at 28mm (1:2.9); f/4-8; f/22 at 28mm, f/45 at 400mm
     ("nikon-z-28-400mm-f4-8-vr", 28, 200, 0.35, (4, 22), 0.35),
     ("nikon-z-28-400mm-f4-8-vr", 400, 1200, None, (8, 45), 0.35),
-    # Photography Life: 0.19 meters, 0.21x (1:4.8), no focal length given; f/3.5 and f/16 at 12mm, f/5.6 and
-    # f/25 at 28mm (a zoom without rows: its one closest focus and magnification, None for the focal length)
-    ("nikon-z-dx-12-28mm-f3.5-5.6-pz-vr", 12, 190, 0.21, (3.5, 16), 0.21),
-    ("nikon-z-dx-12-28mm-f3.5-5.6-pz-vr", 28, 190, 0.21, (5.6, 25), 0.21),
+    # Photography Life: 0.19 meters and 0.21x (1:4.8), no focal length given (the distance entered at both ends);
+    # f/3.5 and f/16 at 12mm, f/5.6 and f/25 at 28mm
+    ("nikon-z-dx-12-28mm-f3.5-5.6-pz-vr", 12, 190, None, (3.5, 16), 0.21),
+    ("nikon-z-dx-12-28mm-f3.5-5.6-pz-vr", 28, 190, None, (5.6, 25), 0.21),
     # review copy: 0.7m, or 28 inches, 0.08x; f/1
     ("fujifilm-xf50mm-f1-r-wr", 50, 700, 0.08, (1, None), 0.08),
     # Head Topics: 0.8 meters at 200mm and 3.3m at 800mm, 0.25x at 200mm and 0.2x at 800mm; f/6.3-9
     ("canon-rf-200-800mm-f6.3-9-is-usm", 200, 800, 0.25, (6.3, None), 0.25),
     ("canon-rf-200-800mm-f6.3-9-is-usm", 800, 3300, 0.2, (9, None), 0.25),
     # Ken Rockwell: 5.9'/1.8m close focus, 0.16x macro ratio; The Digital Picture: 0.16x; f/2.8
-    ("canon-rf-100-300mm-f2.8l-is-usm", 100, 1800, 0.16, (2.8, None), 0.16),
-    ("canon-rf-100-300mm-f2.8l-is-usm", 300, 1800, 0.16, (2.8, None), 0.16),
+    ("canon-rf-100-300mm-f2.8l-is-usm", 100, 1800, None, (2.8, None), 0.16),
+    ("canon-rf-100-300mm-f2.8l-is-usm", 300, 1800, None, (2.8, None), 0.16),
     # Wikipedia: aperture 4.5 (32.0) - 5.6 (40.0); close-dist 0.98 m; max-mag (0.35x)
-    ("sony-fe-100-400mm-f4.5-5.6-gm-oss", 100, 980, 0.35, (4.5, 32), 0.35),
-    ("sony-fe-100-400mm-f4.5-5.6-gm-oss", 400, 980, 0.35, (5.6, 40), 0.35),
+    ("sony-fe-100-400mm-f4.5-5.6-gm-oss", 100, 980, None, (4.5, 32), 0.35),
+    ("sony-fe-100-400mm-f4.5-5.6-gm-oss", 400, 980, None, (5.6, 40), 0.35),
     # Wikipedia: aperture 4.5 - 22.0; close-dist 0.9 m; max-mag 1:3 (0.31x); f/5.6 at 300 mm from the name
-    ("sony-fe-70-300mm-f4.5-5.6-g-oss", 70, 900, 0.31, (4.5, 22), 0.31),
-    ("sony-fe-70-300mm-f4.5-5.6-g-oss", 300, 900, 0.31, (5.6, 22), 0.31),
+    ("sony-fe-70-300mm-f4.5-5.6-g-oss", 70, 900, None, (4.5, 22), 0.31),
+    ("sony-fe-70-300mm-f4.5-5.6-g-oss", 300, 900, None, (5.6, 22), 0.31),
 ]
 
 
@@ -75,12 +75,8 @@ def test_figures_against_the_cited_pages(lens_id, focal, distance, magnification
     record = _record(lens_id)
     zoom = "focal_min_mm" in record
     long_end = zoom and focal == record["focal_max_mm"]
-    if zoom and "close_focus" in record:
+    if zoom:
         row = next(r for r in record["close_focus"] if r["focal_length_mm"] == focal)
-    elif zoom:
-        # one closest focus and magnification for the whole zoom, at no published focal length
-        assert record["focal_min_mm"] <= focal <= record["focal_max_mm"]
-        row = record
     else:
         assert record["focal_length_mm"] == focal
         row = record
@@ -134,10 +130,6 @@ def test_the_model_never_magnifies_more_than_the_page_says(lens_id):
     # every row of a zoom (and every focal length between two rows) reaches at its closest focus no more
     # than the page's maximum; a prime reaches exactly its published figure there
     lens = load_db().lens(lens_id)
-    if lens.is_zoom and not lens.close_focus:
-        # no focal length published for the zoom's one closest focus: no focusing model is made up for it
-        assert all(focus_model(lens, f) is None for f in (lens.focal_min_mm, lens.focal_max_mm))
-        return
     for f in _focal_lengths(lens):
         model = focus_model(lens, f)
         m, _ = internal_focus_at_distance(model, model.min_focus_mm)
@@ -179,19 +171,3 @@ def test_apertures_outside_the_published_range_are_refused():
     (row,) = run_json("dof", "--lens", "z-28-400", "-f", "400", "-N", "45", "-s", "5m")
     assert row["near_mm"] < 5000.0 < row["far_mm"]
 
-
-@pytest.mark.parametrize("lens_id", [r["id"] for r in RECORDS if "focal_min_mm" in r and "close_focus" not in r])
-def test_a_zoom_with_one_closest_focus_refuses_closer_at_both_ends(lens_id):
-    # The page gives one closest focus for the whole zoom: no focal length is allowed closer than it. Without a
-    # focusing model camtool also keeps a focal length at least 4 f away (unit focusing reaches 1:1 there),
-    # so the nearest distance accepted is the larger of the two.
-    lens = load_db().lens(lens_id)
-    for f in (lens.focal_min_mm, lens.focal_max_mm):
-        n = f"{lens.widest_f_number(f):g}"
-        nearest_mm = max(lens.min_focus_mm, 4 * f)
-        (row,) = run_json("dof", "--lens", lens_id, "-f", f"{f:g}", "-N", n, "-s", f"{nearest_mm * 1.05:g}mm")
-        assert row["near_mm"] < nearest_mm * 1.05 < row["far_mm"]
-        result = run("dof", "--lens", lens_id, "-f", f"{f:g}", "-N", n, "-s", f"{lens.min_focus_mm * 0.9:g}mm")
-        assert result.exit_code == 2, (lens_id, f)
-        if lens.min_focus_mm >= 4 * f:
-            assert f"{lens.min_focus_mm / 1000:.4g} m" in result.output
