@@ -248,6 +248,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     # 208 mm at those ends; 0.15 m with 1:2 about 33 mm for the 35 mm prime
     ("tamron-35-150mm-f2-2.8-di-iii-vxd", 150.0), ("tamron-150-500mm-f5-6.7-di-iii-vc-vxd", 150.0),
     ("tamron-70-300mm-f4.5-6.3-di-iii-rxd", 300.0), ("tamron-35mm-f2.8-di-iii-osd-m1-2", 35.0),
+    # maker-lenses.yaml: 2 m with 0.16x and 0.7 m with 0.08x imply about 238 mm and 48 mm (internal focusing)
+    ("sony-fe-300mm-f2.8-gm-oss", 300.0), ("fujifilm-xf50mm-f1-r-wr", 50.0),
+    # 0.8 m with 0.25x and 3.3 m with 0.2x imply about 128 mm and 458 mm at the ends of the RF 200-800
+    ("canon-rf-200-800mm-f6.3-9-is-usm", 200.0), ("canon-rf-200-800mm-f6.3-9-is-usm", 800.0),
 }
 
 
