@@ -116,8 +116,11 @@ def test_the_cine_lens_file_s_sets_load_member_by_member():
         assert lens.squeeze == record.get("squeeze") and lens.notes
         assert lens.approximate == record.get("approximate", False)
         assert lens.approximate or "http" in lens.source
-        if "set" not in record:  # a single cinema lens
-            assert not lens.members and lens.focal_min_mm == float(record["focal_length_mm"])
+        if "set" not in record:  # a single cinema lens, or a zoom
+            ends = (record.get("focal_min_mm", record.get("focal_length_mm")),
+                    record.get("focal_max_mm", record.get("focal_length_mm")))
+            assert not lens.members and (lens.focal_min_mm, lens.focal_max_mm) == tuple(map(float, ends))
+            assert (lens.t_number_min, lens.min_focus_mm) == (record["t_number_min"], record["min_focus_mm"])
             continue
         rows = [(float(r["focal_length_mm"]), r.get("t_number_min"), r.get("min_focus_mm")) for r in record["set"]]
         assert [(m.focal_min_mm, m.t_number_min, m.min_focus_mm) for m in lens.members] == rows
@@ -191,6 +194,32 @@ def test_a_member_refuses_a_stop_wider_than_its_own(lens, focal, faster, widest)
     result = run("dof", "--lens", lens, "-f", focal, "-N", faster, "-s", "3m")
     assert result.exit_code == 2 and widest in result.stderr and result.stderr.count("\n") == 1
     assert run("dof", "--lens", lens, "-f", focal, "-N", widest, "-s", "3m").exit_code == 0
+
+
+# Cinema zooms as the table prints them: (short end, long end, widest T-stop, closest focus mm); its notes say
+# 'ARRI technical data' for the Signature Zooms and 'ZEISS (Cinema Zoom) brochure' for the CZ.2s.
+CITED_ZOOMS = {
+    "arri-signature-zoom-16-32mm-t2.8": (16, 32, 2.8, 450),  # 'MOD = 0.45 m'
+    "arri-signature-zoom-24-75mm-t2.8": (24, 75, 2.8, 700),  # minFocusMeters 0.7
+    "arri-signature-zoom-45-135mm-t2.8": (45, 135, 2.8, 1000),  # '1 m MOD'
+    "arri-signature-zoom-65-300mm-t2.8": (65, 300, 2.8, 1800),  # '1.8 m MOD from sensor plane'
+    "zeiss-cz2-15-30mm-t2.9": (15, 30, 2.9, 550),
+    "zeiss-cz2-28-80mm-t2.9": (28, 80, 2.9, 830),
+    "zeiss-cz2-70-200mm-t2.9": (70, 200, 2.9, 1520),
+}
+
+
+@pytest.mark.parametrize("lens_id", sorted(CITED_ZOOMS))
+def test_each_cine_zoom_holds_its_cited_range_stop_and_close_focus(lens_id):
+    lens = load_db().lens(lens_id)
+    short, long, stop, closest = CITED_ZOOMS[lens_id]
+    assert lens.is_zoom and not lens.members and lens.category == "cine"
+    assert (lens.focal_min_mm, lens.focal_max_mm, lens.t_number_min, lens.min_focus_mm) == (short, long, stop, closest)
+    assert closest > 4 * long  # the thin lens's 4f at the long end, where it is largest
+    for focal in (short, long):  # one close focus over the range: reached at both ends, refused 1 cm closer
+        args = ("dof", "--lens", lens_id, "-f", str(focal), "-N", f"T{stop}")
+        assert run(*args, "-s", f"{closest}mm").exit_code == 0
+        assert run(*args, "-s", f"{closest - 10}mm").exit_code == 2
 
 
 def test_the_vazen_anamorphic_carries_its_squeeze_stop_and_close_focus():
