@@ -56,9 +56,25 @@ NOMINAL = [
     ("leica-q3-43", "full-frame", None),
 ]
 
+# (phone, sensor preset of its main module): phones, whose sensor sizes are derived (see the sensor presets).
+PHONES = [
+    ("xiaomi-15-ultra", "1-inch-phone"),
+    ("apple-iphone-air", "1-1.56-inch"),
+]
+
+
+@pytest.mark.parametrize(("camera", "sensor_id"), PHONES)
+def test_phones_name_their_main_module(camera, sensor_id):
+    db = load_db()
+    body = db.camera(camera)
+    assert body.category == "phone" and body.mount == "fixed lens" and body.approximate
+    assert body.sensor.id == sensor_id
+    assert body.lens_id == f"{camera}-main"
+    assert db.lens(body.lens_id).sensor_id == sensor_id
+
 
 def added_camera_ids() -> set[str]:
-    return {row[0] for row in CONFIRMED} | {row[0] for row in NOMINAL}
+    return {row[0] for row in CONFIRMED} | {row[0] for row in NOMINAL} | {row[0] for row in PHONES}
 
 
 @pytest.mark.parametrize(("camera", "width", "height", "across", "down", "mount", "category"), CONFIRMED)
@@ -92,46 +108,93 @@ def test_every_added_body_cites_a_page_or_the_file_read():
         assert "https://" in source or "open-product-data/digital-cameras" in source, camera
 
 
-def test_the_bgh1s_crop_does_not_fit_its_sensor():
-    # Why the BGH1 has no pixel counts: DPReview's 3680 x 2760 against its 19.2 x 13 mm gives pitches
-    # more than the consistency test's 1.5 % apart.
-    assert (19.2 / 3680) / (13.0 / 2760) == pytest.approx(1.108, abs=0.001)
-
-
 # --- phone-lenses.yaml -----------------------------------------------------------------------------
 
-# (lens, focal length mm, widest f-number, stated 35 mm equivalent mm) as the cited pages print them:
-# Trevor Tan and Camera West: "APO-Summicron 43mm f/2 ASPH" on the full-frame Q3 43.
+# (lens, camera, widest f-number, stated 35 mm equivalent mm) as the cited pages print them.
 LENSES = [
-    ("leica-q3-43-lens", 43.0, 2.0, 43.0),
+    # Trevor Tan and Camera West: "APO-Summicron 43mm f/2 ASPH" on the full-frame Q3 43.
+    ("leica-q3-43-lens", "leica-q3-43", 2.0, 43.0),
+    # HotHardware: "1-inch 50MP Sony LYT-900 ... 23mm lens ... f/1.63"; "1/2.51-inch Samsung JN5 is now a
+    # 14 mm f/2.2 lens"; "1/2.51-inch IMX858 telephoto ... a 75 mm f/1.8 piece"; "200MP Samsung HP9 f/2.6
+    # 1/1.4-inch"; Digital Camera World (before the launch): "a 100mm (equivalent) lens with an f/2.6 aperture".
+    ("xiaomi-15-ultra-main", "xiaomi-15-ultra", 1.63, 23.0),
+    ("xiaomi-15-ultra-ultra-wide", "xiaomi-15-ultra", 2.2, 14.0),
+    ("xiaomi-15-ultra-telephoto", "xiaomi-15-ultra", 1.8, 75.0),
+    ("xiaomi-15-ultra-periscope", "xiaomi-15-ultra", 2.6, 100.0),
+    # The Verge (quoted by Briefly): "a 48-megapixel sensor with a 26mm-equivalent f/1.6 lens".
+    ("apple-iphone-air-main", "apple-iphone-air", 1.6, 26.0),
+]
+
+# (sensor preset, optical type in inches as the page names it): sized by the type rule, diagonal = 2/3 inch / type.
+TYPE_RULE = [
+    ("1-inch-phone", 1.0),  # HotHardware: "1-inch 50MP Sony LYT-900"
+    ("1-1.4-inch", 1.4),  # HotHardware: "200MP Samsung HP9 f/2.6 1/1.4-inch sensor"
+    ("1-2.51-inch", 2.51),  # HotHardware: "1/2.51-inch IMX858", "1/2.51-inch Samsung JN5"
 ]
 
 
-@pytest.mark.parametrize(("lens_id", "focal", "f_number", "equivalent"), LENSES)
-def test_built_in_lenses_against_their_pages(lens_id, focal, f_number, equivalent):
-    lens = load_db().lens(lens_id)
-    assert (lens.focal_min_mm, lens.f_number_min) == (focal, f_number)
-    assert lens.mount == "fixed lens"
-    # left out where no page gives them, and the notes say so
-    assert lens.min_focus_mm is None and lens.f_number_max is None
-    assert "min_focus_mm not found" in lens.notes and "f_number_max not found" in lens.notes
+def phone_lens_records() -> dict[str, dict]:
+    text = (ROOT / "lens_db" / "phone-lenses.yaml").read_text(encoding="utf-8")
+    return {record["id"]: record for record in yaml.safe_load(text)["lenses"]}
 
 
-@pytest.mark.parametrize(("lens_id", "focal", "f_number", "equivalent"), LENSES)
-def test_the_camera_brings_its_lens_and_its_stated_equivalent(lens_id, focal, f_number, equivalent):
+@pytest.mark.parametrize(("lens_id", "camera", "f_number", "equivalent"), LENSES)
+def test_built_in_lenses_against_their_pages(lens_id, camera, f_number, equivalent):
     db = load_db()
-    (camera,) = [c for c in db.all("camera") if c.lens_id == lens_id]
-    (row,) = run_json("fov", "--camera", camera.id)
-    assert row["focal_length_mm"] == focal
-    # the equivalent fov prints is the stated one, within rounding of the published figure
+    lens = db.lens(lens_id)
+    assert lens.f_number_min == f_number
+    assert phone_lens_records()[lens_id]["equivalent_focal_length_mm"] == equivalent
+    assert lens.mount == "fixed lens"
+    if lens.category == "phone":
+        # a module's focal length is derived from the stated equivalent and the sensor (no page gives it): flagged
+        assert lens.approximate and "derived" in lens.notes
+    sensor = db.sensor(lens.sensor_id) if lens.sensor_id in {s.id for s in db.all("sensor")} else db.camera(camera).sensor
+    crop = FULL_FRAME_DIAGONAL_MM / math.hypot(sensor.width_mm, sensor.height_mm)
+    assert lens.focal_min_mm * crop == pytest.approx(equivalent, rel=0.005)
+
+
+def test_figures_no_page_gives_are_left_out():
+    q3 = load_db().lens("leica-q3-43-lens")
+    assert q3.min_focus_mm is None and q3.f_number_max is None
+    assert "min_focus_mm not found" in q3.notes and "f_number_max not found" in q3.notes
+    periscope = load_db().lens("xiaomi-15-ultra-periscope")
+    # the 100 mm was printed only before the launch; the review of the phone as sold gives 4.3x of the 23 mm main
+    assert "not confirmed" in periscope.notes.lower()
+    equivalent = phone_lens_records()["xiaomi-15-ultra-periscope"]["equivalent_focal_length_mm"]
+    assert equivalent == pytest.approx(4.3 * 23, rel=0.02)
+
+
+@pytest.mark.parametrize(("lens_id", "camera", "f_number", "equivalent"), LENSES)
+def test_the_camera_resolves_its_modules_and_their_stated_equivalents(lens_id, camera, f_number, equivalent):
+    db = load_db()
+    body = db.camera(camera)
+    if body.lens_id == lens_id:
+        # the camera's own lens: --camera alone brings it
+        (row,) = run_json("fov", "--camera", camera)
+    else:
+        (row,) = run_json("fov", "--camera", camera, "--lens", lens_id)
+    assert row["focal_length_mm"] == db.lens(lens_id).focal_min_mm
+    # the equivalent fov prints is the published one, within rounding
     assert row["equivalent_focal_length_mm"] == pytest.approx(equivalent, abs=0.5)
-    crop = FULL_FRAME_DIAGONAL_MM / math.hypot(camera.sensor.width_mm, camera.sensor.height_mm)
-    assert focal * crop == pytest.approx(equivalent, rel=0.03)
+
+
+@pytest.mark.parametrize(("sensor_id", "inch_type"), TYPE_RULE)
+def test_phone_formats_sized_by_their_type(sensor_id, inch_type):
+    sensor = load_db().sensor(sensor_id)
+    # "approximately the diagonal length of the sensor multiplied by 3/2", at 4:3
+    assert sensor.diagonal_mm == pytest.approx(25.4 / inch_type * 2 / 3, rel=0.002)
+    assert sensor.width_mm / sensor.height_mm == pytest.approx(4 / 3, rel=0.005)
+    assert sensor.approximate and sensor.category == "phone"
 
 
 def test_phone_lenses_file_holds_only_fixed_lenses_named_by_a_camera():
-    lenses = yaml.safe_load((ROOT / "lens_db" / "phone-lenses.yaml").read_text(encoding="utf-8"))["lenses"]
-    named = {c.lens_id for c in load_db().all("camera") if c.lens_id}
+    lenses = list(phone_lens_records().values())
     assert {lens["id"] for lens in lenses} == {row[0] for row in LENSES}
+    cameras = {row[1] for row in LENSES}
     for lens in lenses:
-        assert lens["mount"] == "fixed lens" and lens["id"] in named, lens["id"]
+        assert lens["mount"] == "fixed lens", lens["id"]
+        assert any(lens["id"].startswith(camera) for camera in cameras), lens["id"]
+    # each phone and compact names its main module or its lens
+    db = load_db()
+    for camera in cameras:
+        assert db.camera(camera).lens_id in {lens["id"] for lens in lenses}, camera
