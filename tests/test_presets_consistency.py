@@ -126,6 +126,9 @@ def test_every_phone_has_every_rear_module():
         "samsung-galaxy-s23-ultra": ("main", "ultra-wide", "3x", "10x"),
         "samsung-galaxy-s24-ultra": ("main", "ultra-wide", "3x", "5x"),
         "samsung-galaxy-s25-ultra": ("main", "ultra-wide", "3x", "5x"),
+        # phone-lenses.yaml
+        "xiaomi-15-ultra": ("main", "ultra-wide", "telephoto", "periscope"),
+        "apple-iphone-air": ("main",),
     }
     # Every shipped phone is listed, so a new phone cannot ship without its modules.
     phones = {camera.id for camera in load_db().all("camera") if camera.category == "phone"}
