@@ -248,6 +248,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     # 208 mm at those ends; 0.15 m with 1:2 about 33 mm for the 35 mm prime
     ("tamron-35-150mm-f2-2.8-di-iii-vxd", 150.0), ("tamron-150-500mm-f5-6.7-di-iii-vc-vxd", 150.0),
     ("tamron-70-300mm-f4.5-6.3-di-iii-rxd", 300.0), ("tamron-35mm-f2.8-di-iii-osd-m1-2", 35.0),
+    # third-party-lenses.yaml, the later additions: 0.5 m with 1:7.2 implies about 54 mm for the Sigma 60mm DN
+    ("sigma-60mm-f2.8-dn-art", 60.0),
 }
 
 

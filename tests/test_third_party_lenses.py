@@ -80,11 +80,49 @@ CITED = [
     # a user's blog: 15 cm
     ("laowa-10-18mm-f4.5-5.6-fe-zoom", 10, 150, None, (4.5, None)),
     ("laowa-10-18mm-f4.5-5.6-fe-zoom", 18, 150, None, (5.6, None)),
+    # Phototrend: 17 cm and 0.26x at 20 mm, 29 cm and 0.20x at 40 mm, f/2.8 to f/22
+    ("tamron-20-40mm-f2.8-di-iii-vxd", 20, 170, 0.26, (2.8, 22)),
+    ("tamron-20-40mm-f2.8-di-iii-vxd", 40, 290, 0.20, (2.8, 22)),
+    # Samuel Colombo: F1.4 to F16, 27.6 cm, 1:7.1
+    ("sigma-20mm-f1.4-dg-hsm-art", 20, 276, 1 / 7.1, (1.4, 16)),
+    # siam-breeze (Sigma's page): F1.8, F22, 20 cm, 1:4
+    ("sigma-20mm-f1.8-ex-dg-aspherical-rf", 20, 200, 1 / 4, (1.8, 22)),
+    # Wetpixel: f/2.8, 19.7 in (50 cm), 1:7.2
+    ("sigma-60mm-f2.8-dn-art", 60, 500, 1 / 7.2, (2.8, None)),
+    # Sigma UK: f3.5-4, f22-27, 0.5 m; its 1:6.15 has no focal length and is kept at lens level
+    ("sigma-zoom-28-70mm-f3.5-4-uc", 28, 500, None, (3.5, 22)),
+    ("sigma-zoom-28-70mm-f3.5-4-uc", 70, 500, None, (4, 27)),
+    # fisheyes: Nikon School Italia and Dante Stella (f/8 to f/22, no focusing); Nikon School Italia;
+    # Nikon's manual (f/2.8); syaraku / pt4pano (f/3.5)
+    ("nikon-fisheye-nikkor-8mm-f8", 8, None, None, (8, 22)),
+    ("nikon-fisheye-nikkor-7.5mm-f5.6", 7.5, None, None, (5.6, None)),
+    ("nikon-fisheye-nikkor-6mm-f5.6", 6, None, None, (5.6, None)),
+    ("nikon-fisheye-nikkor-8mm-f2.8", 8, None, None, (2.8, None)),
+    ("sigma-8mm-f3.5-ex-dg-circular-fisheye", 8, None, None, (3.5, None)),
+]
+
+# (lens, projection, field_max_deg) as the page each fisheye's source names them
+FISHEYES = [
+    ("sigma-15mm-f1.4-dg-dn-diagonal-fisheye-art", "equisolid", 180),
+    ("nikon-fisheye-nikkor-8mm-f8", "equidistant", 180),  # Nikon School Italia: equidistant, 180°
+    ("nikon-fisheye-nikkor-7.5mm-f5.6", "equidistant", 180),  # Nikon School Italia: equidistant, 180°
+    ("nikon-fisheye-nikkor-6mm-f5.6", "equidistant", 220),  # Nikon School Italia: equidistant, 220°
+    ("nikon-fisheye-nikkor-8mm-f2.8", "equidistant", 180),  # Nikon's manual: y = f·θ, 180°
+    ("sigma-8mm-f3.5-ex-dg-circular-fisheye", "equisolid", 180),  # Wikipedia (ja): Sigma's are equisolid
 ]
 
 
 def test_every_entry_is_checked_against_its_page():
     assert {lens_id for lens_id, *_ in CITED} == {r["id"] for r in RECORDS}
+    assert {lens_id for lens_id, *_ in FISHEYES} == {r["id"] for r in RECORDS if r["category"] == "fisheye"}
+
+
+@pytest.mark.parametrize(("lens_id", "projection", "field"), FISHEYES, ids=[f[0] for f in FISHEYES])
+def test_fisheye_mappings_against_the_cited_pages(lens_id, projection, field):
+    record = _record(lens_id)
+    assert (record["projection"], record["field_max_deg"]) == (projection, field)
+    lens = load_db().lens(lens_id)
+    assert (lens.projection, lens.field_max_deg) == (projection, float(field))
 
 
 @pytest.mark.parametrize(("lens_id", "focal", "distance", "magnification", "apertures"), CITED,
@@ -175,3 +213,52 @@ def test_dof_runs_with_a_third_party_zoom_and_refuses_closer_than_its_closest_fo
     result = run("dof", "--lens", "tamron-150-500", "-f", "500", "-N", "8", "-s", "1.5m")
     assert result.exit_code == 2
     assert "1.8 m" in result.output
+
+
+@pytest.mark.parametrize(("lens_id", "focal", "published_deg", "rounding"), [
+    # Phototrend: 94°30' at 20 mm, 56°49' at 40 mm (to the minute)
+    ("tamron-20-40", 20, 94 + 30 / 60, 1 / 60),
+    ("tamron-20-40", 40, 56 + 49 / 60, 1 / 60),
+    # siam-breeze / bruno.cracco: 94.5° on 24 x 36
+    ("sigma-20-1.8-ex", 20, 94.5, 0.05),
+    # Sigma UK: field of view 75-34° (whole degrees)
+    ("sigma-28-70-uc", 28, 75, 0.5),
+    ("sigma-28-70-uc", 70, 34, 0.5),
+])
+def test_diagonal_angle_of_view_against_the_cited_pages(lens_id, focal, published_deg, rounding):
+    (row,) = run_json("fov", "--lens", lens_id, "-f", str(focal))
+    assert row["projection"] == "rectilinear"
+    assert abs(row["diagonal_deg"] - published_deg) <= rounding + 1e-9
+
+
+def test_nikon_eight_mm_f8_draws_its_hemisphere_in_the_circle_its_user_measured():
+    # Dante Stella: a 180° circle 24 mm across on film; Nikon School Italia: equidistant. An equidistant
+    # 8 mm puts 90° at 8·π/2 = 12.57 mm (a 25.1 mm circle, 4.7 % more than the 24 mm read off the film);
+    # on full frame the circle overfills the 24 mm height: 2·(12/8) rad = 171.9° vertically
+    assert 2 * image_height_mm(8.0, 90.0, "equidistant") == pytest.approx(24.0, rel=0.05)
+    (row,) = run_json("fov", "--lens", "fisheye-nikkor-8mm-f8")
+    assert (row["horizontal_deg"], row["diagonal_deg"], row["projection"]) == (180.0, 180.0, "equidistant")
+    assert row["vertical_deg"] == pytest.approx(2 * math.degrees(12 / 8), rel=1e-12)
+
+
+def test_nikon_circular_fisheyes_fit_inside_the_full_frame():
+    # 7.5 mm equidistant: a 7.5·π = 23.6 mm circle; 6 mm over 220°: 6·220·π/180 = 23.0 mm; both inside 24 mm
+    for lens_id, field in (("fisheye-nikkor-7.5mm", 180.0), ("fisheye-nikkor-6mm-f5.6", 220.0)):
+        lens = load_db().lens(lens_id)
+        assert 2 * image_height_mm(lens.focal_length_mm, field / 2, "equidistant") < 24.0
+        (row,) = run_json("fov", "--lens", lens_id)
+        assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (field, field, field)
+
+
+def test_sigma_8mm_circle_points_to_the_equisolid_mapping():
+    # syaraku.org: a 22 mm circle on 35 mm film, about the Four Thirds diagonal. Equisolid 8 mm: 22.6 mm
+    # (3 % more); equidistant: 25.1 mm (14 % more) — why the entry takes equisolid (approximate)
+    assert 2 * image_height_mm(8.0, 90.0, "equisolid") == pytest.approx(22.0, rel=0.03)
+    assert 2 * image_height_mm(8.0, 90.0, "equidistant") > 22.0 * 1.1
+    (row,) = run_json("fov", "--lens", "sigma-8-fisheye")
+    assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (180.0, 180.0, 180.0)
+    # on Four Thirds (17.3 x 13 mm) the circle nearly spans the diagonal: 4·asin(10.82/16) = 170°
+    (row,) = run_json("fov", "--lens", "sigma-8-fisheye", "--sensor", "four-thirds")
+    half_diagonal = math.hypot(17.3, 13) / 2
+    assert row["diagonal_deg"] == pytest.approx(4 * math.degrees(math.asin(half_diagonal / 16)), rel=1e-9)
+    assert 2 * half_diagonal == pytest.approx(22.0, rel=0.03)
