@@ -89,9 +89,28 @@ CITED = [
     ("sigma-20mm-f1.8-ex-dg-aspherical-rf", 20, 200, 1 / 4, (1.8, 22)),
     # Wetpixel: f/2.8, 19.7 in (50 cm), 1:7.2
     ("sigma-60mm-f2.8-dn-art", 60, 500, 1 / 7.2, (2.8, None)),
-    # Sigma UK: f3.5-4, f22-27, 0.5 m; its 1:6.15 has no focal length and is kept at lens level
+    # Sigma UK: f3.5-4, f22-27, 0.5 m; its 1:6.15 has no focal length and is kept at lens level (checked below)
     ("sigma-zoom-28-70mm-f3.5-4-uc", 28, 500, None, (3.5, 22)),
     ("sigma-zoom-28-70mm-f3.5-4-uc", 70, 500, None, (4, 27)),
+    # Nikon Rumors / Light and Matter: f/16, 28 cm, 0.23x (kept at lens level)
+    ("sigma-18-35mm-f1.8-dc-hsm-art", 18, 280, None, (1.8, 16)),
+    ("sigma-18-35mm-f1.8-dc-hsm-art", 35, 280, None, (1.8, 16)),
+    # Nikonmag (Sigma UK): 12.3 in (31.2 cm) at 1:1
+    ("sigma-105mm-f2.8-ex-dg-os-hsm-macro", 105, 312, 1.0, (2.8, None)),
+    # Bob Atkins: f2.8 - f32, 1:1, 0.3 m
+    ("tamron-sp-90mm-f2.8-di-vc-usd-macro-f004", 90, 300, 1.0, (2.8, 32)),
+    # The Phoblographer (Tamron's site): 0.29 m, f/2.8 to f/32; 1:1
+    ("tamron-sp-af-90mm-f2.8-di-macro-272e", 90, 290, 1.0, (2.8, 32)),
+    # Fotografidigitali: 23 cm for 1:1; SlashGear: f/2
+    ("tamron-sp-af-60mm-f2-di-ii-ld-if-macro", 60, 230, 1.0, (2, None)),
+    # erphotoreview: 0.14 m, 1:1
+    ("tokina-at-x-m35-pro-dx-35mm-f2.8-macro", 35, 140, 1.0, (2.8, None)),
+    # Les Numériques / Photography Blog: 0.49 m, f/3.5-6.3, f/22-40; 1:3.5 kept at lens level
+    ("tamron-28-300mm-f3.5-6.3-di-vc-pzd", 28, 490, None, (3.5, 22)),
+    ("tamron-28-300mm-f3.5-6.3-di-vc-pzd", 300, 490, None, (6.3, 40)),
+    # DPReview / Photo Review: 0.39 m; 0.34x kept at lens level
+    ("tamron-16-300mm-f3.5-6.3-di-ii-vc-pzd-macro", 16, 390, None, (3.5, None)),
+    ("tamron-16-300mm-f3.5-6.3-di-ii-vc-pzd-macro", 300, 390, None, (6.3, None)),
     # fisheyes: Nikon School Italia and Dante Stella (f/8 to f/22, no focusing); Nikon School Italia;
     # Nikon's manual (f/2.8); syaraku / pt4pano (f/3.5)
     ("nikon-fisheye-nikkor-8mm-f8", 8, None, None, (8, 22)),
@@ -221,6 +240,8 @@ def test_dof_runs_with_a_third_party_zoom_and_refuses_closer_than_its_closest_fo
     ("tamron-20-40", 40, 56 + 49 / 60, 1 / 60),
     # siam-breeze / bruno.cracco: 94.5° on 24 x 36
     ("sigma-20-1.8-ex", 20, 94.5, 0.05),
+    # Bob Atkins (Tamron's table): 27°02' on full frame
+    ("tamron-f004", 90, 27 + 2 / 60, 1 / 60),
     # Sigma UK: field of view 75-34° (whole degrees)
     ("sigma-28-70-uc", 28, 75, 0.5),
     ("sigma-28-70-uc", 70, 34, 0.5),
@@ -262,3 +283,20 @@ def test_sigma_8mm_circle_points_to_the_equisolid_mapping():
     half_diagonal = math.hypot(17.3, 13) / 2
     assert row["diagonal_deg"] == pytest.approx(4 * math.degrees(math.asin(half_diagonal / 16)), rel=1e-9)
     assert 2 * half_diagonal == pytest.approx(22.0, rel=0.03)
+
+
+@pytest.mark.parametrize(("lens_id", "magnification"), [
+    ("sigma-zoom-28-70mm-f3.5-4-uc", 1 / 6.15),  # Sigma UK: 1:6.15
+    ("sigma-18-35mm-f1.8-dc-hsm-art", 0.23),  # Nikon Rumors (Fotoradce): 0.23x
+    ("tamron-28-300mm-f3.5-6.3-di-vc-pzd", 1 / 3.5),  # Photography Blog: 1:3.5 (Les Numériques: 0.29x)
+    ("tamron-16-300mm-f3.5-6.3-di-ii-vc-pzd-macro", 0.34),  # DPReview: 0.34x
+])
+def test_a_zooms_single_published_magnification_is_its_lens_level_maximum(lens_id, magnification):
+    # a page giving one magnification without its focal length: it bounds every row, none claims it
+    record = _record(lens_id)
+    assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    assert all("max_magnification" not in row for row in record["close_focus"])
+    lens = load_db().lens(lens_id)
+    for f in (lens.focal_min_mm, (lens.focal_min_mm + lens.focal_max_mm) / 2, lens.focal_max_mm):
+        model = focus_model(lens, f)
+        assert internal_focus_at_distance(model, model.min_focus_mm)[0] <= record["max_magnification"] * (1 + 1e-9)
