@@ -250,6 +250,9 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("tamron-70-300mm-f4.5-6.3-di-iii-rxd", 300.0), ("tamron-35mm-f2.8-di-iii-osd-m1-2", 35.0),
     # third-party-lenses.yaml, the later additions: 0.5 m with 1:7.2 implies about 54 mm for the Sigma 60mm DN
     ("sigma-60mm-f2.8-dn-art", 60.0),
+    # 0.27 m with 1:4.5 at 50 mm and 4.0 m with 1:9.5 imply about 40 mm and 345 mm (Tamron 17-50mm A16,
+    # Sigma APO 400mm)
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50.0), ("sigma-400mm-f5.6-apo", 400.0),
 }
 
 

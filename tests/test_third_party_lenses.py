@@ -111,6 +111,26 @@ CITED = [
     # DPReview / Photo Review: 0.39 m; 0.34x kept at lens level
     ("tamron-16-300mm-f3.5-6.3-di-ii-vc-pzd-macro", 16, 390, None, (3.5, None)),
     ("tamron-16-300mm-f3.5-6.3-di-ii-vc-pzd-macro", 300, 390, None, (6.3, None)),
+    # Tamron Australia: 0.27 m throughout, 1:4.5 at 50 mm; SLR Lens Review: f/2.8-f/32
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 17, 270, None, (2.8, 32)),
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50, 270, 1 / 4.5, (2.8, 32)),
+    # Professional Photographer: 0.29 m over the range; 1:4.8 kept at lens level
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-vc-b005", 17, 290, None, (2.8, None)),
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-vc-b005", 50, 290, None, (2.8, None)),
+    # Wikipedia: f/4.5/22 - f/5.6/29, 24 cm; 1:7.8 kept at lens level
+    ("sigma-8-16mm-f4.5-5.6-dc-hsm", 8, 240, None, (4.5, 22)),
+    ("sigma-8-16mm-f4.5-5.6-dc-hsm", 16, 240, None, (5.6, 29)),
+    # dptnt.com: 0.24 m; 1:6.7 kept at lens level
+    ("sigma-10-20mm-f4-5.6-ex-dc-hsm", 10, 240, None, (4, None)),
+    ("sigma-10-20mm-f4-5.6-ex-dc-hsm", 20, 240, None, (5.6, None)),
+    # SLR Lens Review: 30 cm, f/22, 1:8 at 24 mm
+    ("tokina-at-x-124-pro-dx-12-24mm-f4", 12, 300, None, (4, 22)),
+    ("tokina-at-x-124-pro-dx-12-24mm-f4", 24, 300, 1 / 8, (4, 22)),
+    # DPReview: 95 cm (no magnification published)
+    ("sigma-50-100mm-f1.8-dc-hsm-art", 50, 950, None, (1.8, None)),
+    ("sigma-50-100mm-f1.8-dc-hsm-art", 100, 950, None, (1.8, None)),
+    # Lennart Verhoeven: 5.6 to 22, 4.0 m, 1:9.5
+    ("sigma-400mm-f5.6-apo", 400, 4000, 1 / 9.5, (5.6, 22)),
     # fisheyes: Nikon School Italia and Dante Stella (f/8 to f/22, no focusing); Nikon School Italia;
     # Nikon's manual (f/2.8); syaraku / pt4pano (f/3.5)
     ("nikon-fisheye-nikkor-8mm-f8", 8, None, None, (8, 22)),
@@ -290,6 +310,9 @@ def test_sigma_8mm_circle_points_to_the_equisolid_mapping():
     ("sigma-18-35mm-f1.8-dc-hsm-art", 0.23),  # Nikon Rumors (Fotoradce): 0.23x
     ("tamron-28-300mm-f3.5-6.3-di-vc-pzd", 1 / 3.5),  # Photography Blog: 1:3.5 (Les Numériques: 0.29x)
     ("tamron-16-300mm-f3.5-6.3-di-ii-vc-pzd-macro", 0.34),  # DPReview: 0.34x
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-vc-b005", 1 / 4.8),  # Professional Photographer: 1:4.8
+    ("sigma-8-16mm-f4.5-5.6-dc-hsm", 1 / 7.8),  # Wikipedia: 1:7.8
+    ("sigma-10-20mm-f4-5.6-ex-dc-hsm", 1 / 6.7),  # dptnt.com: 1:6.7
 ])
 def test_a_zooms_single_published_magnification_is_its_lens_level_maximum(lens_id, magnification):
     # a page giving one magnification without its focal length: it bounds every row, none claims it
