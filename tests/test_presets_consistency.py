@@ -253,6 +253,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     # 0.27 m with 1:4.5 at 50 mm and 4.0 m with 1:9.5 imply about 40 mm and 345 mm (Tamron 17-50mm A16,
     # Sigma APO 400mm)
     ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50.0), ("sigma-400mm-f5.6-apo", 400.0),
+    # 0.39 m with 1:2 implies about 87 mm (Tamron SP AF 90mm F/2.5 52E)
+    ("tamron-sp-af-90mm-f2.5-macro-52e", 90.0),
 }
 
 

@@ -131,6 +131,27 @@ CITED = [
     ("sigma-50-100mm-f1.8-dc-hsm-art", 100, 950, None, (1.8, None)),
     # Lennart Verhoeven: 5.6 to 22, 4.0 m, 1:9.5
     ("sigma-400mm-f5.6-apo", 400, 4000, 1 / 9.5, (5.6, 22)),
+    # Photo Review: 1:1 at 188 mm; magazine test: f/2.8 to f/32
+    ("sigma-50mm-f2.8-ex-dg-macro", 50, 188, 1.0, (2.8, 32)),
+    # Shutterbug: 12.3 in (31.2 cm), 1:1
+    ("sigma-af-105mm-f2.8-ex-macro", 105, 312, 1.0, (2.8, None)),
+    # lens-db.com: F/2.5, 0.39 m, 1:2
+    ("tamron-sp-af-90mm-f2.5-macro-52e", 90, 390, 0.5, (2.5, None)),
+    # DPReview: 0.49 m (0.26x kept at lens level); Amateur Photographer: f/22-40
+    ("tamron-18-270mm-f3.5-6.3-di-ii-vc-pzd", 18, 490, None, (3.5, 22)),
+    ("tamron-18-270mm-f3.5-6.3-di-ii-vc-pzd", 270, 490, None, (6.3, 40)),
+    # Adorama: 1.48 ft (45 cm), f/22-40 (1:3.4 kept at lens level)
+    ("sigma-18-250mm-f3.5-6.3-dc-os-hsm", 18, 450, None, (3.5, 22)),
+    ("sigma-18-250mm-f3.5-6.3-dc-os-hsm", 250, 450, None, (6.3, 40)),
+    # LA Splash / Shutterbug: 17.7 in (45 cm) throughout, F/22 (1:3.5 kept at lens level)
+    ("tamron-af-18-250mm-f3.5-6.3-di-ii-ld-macro-a18", 18, 450, None, (3.5, 22)),
+    ("tamron-af-18-250mm-f3.5-6.3-di-ii-ld-macro-a18", 250, 450, None, (6.3, 22)),
+    # Shutterbug: 59.1 in (1.5 m), 37.4 in (0.95 m) at 300 mm; Popular Photography: 1:2
+    ("sigma-af-70-300mm-f4-5.6-dl-macro", 70, 1500, None, (4, None)),
+    ("sigma-af-70-300mm-f4-5.6-dl-macro", 300, 950, 0.5, (5.6, None)),
+    # alpha85.com: 0.9 m (1:2.8 kept at lens level)
+    ("tamron-80-210mm-f3.8-4-cf-tele-macro-103a", 80, 900, None, (3.8, None)),
+    ("tamron-80-210mm-f3.8-4-cf-tele-macro-103a", 210, 900, None, (4, None)),
     # fisheyes: Nikon School Italia and Dante Stella (f/8 to f/22, no focusing); Nikon School Italia;
     # Nikon's manual (f/2.8); syaraku / pt4pano (f/3.5)
     ("nikon-fisheye-nikkor-8mm-f8", 8, None, None, (8, 22)),
@@ -313,6 +334,10 @@ def test_sigma_8mm_circle_points_to_the_equisolid_mapping():
     ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-vc-b005", 1 / 4.8),  # Professional Photographer: 1:4.8
     ("sigma-8-16mm-f4.5-5.6-dc-hsm", 1 / 7.8),  # Wikipedia: 1:7.8
     ("sigma-10-20mm-f4-5.6-ex-dc-hsm", 1 / 6.7),  # dptnt.com: 1:6.7
+    ("tamron-18-270mm-f3.5-6.3-di-ii-vc-pzd", 0.26),  # DPReview: 0.26x
+    ("sigma-18-250mm-f3.5-6.3-dc-os-hsm", 1 / 3.4),  # Adorama: 1:3.4 on the barrel
+    ("tamron-af-18-250mm-f3.5-6.3-di-ii-ld-macro-a18", 1 / 3.5),  # LA Splash: 1:3.5
+    ("tamron-80-210mm-f3.8-4-cf-tele-macro-103a", 1 / 2.8),  # alpha85.com: 1:2.8
 ])
 def test_a_zooms_single_published_magnification_is_its_lens_level_maximum(lens_id, magnification):
     # a page giving one magnification without its focal length: it bounds every row, none claims it
