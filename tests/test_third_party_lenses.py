@@ -152,6 +152,9 @@ CITED = [
     # alpha85.com: 0.9 m (1:2.8 kept at lens level)
     ("tamron-80-210mm-f3.8-4-cf-tele-macro-103a", 80, 900, None, (3.8, None)),
     ("tamron-80-210mm-f3.8-4-cf-tele-macro-103a", 210, 900, None, (4, None)),
+    # Lens Shatter / The Manual Photographer: macro 30 cm at 60 mm (1:1.55), 1.9 m otherwise; f/3.8-5.4, f/32
+    ("tamron-sp-60-300mm-f3.8-5.4-macro-23a", 60, 300, 1 / 1.55, (3.8, 32)),
+    ("tamron-sp-60-300mm-f3.8-5.4-macro-23a", 300, 1900, None, (5.4, 32)),
     # fisheyes: Nikon School Italia and Dante Stella (f/8 to f/22, no focusing); Nikon School Italia;
     # Nikon's manual (f/2.8); syaraku / pt4pano (f/3.5)
     ("nikon-fisheye-nikkor-8mm-f8", 8, None, None, (8, 22)),
@@ -159,6 +162,7 @@ CITED = [
     ("nikon-fisheye-nikkor-6mm-f5.6", 6, None, None, (5.6, None)),
     ("nikon-fisheye-nikkor-8mm-f2.8", 8, None, None, (2.8, None)),
     ("sigma-8mm-f3.5-ex-dg-circular-fisheye", 8, None, None, (3.5, None)),
+    ("sigma-8mm-f4-ex-circular-fisheye", 8, None, None, (4, None)),  # Impress DC Watch: 8mm F4
 ]
 
 # (lens, projection, field_max_deg) as the page each fisheye's source names them
@@ -169,6 +173,7 @@ FISHEYES = [
     ("nikon-fisheye-nikkor-6mm-f5.6", "equidistant", 220),  # Nikon School Italia: equidistant, 220°
     ("nikon-fisheye-nikkor-8mm-f2.8", "equidistant", 180),  # Nikon's manual: y = f·θ, 180°
     ("sigma-8mm-f3.5-ex-dg-circular-fisheye", "equisolid", 180),  # Wikipedia (ja): Sigma's are equisolid
+    ("sigma-8mm-f4-ex-circular-fisheye", "equisolid", 180),  # Wikipedia (ja); Impress: 180° on Four Thirds
 ]
 
 
@@ -286,6 +291,9 @@ def test_dof_runs_with_a_third_party_zoom_and_refuses_closer_than_its_closest_fo
     # Sigma UK: field of view 75-34° (whole degrees)
     ("sigma-28-70-uc", 28, 75, 0.5),
     ("sigma-28-70-uc", 70, 34, 0.5),
+    # The Manual Photographer: angle of view 40-8° (whole degrees)
+    ("tamron-23a", 60, 40, 0.5),
+    ("tamron-23a", 300, 8, 0.5),
 ])
 def test_diagonal_angle_of_view_against_the_cited_pages(lens_id, focal, published_deg, rounding):
     (row,) = run_json("fov", "--lens", lens_id, "-f", str(focal))
@@ -310,6 +318,15 @@ def test_nikon_circular_fisheyes_fit_inside_the_full_frame():
         assert 2 * image_height_mm(lens.focal_length_mm, field / 2, "equidistant") < 24.0
         (row,) = run_json("fov", "--lens", lens_id)
         assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (field, field, field)
+
+
+def test_sigma_8mm_f4_on_four_thirds_is_near_diagonal_filling():
+    # Impress: the full-frame circular 8mm F4 becomes a diagonal fisheye on the E-410 (Four Thirds)
+    (row,) = run_json("fov", "--lens", "sigma-8-f4-fisheye")
+    assert (row["horizontal_deg"], row["vertical_deg"], row["diagonal_deg"]) == (180.0, 180.0, 180.0)
+    (row,) = run_json("fov", "--lens", "sigma-8-f4-fisheye", "--sensor", "four-thirds")
+    assert 165.0 < row["diagonal_deg"] < 180.0
+    assert 2 * image_height_mm(8.0, 90.0, "equisolid") == pytest.approx(math.hypot(17.3, 13), rel=0.05)
 
 
 def test_sigma_8mm_circle_points_to_the_equisolid_mapping():
