@@ -155,6 +155,8 @@ CITED = [
     # Lens Shatter / The Manual Photographer: macro 30 cm at 60 mm (1:1.55), 1.9 m otherwise; f/3.8-5.4, f/32
     ("tamron-sp-60-300mm-f3.8-5.4-macro-23a", 60, 300, 1 / 1.55, (3.8, 32)),
     ("tamron-sp-60-300mm-f3.8-5.4-macro-23a", 300, 1900, None, (5.4, 32)),
+    # akiophoto / joseramonmartinez: 18 cm, 1:2.7 (0.37x)
+    ("sigma-24mm-f1.8-ex-dg-aspherical-macro", 24, 180, 0.37, (1.8, None)),
     # fisheyes: Nikon School Italia and Dante Stella (f/8 to f/22, no focusing); Nikon School Italia;
     # Nikon's manual (f/2.8); syaraku / pt4pano (f/3.5)
     ("nikon-fisheye-nikkor-8mm-f8", 8, None, None, (8, 22)),
