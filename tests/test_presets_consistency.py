@@ -255,6 +255,13 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sony-fe-300mm-f2.8-gm-oss", 300.0), ("fujifilm-xf50mm-f1-r-wr", 50.0),
     # 0.8 m with 0.25x and 3.3 m with 0.2x imply about 128 mm and 458 mm at the ends of the RF 200-800
     ("canon-rf-200-800mm-f6.3-9-is-usm", 200.0), ("canon-rf-200-800mm-f6.3-9-is-usm", 800.0),
+    # third-party-lenses.yaml, the later additions: 0.5 m with 1:7.2 implies about 54 mm for the Sigma 60mm DN
+    ("sigma-60mm-f2.8-dn-art", 60.0),
+    # 0.27 m with 1:4.5 at 50 mm and 4.0 m with 1:9.5 imply about 40 mm and 345 mm (Tamron 17-50mm A16,
+    # Sigma APO 400mm)
+    ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50.0), ("sigma-400mm-f5.6-apo", 400.0),
+    # 0.39 m with 1:2 implies about 87 mm (Tamron SP AF 90mm F/2.5 52E)
+    ("tamron-sp-af-90mm-f2.5-macro-52e", 90.0),
 }
 
 
