@@ -97,3 +97,11 @@ def point_xdg_at(root: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
         monkeypatch.setenv(name, str(root / name.lower()))
     monkeypatch.setenv("XDG_CONFIG_DIRS", str(root / "etc-xdg"))
+
+
+@pytest.fixture
+def no_user_presets(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every XDG directory in the test's own empty folder: the shipped presets alone, and a cache of the test's own."""
+    for var, sub in (("XDG_CONFIG_HOME", "config"), ("XDG_DATA_HOME", "data"), ("XDG_CACHE_HOME", "cache")):
+        monkeypatch.setenv(var, str(tmp_path / sub))
+    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))

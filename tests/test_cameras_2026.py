@@ -19,11 +19,7 @@ ROOT = Path(__file__).resolve().parents[1]
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 
 
-@pytest.fixture(autouse=True)
-def no_user_presets(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    for var, sub in (("XDG_CONFIG_HOME", "config"), ("XDG_DATA_HOME", "data"), ("XDG_CACHE_HOME", "cache")):
-        monkeypatch.setenv(var, str(tmp_path / sub))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+pytestmark = pytest.mark.usefixtures("no_user_presets")  # the shipped presets alone
 
 
 # (camera, width mm, height mm, pixels across, pixels down, mount, category) as the cited page prints them.

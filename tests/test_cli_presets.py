@@ -14,11 +14,7 @@ from camtool.dof.closed import thin_dof
 DATA = Path(__file__).parent / "data"
 
 
-@pytest.fixture(autouse=True)
-def no_user_presets(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    for var, sub in (("XDG_CONFIG_HOME", "config"), ("XDG_DATA_HOME", "data"), ("XDG_CACHE_HOME", "cache")):
-        monkeypatch.setenv(var, str(tmp_path / sub))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+pytestmark = pytest.mark.usefixtures("no_user_presets")  # the shipped presets alone
 
 
 def test_sensor_preset_by_name_and_alias() -> None:

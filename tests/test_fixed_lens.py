@@ -7,7 +7,6 @@ The figures of the lens presets added for the compacts are checked against the p
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import pytest
 from cli_helpers import run, run_json
@@ -18,11 +17,7 @@ from camtool.presets import PresetFileError, load_db, validate_file
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 
 
-@pytest.fixture(autouse=True)
-def no_user_presets(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    for var, sub in (("XDG_CONFIG_HOME", "config"), ("XDG_DATA_HOME", "data"), ("XDG_CACHE_HOME", "cache")):
-        monkeypatch.setenv(var, str(tmp_path / sub))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+pytestmark = pytest.mark.usefixtures("no_user_presets")  # the shipped presets alone
 
 
 # Cameras with mount: fixed lens that name no lens, and why.
