@@ -473,3 +473,11 @@ def test_a_figure_too_small_for_its_labels_is_one_warning_line(tmp_path: Path) -
     assert result.stderr == ("Warning: the chart is too small for its labels at 1 × 1 in; some may overlap "
                              "(give a larger --size)\n")
     assert _png_size((tmp_path / "tiny.png").read_bytes()) == (20, 20)
+
+
+def test_a_focus_sheet_without_lenses_is_a_usage_line_naming_what_to_give(tmp_path: Path) -> None:
+    # not "Invalid value for '-f'" when -f was not typed: a usage error saying to give -f or --lenses
+    result = run("chart", "marks", "--f-number", "2.8", "--output", str(tmp_path / "sheet.svg"))
+    assert result.exit_code == 2 and result.stderr.count("\n") == 1
+    assert "Invalid value" not in result.stderr and "-f (a list) or --lenses" in result.stderr
+    assert not (tmp_path / "sheet.svg").exists()

@@ -298,7 +298,7 @@ def marks_chart(*, lenses: Sequence[tuple[str, float, LensData | None]], f_numbe
     4185.3
     """
     if not lenses:
-        raise InputError("focal_length", "give the lenses of the sheet: {focal_length} (a list) or --lenses")
+        raise InputError("focal_length", "give the lenses of the sheet: {focal_length} (a list) or --lenses", usage=True)
     marks = list(marks_mm) or ([v * 304.8 for v in MARKS_FT] if units == "imperial" else [v * 1000.0 for v in MARKS_M])
     return marks_data(lenses, f_number, marks, coc_mm, model, distance_from, aperture_label)
 
