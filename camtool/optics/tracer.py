@@ -90,6 +90,11 @@ class _Surface:
         mu = self.n_before / self.n_after
         return tuple(np.array(x) for x in (self.c, mu, mu * mu, 1.0 - mu * mu, self.gap, 2.0))
 
+    @functools.cached_property
+    def conic(self) -> tuple[np.ndarray, ...]:
+        """c·(1 + k), c²·(1 + k) and 1 as 0-d arrays, for the general path (see :attr:`constants`)."""
+        return tuple(np.array(x) for x in (self.c * (1.0 + self.k), self.c * self.c * (1.0 + self.k), 1.0))
+
 
 @dataclass(frozen=True)
 class FanSummary:
@@ -109,19 +114,22 @@ class FanSummary:
     aim_mm: np.ndarray
 
 
-def _poly(values: np.ndarray, slopes: np.ndarray, r: Any) -> tuple[Any, Any]:
+def _poly(values: np.ndarray, slopes: np.ndarray, r: Any, value: bool = True) -> tuple[Any, Any]:
     """Σ a_n rⁿ and its derivative Σ n·a_n rⁿ⁻¹ at r ≥ 0, from the powers r¹…r^P.
 
     ``values`` holds a_1…a_P (zeros included), ``slopes`` 2·a_2…P·a_P: the
-    sums are two matrix products over the stacked powers.
+    sums are two matrix products over the stacked powers. ``value`` false:
+    the derivative alone (the first result is None).
     """
     flat = r.reshape(-1)
-    powers = np.empty((values.size, flat.size))
+    size = values.size if value else values.size - 1
+    powers = np.empty((size, flat.size))
     rows = list(powers)
     rows[0][...] = flat
-    for k in range(1, values.size):
-        np.multiply(rows[k - 1], flat, out=rows[k])
-    return (values @ powers).reshape(r.shape), (slopes @ powers[:-1]).reshape(r.shape)
+    for k in range(1, size):
+        np.multiply(rows[k - 1], flat, rows[k])
+    slope = (slopes @ powers[: values.size - 1]).reshape(r.shape)
+    return ((values @ powers).reshape(r.shape) if value else None), slope
 
 
 def _propagate(
@@ -142,7 +150,6 @@ def _propagate(
     last = len(surfaces) - 1
     for i, s in enumerate(surfaces):
         refract = (refract_last or i < last) and s.n_before != s.n_after
-        mu = s.n_before / s.n_after
         if not s.spherical:
             y, z0, m, l = _general_surface(s, y, z0, m, l, refract)
             lmin = np.minimum(lmin, l)
@@ -173,13 +180,14 @@ def _propagate(
 
 def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool) -> tuple[Any, Any, Any, Any]:
     """Intersect (and refract at) a conic or aspheric surface; z0 relative to its vertex."""
+    c, mu, mu2, _, _, two = s.constants
+    ck, _, one = s.conic
     if s.c == 0.0:
         t = -z0 / l
     else:
-        ck = s.c * (1.0 + s.k)
-        a = s.c * m * m + ck * l * l
-        b = s.c * y * m - l + ck * z0 * l
-        cc = s.c * y * y - 2.0 * z0 + ck * z0 * z0
+        a = c * m * m + ck * l * l
+        b = c * y * m - l + ck * z0 * l
+        cc = c * y * y - two * z0 + ck * z0 * z0
         t = cc / (np.sqrt(b * b - a * cc) - b)
     for _ in range(30 if s.dense else 0):
         height = y + t * m
@@ -192,13 +200,12 @@ def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool
     z0 = z0 + t * l
     if not refract:
         return y, z0, m, l
-    _, dsag = _sag(s, np.abs(y))
+    _, dsag = _sag(s, np.abs(y), value=False)
     dzdy = dsag * np.sign(y)
-    norm = np.sqrt(1.0 + dzdy * dzdy)
-    ny, nz = -dzdy / norm, 1.0 / norm
+    norm = np.sqrt(one + dzdy * dzdy)
+    ny, nz = -dzdy / norm, one / norm
     cos_i = ny * m + nz * l
-    mu = s.n_before / s.n_after
-    cos_r = np.sqrt(1.0 - mu * mu * (1.0 - cos_i * cos_i))  # NaN: total internal reflection
+    cos_r = np.sqrt(one - mu2 * (one - cos_i * cos_i))  # NaN: total internal reflection
     g = np.where(cos_i > 0.0, cos_r - mu * cos_i, np.nan)
     return y, z0, mu * m + g * ny, mu * l + g * nz
 
@@ -392,15 +399,22 @@ class RealRayTracer:
         return self.prescription.id or self.prescription.source or "prescription"
 
 
-def _sag(s: _Surface, r: Any) -> tuple[Any, Any]:
-    """Sag and radial slope (sag, dsag/dr) of a prepared surface at r ≥ 0; NaN beyond a conic's rim."""
+def _sag(s: _Surface, r: Any, value: bool = True) -> tuple[Any, Any]:
+    """Sag and radial slope (sag, dsag/dr) of a prepared surface at r ≥ 0; NaN beyond a conic's rim.
+
+    ``value`` false: the slope alone (the sag is None).
+    """
+    c = s.constants[0]
+    _, c2k, one = s.conic
     r2 = r * r
-    root = np.sqrt(1.0 - (s.c * s.c * (1.0 + s.k)) * r2)
-    sag = s.c * r2 / (1.0 + root)
-    slope = s.c * r / root
+    root = np.sqrt(one - c2k * r2)
+    sag = c * r2 / (one + root) if value else None
+    slope = c * r / root
     if s.dense:
-        extra, extra_slope = _poly(*s.terms, r)
-        sag, slope = sag + extra, slope + extra_slope
+        extra, extra_slope = _poly(*s.terms, r, value)
+        if value:
+            sag = sag + extra
+        slope = slope + extra_slope
     return sag, slope
 
 
