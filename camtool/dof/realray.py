@@ -152,7 +152,7 @@ class _Curves:
         matrix = lobatto_matrix(nodes.size - 1)
         values = np.stack([summary.z_best - self._base(nodes), summary.slope_rms, summary.best_blur**2, summary.aim_mm])
         self.coef_z, self.coef_s, self.coef_b2, self.coef_aim = values @ matrix.T
-        self._stacked = np.stack([self.coef_z, self.coef_s, self.coef_b2], axis=1)[:, :, None]
+        self._stacked = np.stack([self.coef_z, self.coef_s, self.coef_b2])
         self._scans: dict[tuple[float, float], tuple[np.ndarray, ...]] = {}
         self._lists = [c.tolist() for c in (self.coef_z, self.coef_s, self.coef_b2)]
         self._reversed = list(zip(*(reversed(c[1:]) for c in self._lists)))
@@ -182,16 +182,21 @@ class _Curves:
     def curves(self, v: Any) -> tuple[Any, Any, Any]:
         """Interpolated (z_best, S, B) at pupil vergences v (array).
 
-        Clenshaw's recurrence as numpy's ``chebval`` runs it (the same operations, so the same values), the
-        three curves stacked, without its per-call argument handling.
+        The polynomials T_k(x) by their recurrence T_(k+1) = 2x·T_k − T_(k−1), then one matrix product
+        for the three curves: a quarter of the time of numpy's ``chebval`` on the stacked coefficients
+        (whose Clenshaw steps broadcast each coefficient over the points); the values agree to round-off
+        (~1e-14 mm here, where they only locate sign changes).
         """
         x = 2.0 * np.asarray(v, float) / self.v_cap - 1.0
-        c = self._stacked
+        powers = np.empty((self._stacked.shape[1], x.size))
+        rows = list(powers)
+        rows[0][...] = 1.0
+        rows[1][...] = x
         x2 = 2.0 * x
-        c0, c1 = c[-2], c[-1]
-        for i in range(3, len(c) + 1):
-            c0, c1 = c[-i] - c1, c0 + c1 * x2
-        z, s, b2 = c0 + c1 * x
+        for k in range(2, len(rows)):
+            np.multiply(x2, rows[k - 1], rows[k])
+            np.subtract(rows[k], rows[k - 2], rows[k])
+        z, s, b2 = self._stacked @ powers
         return z + self._base(v), s, np.sqrt(np.maximum(b2, 0.0))
 
     def scan(self, v_from: float, v_to: float, also: tuple[float, float] | None = None) -> tuple[np.ndarray, ...]:

@@ -167,5 +167,11 @@ def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) ->
     >>> round(brent(lambda x: x**3 - 2.0 * x - 5.0, 2.0, 3.0), 12)
     2.094551481542
     """
-    roots = solve_lockstep(lambda xs: [f(x) for x in xs], [(brent_steps(a, f(a), b, f(b), xtol), float)])
-    return roots[0]
+    steps = brent_steps(a, f(a), b, f(b), xtol)
+    try:
+        x = next(steps)
+        for _ in range(200):
+            x = steps.send(float(f(x)))
+    except StopIteration as done:
+        return float(done.value)
+    raise RuntimeError("root search did not converge")
