@@ -335,10 +335,12 @@ class RealRayTracer:
         h0 = (aim * (1.0 - v * self.first.z_e_mm))[:, None] * ratio
         sin_k = np.sin(theta)
         weights = self._simpson * np.where(v2 == 0.0, self._fraction, sin_k)
-        y, z, m, l, lmin = _propagate(self.surfaces, h0, 0.0, sin_k, np.cos(theta))
+        # the rays as one flat array: numpy's element-wise calls cost less on one dimension than on two
+        y, z, m, l, lmin = _propagate(self.surfaces, h0.reshape(-1), 0.0, sin_k.reshape(-1), np.cos(theta).reshape(-1))
         t = m / l
         a = y - t * (z + self.surfaces[-1].z)
-        ok = np.isfinite(a) & np.isfinite(t) & (lmin > 0.0)
+        ok = (np.isfinite(a) & np.isfinite(t) & (lmin > 0.0)).reshape(h0.shape)
+        a, t = a.reshape(h0.shape), t.reshape(h0.shape)
         weights = np.where(ok, weights, 0.0)
         weights = weights / weights.sum(axis=1, keepdims=True)
         self._survivors = ok.sum(axis=1)
