@@ -130,7 +130,8 @@ class _Curves:
         if degree != _DEGREE or not self._full:
             return
         odd = self.v_cap * (1.0 - np.cos(np.pi * np.arange(1, 2 * degree, 2) / (2 * degree))) / 2.0
-        more, ok = self.tracer.summarise(odd, self.f_number)
+        guess = cheb.chebval(2.0 * odd / self.v_cap - 1.0, self.coef_aim)  # the edge rays' aims, to ~1e-10
+        more, ok = self.tracer.summarise(odd, self.f_number, guess)
         if not np.all(ok):
             return
         merged = np.empty(2 * degree + 1)
