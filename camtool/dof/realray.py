@@ -356,8 +356,14 @@ def _first_crossing(
     if values[i] == 0.0:
         return float(vs[i])
     if scalar is None:
-        return brent(lambda v: float(value(*curves.curve(v), v)), float(vs[i]), float(vs[i + 1]))
-    return brent(scalar, float(vs[i]), float(vs[i + 1]))
+        scalar = lambda v: float(value(*curves.curve(v), v))  # noqa: E731
+    low, high = float(vs[i]), float(vs[i + 1])
+    f_low, f_high = scalar(low), scalar(high)
+    if (f_low > 0.0) == (f_high > 0.0) and f_low != 0.0 and f_high != 0.0:
+        # the scan's sums and the scalar ones differ by round-off: the root lies on a grid point (a focus
+        # at the closest distance, say), the end where the value is nearer zero
+        return low if abs(f_low) <= abs(f_high) else high
+    return brent(scalar, low, high, fa=f_low, fb=f_high)
 
 
 def _check_scene(

@@ -146,7 +146,9 @@ def solve_lockstep(
     raise RuntimeError("root search did not converge")
 
 
-def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) -> float:
+def brent(
+    f: Callable[[float], float], a: float, b: float, xtol: float = 0.0, fa: float | None = None, fb: float | None = None
+) -> float:
     """Root of f in the bracket [a, b] by Brent's method (scalar convenience wrapper).
 
     Parameters
@@ -157,6 +159,8 @@ def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) ->
         Bracket.
     xtol : float
         Absolute tolerance (a relative 4·eps is always added).
+    fa, fb : float, optional
+        f(a) and f(b) when the caller has them already.
 
     References
     ----------
@@ -167,7 +171,7 @@ def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) ->
     >>> round(brent(lambda x: x**3 - 2.0 * x - 5.0, 2.0, 3.0), 12)
     2.094551481542
     """
-    steps = brent_steps(a, f(a), b, f(b), xtol)
+    steps = brent_steps(a, f(a) if fa is None else fa, b, f(b) if fb is None else fb, xtol)
     try:
         x = next(steps)
         for _ in range(200):
