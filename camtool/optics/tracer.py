@@ -341,6 +341,9 @@ class RealRayTracer:
         a = y - t * (z + self.surfaces[-1].z)
         ok = (np.isfinite(a) & np.isfinite(t) & (lmin > 0.0)).reshape(h0.shape)
         a, t = a.reshape(h0.shape), t.reshape(h0.shape)
+        if ok.all():  # the usual case: no ray lost, nothing to mask
+            self._survivors = np.full(v.size, _FAN_SIZE)
+            return a, t, weights / weights.sum(axis=1, keepdims=True)
         weights = np.where(ok, weights, 0.0)
         weights = weights / weights.sum(axis=1, keepdims=True)
         self._survivors = ok.sum(axis=1)
