@@ -124,7 +124,11 @@ class _Curves:
             self.refine()
 
     def refine(self) -> None:
-        """Double the degree once (the 2n-point nodes are the n-point ones and their midpoints)."""
+        """Double the degree once (the 2n-point nodes are the n-point ones and their midpoints).
+
+        The new nodes' edge rays start from the first interpolant's aim heights: one Newton step
+        then meets the edge-ray search's tolerance, where the paraxial start takes three.
+        """
         nodes, summary = self._nodes, self._summary
         degree = nodes.size - 1
         if degree != _DEGREE or not self._full:
