@@ -9,6 +9,7 @@ agreement: 0.5 % of the front and rear depths (real_defocus) and 1 % of blur_at_
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import math
 from pathlib import Path
@@ -236,3 +237,27 @@ def test_arrays_of_f_numbers_match_scalar_calls():
         assert many.front_mm[i] == pytest.approx(one.front_mm, rel=1e-10)
         assert many.rear_mm[i] == pytest.approx(one.rear_mm, rel=1e-10)
         assert many.hyperfocal_mm[i] == pytest.approx(one.hyperfocal_mm, rel=1e-10)
+
+
+@pytest.mark.parametrize("name, f_number", [("cellphone", 2.8), ("cellphone", 8.0), ("dgauss100", 2.0),
+                                            ("dgauss100", 8.0), ("telephoto127", 5.6), ("telephoto127", 8.0)])
+def test_focus_at_exactly_the_closest_distance(name, f_number):
+    # a root on the scan's last grid point: the scan's vectorised sums and the scalar ones seen by Brent's
+    # method differ by round-off there, which must not turn into a bracket without a sign change
+    from camtool.dof.realray import _curves, closest_focus_mm
+
+    lens = LENSES[name]
+    _curves.cache_clear()
+    with contextlib.suppress(NoDepthOfField):  # the total-blur criterion refines the interpolants if need be
+        raytrace_dof(lens, f_number, 0.005, 100.0 * first_order(lens).efl_mm, criterion="rms")
+    closest = closest_focus_mm(lens, f_number)
+    assert real_focus(lens, f_number, closest).distance_mm == pytest.approx(closest, rel=1e-12)
+    for coc in (0.005, 0.03):
+        defocus = raytrace_dof(lens, f_number, coc, closest)
+        assert 0.0 < defocus.near_mm < closest < defocus.far_mm
+        try:
+            rms = raytrace_dof(lens, f_number, coc, closest, criterion="rms")
+        except NoDepthOfField as caught:
+            assert caught.blur_at_focus_mm >= coc  # the lens's own blur at this focus exceeds c
+        else:
+            assert rms.near_mm < closest < rms.far_mm

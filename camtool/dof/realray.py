@@ -124,13 +124,18 @@ class _Curves:
             self.refine()
 
     def refine(self) -> None:
-        """Double the degree once (the 2n-point nodes are the n-point ones and their midpoints)."""
+        """Double the degree once (the 2n-point nodes are the n-point ones and their midpoints).
+
+        The new nodes' edge rays start from the first interpolant's aim heights: one Newton step
+        then meets the edge-ray search's tolerance, where the paraxial start takes three.
+        """
         nodes, summary = self._nodes, self._summary
         degree = nodes.size - 1
         if degree != _DEGREE or not self._full:
             return
         odd = self.v_cap * (1.0 - np.cos(np.pi * np.arange(1, 2 * degree, 2) / (2 * degree))) / 2.0
-        more, ok = self.tracer.summarise(odd, self.f_number)
+        guess = cheb.chebval(2.0 * odd / self.v_cap - 1.0, self.coef_aim)  # the edge rays' aims, to ~1e-10
+        more, ok = self.tracer.summarise(odd, self.f_number, guess)
         if not np.all(ok):
             return
         merged = np.empty(2 * degree + 1)
@@ -152,9 +157,12 @@ class _Curves:
         matrix = lobatto_matrix(nodes.size - 1)
         values = np.stack([summary.z_best - self._base(nodes), summary.slope_rms, summary.best_blur**2, summary.aim_mm])
         self.coef_z, self.coef_s, self.coef_b2, self.coef_aim = values @ matrix.T
-        self._stacked = np.stack([self.coef_z, self.coef_s, self.coef_b2], axis=1)
+        self._stacked = np.stack([self.coef_z, self.coef_s, self.coef_b2])
+        self._scans: dict[tuple[float, float], tuple[np.ndarray, ...]] = {}
         self._lists = [c.tolist() for c in (self.coef_z, self.coef_s, self.coef_b2)]
         self._reversed = list(zip(*(reversed(c[1:]) for c in self._lists)))
+        self._reversed_z = self._lists[0][:0:-1]
+        self._reversed_zs = list(zip(self._reversed_z, self._lists[1][:0:-1]))
         self._first = (self._lists[0][0], self._lists[1][0], self._lists[2][0])
         self.at_zero = (float(summary.z_best[0]), float(summary.slope_rms[0]), float(summary.best_blur[0]))
 
@@ -177,10 +185,44 @@ class _Curves:
         return self.fo.z_f_prime_mm + f * f * v / (1.0 + v * self._pole)
 
     def curves(self, v: Any) -> tuple[Any, Any, Any]:
-        """Interpolated (z_best, S, B) at pupil vergences v (array)."""
+        """Interpolated (z_best, S, B) at pupil vergences v (array).
+
+        The polynomials T_k(x) by their recurrence T_(k+1) = 2x·T_k − T_(k−1), then one matrix product
+        for the three curves: a quarter of the time of numpy's ``chebval`` on the stacked coefficients
+        (whose Clenshaw steps broadcast each coefficient over the points); the values agree to round-off
+        (~1e-14 mm here, where they only locate sign changes).
+        """
         x = 2.0 * np.asarray(v, float) / self.v_cap - 1.0
-        z, s, b2 = cheb.chebval(x, self._stacked)
+        powers = np.empty((self._stacked.shape[1], x.size))
+        rows = list(powers)
+        rows[0][...] = 1.0
+        rows[1][...] = x
+        x2 = 2.0 * x
+        for k in range(2, len(rows)):
+            np.multiply(x2, rows[k - 1], rows[k])
+            np.subtract(rows[k], rows[k - 2], rows[k])
+        z, s, b2 = self._stacked @ powers
         return z + self._base(v), s, np.sqrt(np.maximum(b2, 0.0))
+
+    def scan(self, v_from: float, v_to: float, also: tuple[float, float] | None = None) -> tuple[np.ndarray, ...]:
+        """(v, z_best, S, B) on the scan grid from v_from towards v_to (see :func:`_first_crossing`).
+
+        ``also``: the ends of another grid to evaluate in the same pass and keep for a later call (the
+        near and far searches start from the same focus; the focus and hyperfocal searches share a grid).
+        """
+        found = self._scans.get((v_from, v_to))
+        if found is not None:
+            return found
+        if len(self._scans) >= 8:
+            self._scans.clear()
+        pairs = [(v_from, v_to)] + ([also] if also is not None and also not in self._scans else [])
+        vs = np.concatenate([a + (b - a) * _SCAN_STEPS for a, b in pairs])
+        z, s, b = self.curves(vs)
+        size = _SCAN_STEPS.size
+        for k, pair in enumerate(pairs):
+            part = slice(k * size, (k + 1) * size)
+            self._scans[pair] = (vs[part], z[part], s[part], b[part])
+        return self._scans[(v_from, v_to)]
 
     def curve(self, v: float) -> tuple[float, float, float]:
         """Interpolated (z_best, S, B) at one pupil vergence (plain floats).
@@ -200,6 +242,25 @@ class _Curves:
         s = x * s1 - s2 + s0
         b2_value = x * b1 - b2 + b0
         return z + self._base(v), s, math.sqrt(max(b2_value, 0.0))
+
+    def curve_z(self, v: float) -> float:
+        """Interpolated z_best at one pupil vergence (the first value of :meth:`curve`, alone)."""
+        x = 2.0 * v / self.v_cap - 1.0
+        x2 = 2.0 * x
+        z1 = z2 = 0.0
+        for cz in self._reversed_z:
+            z1, z2 = x2 * z1 - z2 + cz, z1
+        return x * z1 - z2 + self._first[0] + self._base(v)
+
+    def curve_zs(self, v: float) -> tuple[float, float]:
+        """Interpolated (z_best, S) at one pupil vergence (the first two values of :meth:`curve`)."""
+        x = 2.0 * v / self.v_cap - 1.0
+        x2 = 2.0 * x
+        z1 = z2 = s1 = s2 = 0.0
+        for cz, cs in self._reversed_zs:
+            z1, z2 = x2 * z1 - z2 + cz, z1
+            s1, s2 = x2 * s1 - s2 + cs, s1
+        return x * z1 - z2 + self._first[0] + self._base(v), x * s1 - s2 + self._first[1]
 
     def exact(self, v: list[float]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(z_best, S, B) by direct traces at pupil vergences v (aims started from the interpolant)."""
@@ -276,11 +337,21 @@ _BRACKET_STEPS = np.concatenate([[0.0], np.geomspace(1e-10, 1.0, 48)])
 _BRACKET_STEPS.flags.writeable = False
 
 
-def _first_crossing(curves: _Curves, value: Any, v_from: float, v_to: float) -> float | None:
-    """First root of ``value(z, S, B, v)`` going from v_from towards v_to on the interpolants (None: none)."""
-    steps = _SCAN_STEPS
-    vs = v_from + (v_to - v_from) * steps
-    values = value(*curves.curves(vs), vs)
+def _first_crossing(
+    curves: _Curves,
+    value: Any,
+    v_from: float,
+    v_to: float,
+    scalar: Any = None,
+    also: tuple[float, float] | None = None,
+) -> float | None:
+    """First root of ``value(z, S, B, v)`` going from v_from towards v_to on the interpolants (None: none).
+
+    ``scalar(v)``: the same value at one vergence as a float, computed from only the curves it needs
+    (default: ``value`` on :meth:`_Curves.curve`); ``also``: another scan's ends, see :meth:`_Curves.scan`.
+    """
+    vs, z, s, b = curves.scan(v_from, v_to, also)
+    values = value(z, s, b, vs)
     positive = values > 0.0
     change = np.nonzero(positive[1:] != positive[:-1])[0]
     if change.size == 0:
@@ -288,7 +359,15 @@ def _first_crossing(curves: _Curves, value: Any, v_from: float, v_to: float) -> 
     i = int(change[0])
     if values[i] == 0.0:
         return float(vs[i])
-    return brent(lambda v: float(value(*curves.curve(v), v)), float(vs[i]), float(vs[i + 1]))
+    if scalar is None:
+        scalar = lambda v: float(value(*curves.curve(v), v))  # noqa: E731
+    low, high = float(vs[i]), float(vs[i + 1])
+    f_low, f_high = scalar(low), scalar(high)
+    if (f_low > 0.0) == (f_high > 0.0) and f_low != 0.0 and f_high != 0.0:
+        # the scan's sums and the scalar ones differ by round-off: the root lies on a grid point (a focus
+        # at the closest distance, say), the end where the value is nearer zero
+        return low if abs(f_low) <= abs(f_high) else high
+    return brent(scalar, low, high, fa=f_low, fb=f_high)
 
 
 def _check_scene(
@@ -352,7 +431,7 @@ def _focus_vergence(curves: _Curves, distance_mm: float, distance_from: str) -> 
         def mismatch(z: Any, s: Any, b: Any, v: Any) -> Any:
             return v * (z - fo.z_e_mm - distance_mm) + 1.0  # zero where z_best − z_obj = D
 
-        found = _first_crossing(curves, mismatch, 0.0, curves.v_cap)
+        found = _first_crossing(curves, mismatch, 0.0, curves.v_cap, lambda v: mismatch(curves.curve_z(v), 0.0, 0.0, v))
         return curves.v_cap if found is None else found
     z_ref = fo.z_h_mm if distance_from == "lens" else fo.z_e_mm
     return min(1.0 / (fo.z_e_mm - (z_ref - distance_mm)), curves.v_cap)
@@ -387,7 +466,8 @@ class _Problem:
         z_film = self.hyperfocal_film()
         if z_film is None:
             return None
-        found = _first_crossing(self.curves, lambda z, s, b, v: z - z_film, 0.0, self.curves.v_cap)
+        curves = self.curves
+        found = _first_crossing(curves, lambda z, s, b, v: z - z_film, 0.0, curves.v_cap, lambda v: curves.curve_z(v) - z_film)
         return self.curves.v_cap if found is None else found
 
     def limits(self, z_film: float) -> tuple[float, float]:
@@ -397,14 +477,20 @@ class _Problem:
         def excess(z: Any, s: Any, b: Any, v: Any) -> Any:
             return self.blur(z, s, b, z_film) - coc
 
+        def scalar(v: float) -> float:
+            if self.criterion != "defocus":
+                return float(excess(*curves.curve(v), v))
+            z, s = curves.curve_zs(v)
+            return _SQRT8 * abs(z_film - z) * s - coc  # as blur(), on floats
+
         curves = self.curves
-        near = _first_crossing(curves, excess, self.v_focus, curves.v_cap)
+        near = _first_crossing(curves, excess, self.v_focus, curves.v_cap, scalar, also=(self.v_focus, 0.0))
         if near is None:
             # at the first vertex nothing can be put closer; short of the front focal point, trace on
             near = curves.v_cap if curves.at_vertex else self._near_beyond(z_film)
         far = 0.0
         if excess(*curves.curve(0.0), 0.0) > 0.0:
-            found = _first_crossing(curves, excess, self.v_focus, 0.0)
+            found = _first_crossing(curves, excess, self.v_focus, 0.0, scalar)
             far = 0.0 if found is None else found
         return near, far
 

@@ -1,20 +1,19 @@
-"""Bracketed root finding (Brent's method), written so several roots advance in lockstep.
+"""Bracketed root finding: Brent's method.
 
-The ray-trace model needs a few roots at once (focus and hyperfocal; near and
-far limit), and one real-ray evaluation costs the same for one object
-distance as for a handful (numpy's per-call overhead dominates). So Brent's
-method is written as a generator: it yields the next abscissa and receives
-the function value there, and :func:`solve_lockstep` batches the abscissae of
-all unfinished roots into one call of the vectorised function.
+Brent's method is written as a generator (:func:`brent_steps`): it yields the
+next abscissa and receives the function value there, so a caller can drive it
+however the function is best evaluated; :func:`brent` drives it for a plain
+scalar function. The ``raytrace`` rung finds its roots on interpolants, where
+one scalar evaluation costs a few microseconds and the driving loop itself is
+part of the cost.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Generator, Sequence
-from typing import Any
+from collections.abc import Callable, Generator
 
-__all__ = ["brent", "brent_steps", "solve_lockstep"]
+__all__ = ["brent", "brent_steps"]
 
 _EPS = 2.0**-52
 
@@ -93,60 +92,9 @@ def brent_steps(a: float, fa: float, b: float, fb: float, xtol: float) -> Genera
         fb = yield b
 
 
-def solve_lockstep(
-    evaluate: Callable[[Sequence[float]], Sequence[Any]],
-    problems: Sequence[tuple[Generator[float, float, float], Callable[[Any], float]]],
-    max_rounds: int = 200,
-) -> list[float]:
-    """Run several :func:`brent_steps` generators together, one batched evaluation per round.
-
-    Parameters
-    ----------
-    evaluate : callable
-        Takes a list of abscissae, returns one result per abscissa.
-    problems : sequence of (generator, value)
-        ``value(result)`` turns a result of ``evaluate`` into the function
-        value that generator wants.
-    max_rounds : int
-        Give up (``RuntimeError``) after this many rounds.
-
-    Returns
-    -------
-    list of float
-        The roots, in the order of ``problems``.
-
-    Examples
-    --------
-    >>> square = lambda xs: [x * x for x in xs]
-    >>> roots = solve_lockstep(square, [
-    ...     (brent_steps(0.0, -2.0, 2.0, 2.0, 1e-14), lambda y: y - 2.0),
-    ...     (brent_steps(0.0, -3.0, 2.0, 1.0, 1e-14), lambda y: y - 3.0)])
-    >>> [round(r, 12) for r in roots]
-    [1.414213562373, 1.732050807569]
-    """
-    roots: list[float | None] = [None] * len(problems)
-    pending: dict[int, float] = {}
-    for i, (steps, _) in enumerate(problems):
-        try:
-            pending[i] = next(steps)
-        except StopIteration as done:
-            roots[i] = done.value
-    for _ in range(max_rounds):
-        if not pending:
-            return [float(r) for r in roots]  # type: ignore[arg-type]
-        order = list(pending)
-        results = evaluate([pending[i] for i in order])
-        for i, result in zip(order, results):
-            steps, value = problems[i]
-            try:
-                pending[i] = steps.send(value(result))
-            except StopIteration as done:
-                roots[i] = done.value
-                del pending[i]
-    raise RuntimeError("root search did not converge")
-
-
-def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) -> float:
+def brent(
+    f: Callable[[float], float], a: float, b: float, xtol: float = 0.0, fa: float | None = None, fb: float | None = None
+) -> float:
     """Root of f in the bracket [a, b] by Brent's method (scalar convenience wrapper).
 
     Parameters
@@ -157,6 +105,8 @@ def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) ->
         Bracket.
     xtol : float
         Absolute tolerance (a relative 4·eps is always added).
+    fa, fb : float, optional
+        f(a) and f(b) when the caller has them already.
 
     References
     ----------
@@ -166,6 +116,14 @@ def brent(f: Callable[[float], float], a: float, b: float, xtol: float = 0.0) ->
     --------
     >>> round(brent(lambda x: x**3 - 2.0 * x - 5.0, 2.0, 3.0), 12)
     2.094551481542
+    >>> abs(brent(lambda x: x * x - 2.0, 1.0, 2.0, fa=-1.0, fb=2.0) - 2.0**0.5) < 1e-15  # ends' values given
+    True
     """
-    roots = solve_lockstep(lambda xs: [f(x) for x in xs], [(brent_steps(a, f(a), b, f(b), xtol), float)])
-    return roots[0]
+    steps = brent_steps(a, f(a) if fa is None else fa, b, f(b) if fb is None else fb, xtol)
+    try:
+        x = next(steps)
+        for _ in range(200):
+            x = steps.send(float(f(x)))
+    except StopIteration as done:
+        return float(done.value)
+    raise RuntimeError("root search did not converge")

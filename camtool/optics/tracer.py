@@ -84,6 +84,18 @@ class _Surface:
         return values, values[1:] * np.arange(2, values.size + 1)
 
 
+    @functools.cached_property
+    def constants(self) -> tuple[np.ndarray, ...]:
+        """c, μ = n/n′, μ², 1 − μ², the gap and 2 as 0-d arrays (numpy multiplies an array by them faster than by floats)."""
+        mu = self.n_before / self.n_after
+        return tuple(np.array(x) for x in (self.c, mu, mu * mu, 1.0 - mu * mu, self.gap, 2.0))
+
+    @functools.cached_property
+    def conic(self) -> tuple[np.ndarray, ...]:
+        """c·(1 + k), c²·(1 + k) and 1 as 0-d arrays, for the general path (see :attr:`constants`)."""
+        return tuple(np.array(x) for x in (self.c * (1.0 + self.k), self.c * self.c * (1.0 + self.k), 1.0))
+
+
 @dataclass(frozen=True)
 class FanSummary:
     """What one object point's ray fan says about focus, per candidate vergence (arrays, mm).
@@ -102,19 +114,22 @@ class FanSummary:
     aim_mm: np.ndarray
 
 
-def _poly(values: np.ndarray, slopes: np.ndarray, r: Any) -> tuple[Any, Any]:
+def _poly(values: np.ndarray, slopes: np.ndarray, r: Any, value: bool = True) -> tuple[Any, Any]:
     """Σ a_n rⁿ and its derivative Σ n·a_n rⁿ⁻¹ at r ≥ 0, from the powers r¹…r^P.
 
     ``values`` holds a_1…a_P (zeros included), ``slopes`` 2·a_2…P·a_P: the
-    sums are two matrix products over the stacked powers.
+    sums are two matrix products over the stacked powers. ``value`` false:
+    the derivative alone (the first result is None).
     """
     flat = r.reshape(-1)
-    powers = np.empty((values.size, flat.size))
+    size = values.size if value else values.size - 1
+    powers = np.empty((size, flat.size))
     rows = list(powers)
     rows[0][...] = flat
-    for k in range(1, values.size):
-        np.multiply(rows[k - 1], flat, out=rows[k])
-    return (values @ powers).reshape(r.shape), (slopes @ powers[:-1]).reshape(r.shape)
+    for k in range(1, size):
+        np.multiply(rows[k - 1], flat, rows[k])
+    slope = (slopes @ powers[: values.size - 1]).reshape(r.shape)
+    return ((values @ powers).reshape(r.shape) if value else None), slope
 
 
 def _propagate(
@@ -135,7 +150,6 @@ def _propagate(
     last = len(surfaces) - 1
     for i, s in enumerate(surfaces):
         refract = (refract_last or i < last) and s.n_before != s.n_after
-        mu = s.n_before / s.n_after
         if not s.spherical:
             y, z0, m, l = _general_surface(s, y, z0, m, l, refract)
             lmin = np.minimum(lmin, l)
@@ -143,36 +157,37 @@ def _propagate(
             y = y - z0 / l * m
             z0 = 0.0
             if refract:
-                m = mu * m
+                m = s.constants[1] * m
                 l = np.sqrt(1.0 - m * m)  # cos of refraction; NaN: total internal reflection
         else:
-            c = s.c
-            f_term = c * (y * y + z0 * z0) - 2.0 * z0
+            c, mu0, mu2, rest, _, two = s.constants
+            f_term = c * (y * y + z0 * z0) - two * z0
             g_term = l - c * (y * m + z0 * l)
             cos_i = np.sqrt(g_term * g_term - c * f_term)  # NaN: the ray misses the sphere
             t = f_term / (g_term + cos_i)
             y = y + t * m
             z0 = z0 + t * l
             if refract:
-                cos_r = np.sqrt((mu * mu) * (cos_i * cos_i) + (1.0 - mu * mu))
-                g = cos_r - mu * cos_i
+                cos_r = np.sqrt(mu2 * (cos_i * cos_i) + rest)
+                g = cos_r - mu0 * cos_i
                 gc = g * c
-                m, l = mu * m - gc * y, mu * l + g - gc * z0
+                m, l = mu0 * m - gc * y, mu0 * l + g - gc * z0
                 lmin = np.minimum(lmin, l)
         if i < last:
-            z0 = z0 - s.gap
+            z0 = z0 - s.constants[4]
     return y, z0, m, l, lmin
 
 
 def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool) -> tuple[Any, Any, Any, Any]:
     """Intersect (and refract at) a conic or aspheric surface; z0 relative to its vertex."""
+    c, mu, mu2, _, _, two = s.constants
+    ck, _, one = s.conic
     if s.c == 0.0:
         t = -z0 / l
     else:
-        ck = s.c * (1.0 + s.k)
-        a = s.c * m * m + ck * l * l
-        b = s.c * y * m - l + ck * z0 * l
-        cc = s.c * y * y - 2.0 * z0 + ck * z0 * z0
+        a = c * m * m + ck * l * l
+        b = c * y * m - l + ck * z0 * l
+        cc = c * y * y - two * z0 + ck * z0 * z0
         t = cc / (np.sqrt(b * b - a * cc) - b)
     for _ in range(30 if s.dense else 0):
         height = y + t * m
@@ -185,13 +200,12 @@ def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool
     z0 = z0 + t * l
     if not refract:
         return y, z0, m, l
-    _, dsag = _sag(s, np.abs(y))
+    _, dsag = _sag(s, np.abs(y), value=False)
     dzdy = dsag * np.sign(y)
-    norm = np.sqrt(1.0 + dzdy * dzdy)
-    ny, nz = -dzdy / norm, 1.0 / norm
+    norm = np.sqrt(one + dzdy * dzdy)
+    ny, nz = -dzdy / norm, one / norm
     cos_i = ny * m + nz * l
-    mu = s.n_before / s.n_after
-    cos_r = np.sqrt(1.0 - mu * mu * (1.0 - cos_i * cos_i))  # NaN: total internal reflection
+    cos_r = np.sqrt(one - mu2 * (one - cos_i * cos_i))  # NaN: total internal reflection
     g = np.where(cos_i > 0.0, cos_r - mu * cos_i, np.nan)
     return y, z0, mu * m + g * ny, mu * l + g * nz
 
@@ -319,12 +333,17 @@ class RealRayTracer:
         tan_k = np.tan(theta)
         ratio = np.where(finite, tan_k / np.where(finite, tan_max, 1.0), self._fraction)
         h0 = (aim * (1.0 - v * self.first.z_e_mm))[:, None] * ratio
-        weights = self._simpson * np.where(v2 == 0.0, self._fraction, np.sin(theta))
-        l0 = np.cos(theta)
-        y, z, m, l, lmin = _propagate(self.surfaces, h0, 0.0, np.sin(theta), l0)
+        sin_k = np.sin(theta)
+        weights = self._simpson * np.where(v2 == 0.0, self._fraction, sin_k)
+        # the rays as one flat array: numpy's element-wise calls cost less on one dimension than on two
+        y, z, m, l, lmin = _propagate(self.surfaces, h0.reshape(-1), 0.0, sin_k.reshape(-1), np.cos(theta).reshape(-1))
         t = m / l
         a = y - t * (z + self.surfaces[-1].z)
-        ok = np.isfinite(a) & np.isfinite(t) & (lmin > 0.0)
+        ok = (np.isfinite(a) & np.isfinite(t) & (lmin > 0.0)).reshape(h0.shape)
+        a, t = a.reshape(h0.shape), t.reshape(h0.shape)
+        if ok.all():  # the usual case: no ray lost, nothing to mask
+            self._survivors = np.full(v.size, _FAN_SIZE)
+            return a, t, weights / weights.sum(axis=1, keepdims=True)
         weights = np.where(ok, weights, 0.0)
         weights = weights / weights.sum(axis=1, keepdims=True)
         self._survivors = ok.sum(axis=1)
@@ -385,15 +404,22 @@ class RealRayTracer:
         return self.prescription.id or self.prescription.source or "prescription"
 
 
-def _sag(s: _Surface, r: Any) -> tuple[Any, Any]:
-    """Sag and radial slope (sag, dsag/dr) of a prepared surface at r ≥ 0; NaN beyond a conic's rim."""
+def _sag(s: _Surface, r: Any, value: bool = True) -> tuple[Any, Any]:
+    """Sag and radial slope (sag, dsag/dr) of a prepared surface at r ≥ 0; NaN beyond a conic's rim.
+
+    ``value`` false: the slope alone (the sag is None).
+    """
+    c = s.constants[0]
+    _, c2k, one = s.conic
     r2 = r * r
-    root = np.sqrt(1.0 - (s.c * s.c * (1.0 + s.k)) * r2)
-    sag = s.c * r2 / (1.0 + root)
-    slope = s.c * r / root
+    root = np.sqrt(one - c2k * r2)
+    sag = c * r2 / (one + root) if value else None
+    slope = c * r / root
     if s.dense:
-        extra, extra_slope = _poly(*s.terms, r)
-        sag, slope = sag + extra, slope + extra_slope
+        extra, extra_slope = _poly(*s.terms, r, value)
+        if value:
+            sag = sag + extra
+        slope = slope + extra_slope
     return sag, slope
 
 
