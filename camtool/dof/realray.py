@@ -140,10 +140,10 @@ class _Curves:
             return
         merged = np.empty(2 * degree + 1)
         merged[0::2], merged[1::2] = nodes, odd
-        both = [np.empty(2 * degree + 1) for _ in range(4)]
-        for array, name in zip(both, ("z_best", "slope_rms", "best_blur", "aim_mm")):
+        both = {name: np.empty(2 * degree + 1) for name in ("z_best", "slope_rms", "best_blur", "edge_mm", "aim_mm")}
+        for name, array in both.items():
             array[0::2], array[1::2] = getattr(summary, name), getattr(more, name)
-        self._nodes, self._summary = merged, type(summary)(both[0], both[1], both[2], both[2], both[3])
+        self._nodes, self._summary = merged, type(summary)(**both)
         self._fit(self._nodes, self._summary)
 
     def trusts(self, criterion: str) -> bool:
