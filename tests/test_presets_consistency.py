@@ -262,6 +262,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50.0), ("sigma-400mm-f5.6-apo", 400.0),
     # 0.39 m with 1:2 implies about 87 mm (Tamron SP AF 90mm F/2.5 52E)
     ("tamron-sp-af-90mm-f2.5-macro-52e", 90.0),
+    # current-lenses.yaml: 0.39 m with 0.18x at the 70 mm end implies about 50 mm there (RF 28-70 F2 L)
+    ("canon-rf-28-70mm-f2l-usm", 70.0),
 }
 
 
