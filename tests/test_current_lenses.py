@@ -33,9 +33,33 @@ def _record(lens_id: str) -> dict:
 # (lens, focal length mm, closest focus mm, magnification at that row or None, (widest, smallest f-number or
 # None), largest magnification the page gives for the lens) as the pages each entry's source names print them
 CITED = [
-    # presentationbuilder (citing Canon Europe): 0.39 meters, 0.18x at the 70mm end; ora.it.com: 0.39m; f/2
-    ("canon-rf-28-70mm-f2l-usm", 28, 390, None, (2, None), 0.18),
-    ("canon-rf-28-70mm-f2l-usm", 70, 390, 0.18, (2, None), 0.18),
+    # Canon's Japanese pages (polynomial/camera canon_mtf_data): 最短撮影距離 / 最大撮影倍率 / 最小絞り
+    # 0.39m, 0.18倍, 22; a second page places the 0.18x at the 70mm end
+    ("canon-rf-28-70mm-f2l-usm", 28, 390, None, (2, 22), 0.18),
+    ("canon-rf-28-70mm-f2l-usm", 70, 390, 0.18, (2, 22), 0.18),
+    # 0.13m, 0.26倍, 22
+    ("canon-rf-16mm-f2.8-stm", 16, 130, 0.26, (2.8, 22), 0.26),
+    # 0.2m, 0.19倍, 16
+    ("canon-rf-20mm-f1.4l-vcm", 20, 200, 0.19, (1.4, 16), 0.19),
+    # 0.28m, 0.18倍, 16
+    ("canon-rf-35mm-f1.4l-vcm", 35, 280, 0.18, (1.4, 16), 0.18),
+    # 4.5m, 0.14倍, F11 fixed
+    ("canon-rf-600mm-f11-is-stm", 600, 4500, 0.14, (11, 11), 0.14),
+    # 0.25m, 0.12倍 at 20mm, 22
+    ("canon-rf-10-20mm-f4l-is-stm", 10, 250, None, (4, 22), 0.12),
+    ("canon-rf-10-20mm-f4l-is-stm", 20, 250, 0.12, (4, 22), 0.12),
+    # 0.2m, 0.38倍, 22
+    ("canon-rf-14-35mm-f4l-is-usm", 14, 200, None, (4, 22), 0.38),
+    ("canon-rf-14-35mm-f4l-is-usm", 35, 200, None, (4, 22), 0.38),
+    # 0.3m and 0.11倍 at 24mm, 0.35m and 0.19倍 at 50mm; 22 and 32
+    ("canon-rf-24-50mm-f4.5-6.3-is-stm", 24, 300, 0.11, (4.5, 22), 0.19),
+    ("canon-rf-24-50mm-f4.5-6.3-is-stm", 50, 350, 0.19, (6.3, 32), 0.19),
+    # 0.6m, 0.28倍 at 200mm, 32
+    ("canon-rf-70-200mm-f4l-is-usm", 70, 600, None, (4, 32), 0.28),
+    ("canon-rf-70-200mm-f4l-is-usm", 200, 600, 0.28, (4, 32), 0.28),
+    # 0.49m and 0.2倍 at 70mm, 0.68m and 0.3倍 at 200mm; 22
+    ("canon-rf-70-200mm-f2.8l-is-usm-z", 70, 490, 0.2, (2.8, 22), 0.3),
+    ("canon-rf-70-200mm-f2.8l-is-usm-z", 200, 680, 0.3, (2.8, 22), 0.3),
 ]
 
 

@@ -264,6 +264,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("tamron-sp-af-90mm-f2.5-macro-52e", 90.0),
     # current-lenses.yaml: 0.39 m with 0.18x at the 70 mm end implies about 50 mm there (RF 28-70 F2 L)
     ("canon-rf-28-70mm-f2l-usm", 70.0),
+    # internal focusing: 4.5 m with 0.14x, 0.35 m with 0.19x and 0.49 m with 0.2x imply about 485 mm, 47 mm
+    # and 68 mm (RF 600mm F11, RF 24-50mm at 50 mm, RF 70-200mm F2.8 Z at 70 mm)
+    ("canon-rf-600mm-f11-is-stm", 600.0), ("canon-rf-24-50mm-f4.5-6.3-is-stm", 50.0),
+    ("canon-rf-70-200mm-f2.8l-is-usm-z", 70.0),
 }
 
 
