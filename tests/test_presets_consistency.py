@@ -268,6 +268,9 @@ SHORTER_AT_CLOSE_FOCUS = {
     # and 68 mm (RF 600mm F11, RF 24-50mm at 50 mm, RF 70-200mm F2.8 Z at 70 mm)
     ("canon-rf-600mm-f11-is-stm", 600.0), ("canon-rf-24-50mm-f4.5-6.3-is-stm", 50.0),
     ("canon-rf-70-200mm-f2.8l-is-usm-z", 70.0),
+    # internal focusing: 0.4 m with 0.15x, 0.85 m with 0.12x and 0.7 m with 0.26x imply about 45, 81 and
+    # 115 mm (RF 50mm F1.4 L VCM, RF 85mm F1.2 L DS, RF 135mm F1.8 L)
+    ("canon-rf-50mm-f1.4l-vcm", 50.0), ("canon-rf-85mm-f1.2l-usm-ds", 85.0), ("canon-rf-135mm-f1.8l-is-usm", 135.0),
 }
 
 
