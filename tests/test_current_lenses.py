@@ -68,6 +68,12 @@ CITED = [
     ("canon-rf-135mm-f1.8l-is-usm", 135, 700, 0.26, (1.8, 22), 0.26),
     # 4.3m, 0.29倍, 64
     ("canon-rf-1200mm-f8l-is-usm", 1200, 4300, 0.29, (8, 64), 0.29),
+    # notes quoting Fujifilm's pages (jalangle/ghtns photogear): F5.6 (Wide) - F8 (Telephoto), F22, 2.4m,
+    # 0.24x (Telephoto)
+    ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 150, 2400, None, (5.6, 22), 0.24),
+    ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600, 2400, 0.24, (8, 22), 0.24),
+    # 3.5, 32, 32cm, 0.15x
+    ("fujifilm-gf30mm-f3.5-r-wr", 30, 320, 0.15, (3.5, 32), 0.15),
 ]
 
 
