@@ -3,6 +3,7 @@ magnification the focusing model derives at the closest focus against the publis
 
 from __future__ import annotations
 
+from itertools import pairwise
 from pathlib import Path
 
 import pytest
@@ -136,7 +137,7 @@ def test_the_model_never_magnifies_more_than_the_page_says(lens_id):
     lens = load_db().lens(lens_id)
     if lens.is_zoom:
         stops = sorted({*(f for f, _d, _m in lens.close_focus), lens.focal_min_mm, lens.focal_max_mm})
-        focals = sorted({*stops, *((a + b) / 2 for a, b in zip(stops, stops[1:], strict=False))})
+        focals = sorted({*stops, *((a + b) / 2 for a, b in pairwise(stops))})
     else:
         focals = [lens.focal_length_mm]
     for f in focals:
