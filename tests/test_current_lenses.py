@@ -69,6 +69,8 @@ CITED = [
     ("canon-rf-135mm-f1.8l-is-usm", 135, 700, 0.26, (1.8, 22), 0.26),
     # 4.3m, 0.29倍, 64
     ("canon-rf-1200mm-f8l-is-usm", 1200, 4300, 0.29, (8, 64), 0.29),
+    # 2.5m, 0.17倍, 32
+    ("canon-rf-400mm-f2.8l-is-usm", 400, 2500, 0.17, (2.8, 32), 0.17),
     # notes quoting Fujifilm's pages (jalangle/ghtns photogear): F5.6 (Wide) - F8 (Telephoto), F22, 2.4m,
     # 0.24x (Telephoto)
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 150, 2400, None, (5.6, 22), 0.24),

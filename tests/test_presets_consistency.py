@@ -271,6 +271,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     # internal focusing: 0.4 m with 0.15x, 0.85 m with 0.12x and 0.7 m with 0.26x imply about 45, 81 and
     # 115 mm (RF 50mm F1.4 L VCM, RF 85mm F1.2 L DS, RF 135mm F1.8 L)
     ("canon-rf-50mm-f1.4l-vcm", 50.0), ("canon-rf-85mm-f1.2l-usm-ds", 85.0), ("canon-rf-135mm-f1.8l-is-usm", 135.0),
+    # 2.5 m with 0.17x implies about 311 mm (RF 400mm F2.8 L, internal focusing)
+    ("canon-rf-400mm-f2.8l-is-usm", 400.0),
     # 2.4 m with 0.24x at the long end implies about 375 mm there (Fujifilm XF150-600mm)
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600.0),
 }
