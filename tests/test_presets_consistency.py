@@ -262,6 +262,19 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50.0), ("sigma-400mm-f5.6-apo", 400.0),
     # 0.39 m with 1:2 implies about 87 mm (Tamron SP AF 90mm F/2.5 52E)
     ("tamron-sp-af-90mm-f2.5-macro-52e", 90.0),
+    # current-lenses.yaml: 0.39 m with 0.18x at the 70 mm end implies about 50 mm there (RF 28-70 F2 L)
+    ("canon-rf-28-70mm-f2l-usm", 70.0),
+    # internal focusing: 4.5 m with 0.14x, 0.35 m with 0.19x and 0.49 m with 0.2x imply about 485 mm, 47 mm
+    # and 68 mm (RF 600mm F11, RF 24-50mm at 50 mm, RF 70-200mm F2.8 Z at 70 mm)
+    ("canon-rf-600mm-f11-is-stm", 600.0), ("canon-rf-24-50mm-f4.5-6.3-is-stm", 50.0),
+    ("canon-rf-70-200mm-f2.8l-is-usm-z", 70.0),
+    # internal focusing: 0.4 m with 0.15x, 0.85 m with 0.12x and 0.7 m with 0.26x imply about 45, 81 and
+    # 115 mm (RF 50mm F1.4 L VCM, RF 85mm F1.2 L DS, RF 135mm F1.8 L)
+    ("canon-rf-50mm-f1.4l-vcm", 50.0), ("canon-rf-85mm-f1.2l-usm-ds", 85.0), ("canon-rf-135mm-f1.8l-is-usm", 135.0),
+    # 2.5 m with 0.17x implies about 311 mm (RF 400mm F2.8 L, internal focusing)
+    ("canon-rf-400mm-f2.8l-is-usm", 400.0),
+    # 2.4 m with 0.24x at the long end implies about 375 mm there (Fujifilm XF150-600mm)
+    ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600.0),
 }
 
 
