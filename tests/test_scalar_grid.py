@@ -28,6 +28,9 @@ EXTRA = [
     "camtool dof -f 100 -N 2.8,8,22 -s 0.4m,1m --pupil-mag 0.6 --model thick --diffraction",
     "camtool dof --lens dgauss100-lens -N 2,4,8 -s 1m,5m --model auto",
     "camtool dof --lens dgauss100-lens -N 2,8 -s 1m,5m --model all",
+    # a traced lens imports numpy anyway: its grid is computed at once (its interpolants are built in one batch)
+    "camtool dof --lens dgauss100-lens -N 2,2.8,4,5.6,8,11,16,22 -s 1m,1.7m,2.4m,3.1m,3.8m,10m --model raytrace",
+    "camtool dof --lens telephoto127-lens -N 8,11,16 -s 2m,5m,20m --criterion mtf:0.3@coc",
     "camtool dof -f 50 -N 2.8,8 -s 1m,3m --model all --diffraction",
     "camtool dof -f 35 -N 2,4 -s 2m --camera arri-alexa-35 --squeeze 2",
     "camtool dof -f 50 -N 1.4,2.8,8,16,22,32 -s 0.5m,2m,10m,inf --model auto --pupil-mag 0.7 --hiatus 5",

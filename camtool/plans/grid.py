@@ -15,7 +15,8 @@ A grid of a few combinations (at most :data:`SCALAR_ROWS`, a :class:`Grid`
 made with ``scalar=True``) is computed one combination at a time with plain
 floats instead: the command's formulas then run on Python's floats, and a
 short list (``-N 2.8,4,5.6``) answers without importing numpy, whose import
-costs more than the rows (docs/design.md §7). JSON, CSV and ``--field`` rows
+costs more than the rows (docs/design.md §7); a grid whose combinations import
+numpy anyway (a traced lens) is computed as a whole. JSON, CSV and ``--field`` rows
 are written as they come; a table, whose footer and sharp-zone axis are drawn
 from every row at once, is drawn from the combinations' plans merged (where
 the command can, see :class:`camtool.cli.rows.Output`), else computed
