@@ -3,32 +3,25 @@ magnification the focusing model derives at the closest focus against the publis
 
 from __future__ import annotations
 
-from itertools import pairwise
-from pathlib import Path
-
 import pytest
-import yaml
 from cli_helpers import run, run_json
-from conftest import point_xdg_at, presets_home
+from lens_checks import (  # noqa: F401 - isolated: an autouse fixture
+    DB,
+    check_cited_row,
+    check_never_magnifies_more,
+    isolated,
+    lens_records,
+    name_key,
+    record_of,
+    taken_elsewhere,
+)
 
 from camtool.geometry.closeup import internal_focus_at_distance
 from camtool.presets import load_db
-from camtool.presets.focusing import focus_model, row_magnification
+from camtool.presets.focusing import focus_model
 
-DB = Path(__file__).resolve().parents[1] / "lens_db"
 FILE = DB / "current-lenses.yaml"
-RECORDS = yaml.safe_load(FILE.read_text(encoding="utf-8"))["lenses"]
-
-
-@pytest.fixture(autouse=True)
-def isolated(request, monkeypatch, shared_presets_home):
-    root = presets_home(request, shared_presets_home, "tmp_path")
-    point_xdg_at(root, monkeypatch)
-    return root
-
-
-def _record(lens_id: str) -> dict:
-    return next(r for r in RECORDS if r["id"] == lens_id)
+RECORDS = lens_records(FILE)
 
 
 # (lens, focal length mm, closest focus mm, magnification at that row or None, (widest, smallest f-number or
@@ -91,42 +84,18 @@ def test_every_entry_is_checked_against_its_pages():
 @pytest.mark.parametrize(("lens_id", "focal", "distance", "magnification", "apertures", "largest"), CITED,
                          ids=[f"{c[0]}@{c[1]}" for c in CITED])
 def test_figures_against_the_cited_pages(lens_id, focal, distance, magnification, apertures, largest):
-    record = _record(lens_id)
-    zoom = "focal_min_mm" in record
-    long_end = zoom and focal == record["focal_max_mm"]
-    if zoom:
-        row = next(r for r in record["close_focus"] if r["focal_length_mm"] == focal)
-    else:
-        assert record["focal_length_mm"] == focal
-        row = record
-    assert row["min_focus_mm"] == distance
-    if magnification is None:
-        assert "max_magnification" not in row
-    else:
-        assert row["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    record = record_of(RECORDS, lens_id)
+    assert distance is not None
+    check_cited_row(record, focal, distance, magnification, apertures)
     assert record["max_magnification"] == pytest.approx(largest, abs=0.0006)
-    widest, smallest = apertures
-    assert record["f_number_min_tele" if long_end and "f_number_min_tele" in record else "f_number_min"] == widest
-    assert record.get("f_number_max_tele" if long_end and "f_number_max_tele" in record else "f_number_max") == smallest
-    if smallest is None:
-        assert "f_number_max not found" in " ".join(record["notes"].split())
-
-
-def _key(name: str) -> str:
-    return "".join(ch for ch in name.lower() if ch.isalnum())
 
 
 def test_every_entry_is_new_and_names_its_mount():
     # no id, alias or display name already in another lens_db file
-    taken, names = set(), set()
-    for path in sorted(DB.glob("*.yaml")):
-        if path != FILE:
-            for record in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []:
-                taken |= {record["id"], *record.get("aliases", [])}
-                names.add(_key(record.get("name", record["id"])))
+    taken, names = taken_elsewhere(FILE)
     for record in RECORDS:
         assert not ({record["id"], *record.get("aliases", [])} & taken), record["id"]
-        assert _key(record["name"]) not in names, record["name"]
+        assert name_key(record["name"]) not in names, record["name"]
         assert record["mount"], record["id"]
         assert record["max_magnification"] and record["min_focus_mm"], record["id"]
         assert "approximate" not in record or record["notes"], record["id"]
@@ -136,23 +105,7 @@ def test_every_entry_is_new_and_names_its_mount():
 @pytest.mark.parametrize("lens_id", [r["id"] for r in RECORDS])
 def test_the_model_never_magnifies_more_than_the_page_says(lens_id):
     # at every published row, at both ends, and halfway between neighbouring rows
-    lens = load_db().lens(lens_id)
-    if lens.is_zoom:
-        stops = sorted({*(f for f, _d, _m in lens.close_focus), lens.focal_min_mm, lens.focal_max_mm})
-        focals = sorted({*stops, *((a + b) / 2 for a, b in pairwise(stops))})
-    else:
-        focals = [lens.focal_length_mm]
-    for f in focals:
-        model = focus_model(lens, f)
-        m, _ = internal_focus_at_distance(model, model.min_focus_mm)
-        assert 0 < m <= lens.max_magnification * 1.001, (lens_id, f, m)
-        if not lens.is_zoom:
-            assert m == pytest.approx(lens.max_magnification, rel=1e-6)
-    for f, distance, published in lens.close_focus:
-        modelled = row_magnification(lens, f, distance, published)
-        assert modelled is not None and modelled <= lens.max_magnification + 1e-12
-        if published is not None:
-            assert modelled == pytest.approx(published, rel=1e-9)
+    check_never_magnifies_more(load_db().lens(lens_id))
 
 
 def test_rf_28_70_reaches_its_published_maximum_at_70mm_and_less_at_28mm():

@@ -4,31 +4,25 @@ model derives from them against what the pages say of the lens in use."""
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import pytest
-import yaml
 from cli_helpers import run, run_json
-from conftest import point_xdg_at, presets_home
+from lens_checks import (  # noqa: F401 - isolated: an autouse fixture
+    DB,
+    check_cited_row,
+    check_never_magnifies_more,
+    isolated,
+    lens_records,
+    name_key,
+    record_of,
+    taken_elsewhere,
+)
 
-from camtool.geometry.closeup import internal_focus_at_distance
 from camtool.presets import load_db
-from camtool.presets.focusing import focus_model, row_magnification
+from camtool.presets.focusing import row_magnification
 
-DB = Path(__file__).resolve().parents[1] / "lens_db"
 FILE = DB / "maker-lenses.yaml"
-RECORDS = yaml.safe_load(FILE.read_text(encoding="utf-8"))["lenses"]
-
-
-@pytest.fixture(autouse=True)
-def isolated(request, monkeypatch, shared_presets_home):
-    root = presets_home(request, shared_presets_home, "tmp_path")
-    point_xdg_at(root, monkeypatch)
-    return root
-
-
-def _record(lens_id: str) -> dict:
-    return next(r for r in RECORDS if r["id"] == lens_id)
+RECORDS = lens_records(FILE)
 
 
 # (lens, focal length mm, closest focus mm, magnification or None, f-number range) as the page each entry's
@@ -72,73 +66,28 @@ def test_every_entry_is_checked_against_its_page():
 @pytest.mark.parametrize(("lens_id", "focal", "distance", "magnification", "apertures", "largest"), CITED,
                          ids=[f"{c[0]}@{c[1]}" for c in CITED])
 def test_figures_against_the_cited_pages(lens_id, focal, distance, magnification, apertures, largest):
-    record = _record(lens_id)
-    zoom = "focal_min_mm" in record
-    long_end = zoom and focal == record["focal_max_mm"]
-    if zoom:
-        row = next(r for r in record["close_focus"] if r["focal_length_mm"] == focal)
-    else:
-        assert record["focal_length_mm"] == focal
-        row = record
-    assert row.get("min_focus_mm") == distance
-    if magnification is None:
-        assert "max_magnification" not in row
-    else:
-        assert row["max_magnification"] == pytest.approx(magnification, abs=0.0006)  # stored to three places
+    record = record_of(RECORDS, lens_id)
+    check_cited_row(record, focal, distance, magnification, apertures)
     assert record["max_magnification"] == pytest.approx(largest, abs=0.0006)
-    widest, smallest = apertures
-    assert record["f_number_min_tele" if long_end and "f_number_min_tele" in record else "f_number_min"] == widest
-    key = "f_number_max_tele" if long_end and "f_number_max_tele" in record else "f_number_max"
-    assert record.get(key) == smallest
-    # a figure left out is said to be: the smallest aperture "not found"
-    if smallest is None:
-        assert "f_number_max not found" in " ".join(record["notes"].split())
 
 
 def test_every_entry_names_its_mount_and_is_new():
     # lens_db/README.md: within one tier an id or alias names one preset; the makers' lenses already in
     # lenses.yaml (the RF 24-105 F4-7.1, the Z 24-120, the FE 24-70 GM II ...) are not entered again
-    taken, names = set(), set()
-    for path in sorted(DB.glob("*.yaml")):
-        if path != FILE:
-            for record in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []:
-                taken |= {record["id"], *record.get("aliases", [])}
-                names.add(_key(record.get("name", record["id"])))
+    taken, names = taken_elsewhere(FILE)
     for record in RECORDS:
         assert not ({record["id"], *record.get("aliases", [])} & taken), record["id"]
-        assert _key(record["name"]) not in names, record["name"]
+        assert name_key(record["name"]) not in names, record["name"]
         assert record["mount"] and record["mount"] != "various", record["id"]
         assert record.get("max_magnification"), record["id"]  # an entry needs its published maximum
         assert load_db().lens(record["id"]).tier == "shipped"
-
-
-def _key(name: str) -> str:
-    return "".join(ch for ch in name.lower() if ch.isalnum())
-
-
-def _focal_lengths(lens) -> list[float]:
-    if not lens.is_zoom:
-        return [lens.focal_length_mm]
-    rows = [f for f, _d, _m in lens.close_focus]
-    ends = [lens.focal_min_mm, lens.focal_max_mm]
-    between = [(a + b) / 2 for a, b in zip(sorted({*rows, *ends}), sorted({*rows, *ends})[1:], strict=False)]
-    return sorted({*rows, *ends, *between})
 
 
 @pytest.mark.parametrize("lens_id", [r["id"] for r in RECORDS])
 def test_the_model_never_magnifies_more_than_the_page_says(lens_id):
     # every row of a zoom (and every focal length between two rows) reaches at its closest focus no more
     # than the page's maximum; a prime reaches exactly its published figure there
-    lens = load_db().lens(lens_id)
-    for f in _focal_lengths(lens):
-        model = focus_model(lens, f)
-        m, _ = internal_focus_at_distance(model, model.min_focus_mm)
-        assert m <= lens.max_magnification * 1.001, (lens_id, f, m)
-        if not lens.is_zoom:
-            assert m == pytest.approx(lens.max_magnification, rel=1e-6)
-    for f, distance, published in lens.close_focus:
-        modelled = row_magnification(lens, f, distance, published)
-        assert modelled is not None and modelled <= lens.max_magnification + 1e-12
+    check_never_magnifies_more(load_db().lens(lens_id))
 
 
 def test_unpublished_rows_follow_unit_focusing_where_it_stays_below_the_maximum():

@@ -4,32 +4,18 @@ the model derives from them against what the pages say of the lens in use."""
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import pytest
-import yaml
 from cli_helpers import run, run_json
-from conftest import point_xdg_at, presets_home
+from lens_checks import DB, check_cited_row, isolated, lens_records, record_of, taken_elsewhere  # noqa: F401
 
 from camtool.geometry.closeup import internal_focus_at_distance
 from camtool.geometry.projection import half_angle_deg, image_height_mm
 from camtool.presets import load_db
 from camtool.presets.focusing import focus_model
 
-DB = Path(__file__).resolve().parents[1] / "lens_db"
 FILE = DB / "third-party-lenses.yaml"
-RECORDS = yaml.safe_load(FILE.read_text(encoding="utf-8"))["lenses"]
-
-
-@pytest.fixture(autouse=True)
-def isolated(request, monkeypatch, shared_presets_home):
-    root = presets_home(request, shared_presets_home, "tmp_path")
-    point_xdg_at(root, monkeypatch)
-    return root
-
-
-def _record(lens_id: str) -> dict:
-    return next(r for r in RECORDS if r["id"] == lens_id)
+RECORDS = lens_records(FILE)
 
 
 # (lens, focal length mm, closest focus mm, magnification or None, f-number range) as the page each entry's
@@ -186,7 +172,7 @@ def test_every_entry_is_checked_against_its_page():
 
 @pytest.mark.parametrize(("lens_id", "projection", "field"), FISHEYES, ids=[f[0] for f in FISHEYES])
 def test_fisheye_mappings_against_the_cited_pages(lens_id, projection, field):
-    record = _record(lens_id)
+    record = record_of(RECORDS, lens_id)
     assert (record["projection"], record["field_max_deg"]) == (projection, field)
     lens = load_db().lens(lens_id)
     assert (lens.projection, lens.field_max_deg) == (projection, float(field))
@@ -195,37 +181,16 @@ def test_fisheye_mappings_against_the_cited_pages(lens_id, projection, field):
 @pytest.mark.parametrize(("lens_id", "focal", "distance", "magnification", "apertures"), CITED,
                          ids=[f"{c[0]}@{c[1]}" for c in CITED])
 def test_figures_against_the_cited_pages(lens_id, focal, distance, magnification, apertures):
-    record = _record(lens_id)
-    zoom = "focal_min_mm" in record
-    long_end = zoom and focal == record["focal_max_mm"]
-    if zoom:
-        row = next(r for r in record["close_focus"] if r["focal_length_mm"] == focal)
-    else:
-        assert record["focal_length_mm"] == focal
-        row = record
-    assert row.get("min_focus_mm") == distance
-    if magnification is None:
-        assert "max_magnification" not in row
-    else:
-        assert row["max_magnification"] == pytest.approx(magnification, abs=0.0006)  # stored to three places
-    widest, smallest = apertures
-    assert record["f_number_min_tele" if long_end and "f_number_min_tele" in record else "f_number_min"] == widest
-    key = "f_number_max_tele" if long_end and "f_number_max_tele" in record else "f_number_max"
-    assert record.get(key) == smallest
-    # a figure left out is said to be: the smallest aperture "not found", a missing magnification approximate
-    if smallest is None:
-        assert "f_number_max not found" in " ".join(record["notes"].split())
+    record = record_of(RECORDS, lens_id)
+    check_cited_row(record, focal, distance, magnification, apertures)
+    # a closest focus left out is said to be "not found" too
     if distance is None:
         assert "min_focus_mm" in record["notes"] and "not found" in record["notes"]
 
 
 def test_every_entry_names_its_mounts_and_is_a_new_id():
     # lens_db/README.md: within one tier an id or alias names one preset; the entries of lenses.yaml are kept
-    taken = set()
-    for path in sorted(DB.glob("*.yaml")):
-        if path != FILE:
-            for record in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []:
-                taken |= {record["id"], *record.get("aliases", [])}
+    taken, _names = taken_elsewhere(FILE)
     for record in RECORDS:
         assert not ({record["id"], *record.get("aliases", [])} & taken), record["id"]
         assert record["mount"] and record["mount"] != "various", record["id"]
@@ -360,7 +325,7 @@ def test_sigma_8mm_circle_points_to_the_equisolid_mapping():
 ])
 def test_a_zooms_single_published_magnification_is_its_lens_level_maximum(lens_id, magnification):
     # a page giving one magnification without its focal length: it bounds every row, none claims it
-    record = _record(lens_id)
+    record = record_of(RECORDS, lens_id)
     assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
     assert all("max_magnification" not in row for row in record["close_focus"])
     lens = load_db().lens(lens_id)
