@@ -843,18 +843,26 @@ def raytrace_dof(
     coc, focus_mm = float(coc_mm), float(distance_mm)
     _, v_focus, z_film, hyper, v_near, v_far = _solve(curves, focus_mm, distance_from, coc, criterion)
     focus = _real_focus(curves, v_focus, z_film, 0.0)
-    z_near = _object_z(curves, v_near)
     z_ref = {"sensor": z_film, "lens": fo.z_h_mm, "entrance_pupil": fo.z_e_mm}[distance_from]
+    near, far, front, rear = limits_from_vergences(z_ref, _object_z(curves, v_near), focus.object_z_mm, focus_mm,
+                                                   v_focus, v_far)
+    hyperfocal = _hyperfocal_distance(curves, hyper, distance_from)
+    return DofLimits(near, far, front, rear, front + rear, hyperfocal, focus.magnification)
+
+
+def limits_from_vergences(z_ref: float, z_near: float, object_z: float, distance_mm: float, v_focus: float,
+                          v_far: float) -> tuple[float, float, float, float]:
+    """(near, far, front, rear) in mm of a focus ``distance_mm`` from the plane at ``z_ref``, its object at
+    ``object_z``: the near limit's object at ``z_near``, the far limit at the vergence ``v_far`` and the focus at
+    ``v_focus`` (vergences from the entrance pupil, 1/mm; 0 is infinity)."""
     if v_focus == 0.0:
         front = math.inf
         near = z_ref - z_near
     else:
-        front = z_near - focus.object_z_mm
-        near = focus_mm - front
+        front = z_near - object_z
+        near = distance_mm - front
     rear = math.inf if v_far == 0.0 else (1.0 / v_far - 1.0 / v_focus)
-    far = focus_mm + rear
-    hyperfocal = _hyperfocal_distance(curves, hyper, distance_from)
-    return DofLimits(near, far, front, rear, front + rear, hyperfocal, focus.magnification)
+    return near, distance_mm + rear, front, rear
 
 
 def _hyperfocal_distance(curves: _Curves, hyper: float | None, distance_from: str) -> float:

@@ -118,7 +118,7 @@ def prescription_wave_dof(prescription: Any, f_number: Any, coc_mm: Any, distanc
         rows = [prescription_wave_dof(prescription, float(a), float(b), float(e), distance_from, criterion,
                                       field_deg) for a, b, e in zip(ns.flat, cs.flat, ds.flat)]
         return DofLimits(*(np.array(column, float).reshape(ns.shape) for column in zip(*rows)))
-    from camtool.dof.realray import _check_scene, closest_focus_mm, focus_for_film, real_focus
+    from camtool.dof.realray import _check_scene, closest_focus_mm, focus_for_film, limits_from_vergences, real_focus
     from camtool.optics.transfer import defocus_at_level
     from camtool.optics.wavefront import radial_mtf, wavefront_tracer
 
@@ -201,16 +201,9 @@ def prescription_wave_dof(prescription: Any, f_number: Any, coc_mm: Any, distanc
         near_v = v_max  # sharp to the closest object the lens can focus on
     if far_v is None or v_focus == 0.0 or (hyper_film is not None and film <= hyper_film):
         far_v = 0.0
-    z_near = fo.z_e_mm - 1.0 / near_v
     z_ref = {"sensor": film, "lens": fo.z_h_mm, "entrance_pupil": fo.z_e_mm}[distance_from]
-    d = float(distance_mm)
-    if v_focus == 0.0:
-        front = math.inf
-        near = z_ref - z_near
-    else:
-        front = z_near - focus.object_z_mm
-        near = d - front
-    rear = math.inf if far_v == 0.0 else 1.0 / far_v - 1.0 / v_focus
+    near, far, front, rear = limits_from_vergences(z_ref, fo.z_e_mm - 1.0 / near_v, focus.object_z_mm,
+                                                   float(distance_mm), v_focus, far_v)
     hyperfocal = math.inf
     if hyper_film is not None:
         at_h = focus_for_film(prescription, n_f, hyper_film)
@@ -219,7 +212,7 @@ def prescription_wave_dof(prescription: Any, f_number: Any, coc_mm: Any, distanc
             hyperfocal = z_ref_h - at_h.object_z_mm
         else:
             hyperfocal = closest_focus_mm(prescription, n_f, distance_from)  # every focus keeps infinity sharp
-    return DofLimits(near, d + rear, front, rear, front + rear, hyperfocal, focus.magnification)
+    return DofLimits(near, far, front, rear, front + rear, hyperfocal, focus.magnification)
 
 
 _HYPERFOCAL_FILM: dict[tuple[Any, ...], float | None] = {}
