@@ -247,7 +247,7 @@ def one_at_a_time(grid: Grid, first: Output, compute: Callable[[], Output], tabl
             outs.append(compute())
         if not table:
             return outs
-        drawn = first.redraw(outs) if all(out.redraw is not None for out in outs) else None
+        drawn = first.redraw(outs)  # every output of the command can say how (a T-stop's cannot: refused above)
     except click.ClickException:
         return None
     return None if drawn is None else [drawn]

@@ -64,10 +64,12 @@ def merge_tables(tables: Sequence[DofTable]) -> DofTable | None:
            != (first.path, first.by_magnification, first.lens_focus_setting, "") for t in tables):
         return None
     rungs = {t.hyperfocal_model for t in tables} - {None}  # the H rung, where some row's limits came from another
+    if len(rungs) > 1:
+        return None
     return DofTable([row for t in tables for row in t.rows], first.path, any(t.close for t in tables),
-                    any(t.focus_column for t in tables), rungs.pop() if len(rungs) == 1 else None,
+                    any(t.focus_column for t in tables), next(iter(rungs), None),
                     frozenset().union(*(t.dominated_by for t in tables)), first.by_magnification,
-                    first.lens_focus_setting, "") if len(rungs) <= 1 else None
+                    first.lens_focus_setting, "")
 
 
 def lens_behind_converter(lens: LensData | None, *, teleconverter: float | None, model: str,
