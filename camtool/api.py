@@ -712,8 +712,12 @@ def circle_of_confusion(sensor_width_mm: SensorSideReal, sensor_height_mm: Senso
 
 @_checked
 def composition(focal_length_mm: FocalLength, magnification: Magnification, sensor_width_mm: SensorSide,
-                sensor_height_mm: SensorSide) -> Composition:
+                sensor_height_mm: SensorSide, *, projection: Projection = "rectilinear",
+                field_max_deg: OptionalFieldDeg = None) -> Composition:
     """Where to stand for a framing: the distance, field and angles at a magnification (see ``camtool compose``).
+
+    A fisheye ``projection`` (at most ``field_max_deg``, 180° when None) gives the angles :func:`field_of_view`
+    gives at that magnification and the fields 2u·tan(α/2); the distances are the thin lens's at the centre.
 
     Examples
     --------
@@ -722,8 +726,12 @@ def composition(focal_length_mm: FocalLength, magnification: Magnification, sens
     (5100.0, 5202.0, 1800.0)
     """
     from camtool.geometry.compose import composition as run
+    from camtool.geometry.compose import fisheye_composition
 
-    return run(focal_length_mm, magnification, sensor_width_mm, sensor_height_mm)
+    shot = run(focal_length_mm, magnification, sensor_width_mm, sensor_height_mm)
+    if projection == "rectilinear":
+        return shot
+    return fisheye_composition(shot, sensor_width_mm, sensor_height_mm, projection, field_max_deg)
 
 
 @_checked

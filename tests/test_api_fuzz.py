@@ -233,9 +233,22 @@ def defect(function: Any, kwargs: dict[str, Any]) -> str | None:
             return f"{field} is a {type(value).__name__}"
         if math.isnan(value):
             return f"{field} is NaN"
-        if math.isinf(value) and (value < 0 or field.split(".")[-1] not in INFINITE_OK):
+        if math.isinf(value) and (value < 0 or field.split(".")[-1] not in INFINITE_OK) \
+                and not _unbounded_field(result, field):
             return f"{field} is {value}"
     return None
+
+
+# A fisheye's field at the subject is unbounded from 180°: infinite exactly where its angle is 180° or more.
+FIELD_ANGLES = {"field_width_mm": "horizontal_deg", "field_height_mm": "vertical_deg"}
+
+
+def _unbounded_field(result: Any, field: str) -> bool:
+    angle = FIELD_ANGLES.get(field)
+    if angle is None or not hasattr(result, angle):
+        return False
+    size, degrees = np.broadcast_arrays(np.asarray(getattr(result, field), float), np.asarray(getattr(result, angle)))
+    return bool(np.all(degrees[np.isinf(size)] >= 180.0))
 
 
 def _shown(kwargs: dict[str, Any]) -> str:

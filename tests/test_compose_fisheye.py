@@ -70,3 +70,14 @@ def test_a_fill_no_flat_subject_reaches_is_one_line() -> None:
     result = run("compose", "--subject-size", "1m", "--fill", "1", "--fill-axis", "width", "-f", "8",
                  "--projection", "orthographic")
     assert result.exit_code == 2 and result.stderr.count("\n") == 1 and "--fill" in result.stderr
+
+
+@pytest.mark.parametrize("projection", FISHEYES)
+def test_the_api_composition_is_the_commands_at_a_magnification(projection: str) -> None:
+    import camtool
+
+    (row,) = run_json("compose", "-m", "0.02", "-f", "12", "--projection", projection)
+    api = camtool.composition(12, 0.02, 36, 24, projection=projection)
+    for key in ("distance_mm", "magnification", "horizontal_deg", "vertical_deg", "field_width_mm", "field_height_mm"):
+        value = getattr(api, key)
+        assert row[key] == (None if math.isinf(value) else value), key  # None: ∞ in JSON

@@ -165,6 +165,30 @@ def composition(focal_length_mm: Any, magnification: Any, width_mm: Any, height_
     )
 
 
+def fisheye_composition(shot: Composition, width_mm: Any, height_mm: Any, projection: str,
+                        field_max_deg: float | None = None) -> Composition:
+    """``shot`` through a lens of mapping ``projection`` (at most ``field_max_deg``): the angles of
+    :func:`camtool.geometry.projection.fisheye_field_of_view` at its magnification, and the fields 2u·tan(α/2) at its
+    lens distance (unbounded from 180°); its distances and magnification stay the thin lens's, those at the centre.
+
+    Examples
+    --------
+    A 15 mm equisolid fisheye at m = 0.0125 on full frame: 4·asin(18/(2·15·1.0125)) = 145.4° across, at
+    u = 15·(1 + 1/0.0125) = 1215 mm a field of 2u·tan(72.7°) = 7.79 m:
+
+    >>> c = fisheye_composition(composition(15.0, 0.0125, 36.0, 24.0), 36.0, 24.0, "equisolid")
+    >>> round(c.horizontal_deg, 1), round(c.field_width_mm)
+    (145.4, 7793)
+    """
+    from camtool.geometry.projection import fisheye_field_of_view, fisheye_field_size_mm
+
+    angles = fisheye_field_of_view(width_mm, height_mm, shot.focal_length_mm, projection, shot.magnification, 1.0,
+                                   field_max_deg)
+    return shot._replace(horizontal_deg=angles.horizontal_deg, vertical_deg=angles.vertical_deg,
+                         field_width_mm=fisheye_field_size_mm(angles.horizontal_deg, shot.lens_distance_mm),
+                         field_height_mm=fisheye_field_size_mm(angles.vertical_deg, shot.lens_distance_mm))
+
+
 def _check_offset(focal_length_mm: Any, magnification: Any, offset_mm: Any) -> Any:
     """Return s (from the lens) after checking that the plane lies in front of the lens."""
     s = lens_distance_mm(focal_length_mm, magnification)

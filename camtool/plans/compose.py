@@ -71,7 +71,7 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
     import numpy as np
 
     from camtool.dof.ladder import depth_of_field
-    from camtool.geometry.compose import composition, magnification_for_fill, plane_view
+    from camtool.geometry.compose import composition, fisheye_composition, magnification_for_fill, plane_view
 
     f, n, c = focal_length_mm, f_number, coc_mm
     values: dict[str, Any] = {"f_number": n, "coc_mm": c, "distance_from": distance_from,
@@ -87,12 +87,7 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
         m = magnification_for_fill(subject_size_mm, fill, frame_mm)
     shot = composition(f, m, sensor_width_mm, sensor_height_mm)
     if fisheye:
-        from camtool.geometry.projection import fisheye_field_of_view, fisheye_field_size_mm
-
-        angles = fisheye_field_of_view(sensor_width_mm, sensor_height_mm, f, projection, m, 1.0, field_max_deg)
-        shot = shot._replace(horizontal_deg=angles.horizontal_deg, vertical_deg=angles.vertical_deg,
-                             field_width_mm=fisheye_field_size_mm(angles.horizontal_deg, shot.lens_distance_mm),
-                             field_height_mm=fisheye_field_size_mm(angles.vertical_deg, shot.lens_distance_mm))
+        shot = fisheye_composition(shot, sensor_width_mm, sensor_height_mm, projection, field_max_deg)
     distance = shot.distance_mm if distance_from == "sensor" else shot.lens_distance_mm
     values.update({key: getattr(shot, key) for key in ("focal_length_mm", "magnification", "horizontal_deg",
                                                         "vertical_deg", "field_width_mm", "field_height_mm")})
@@ -115,6 +110,8 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
                 raise
             raise DomainError(f"{name}_mm", given, "less than the distance from the subject to the lens's front "
                               "focal point") from None
+        from camtool.geometry.projection import fisheye_field_size_mm
+
         visible = view.visible_width_mm if not fisheye else fisheye_field_size_mm(
             shot.horizontal_deg, shot.lens_distance_mm + offset)
         values.update({f"{name}_scale": view.scale, f"{name}_width_mm": visible,
