@@ -38,11 +38,25 @@ PRESET_COMMAND = ("dof", "-f", "50", "-N", "8", "-s", "3m", "--sensor", "aps-c",
 LIST_COMMAND = ("presets", "list", "--kind", "sensor", "--format", "json")
 
 
-def _point_xdg_at(root: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def _point_xdg_at(root: Path, monkeypatch: pytest.MonkeyPatch, config: Path | None = None) -> None:
     for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
         monkeypatch.setenv(name, str(root / name.lower()))
+    if config is not None:
+        monkeypatch.setenv("XDG_CONFIG_HOME", str(config))
     monkeypatch.setenv("XDG_CONFIG_DIRS", str(root / "etc-xdg"))
     monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
+
+
+def _user_sensors(root: Path) -> Path:
+    """A user configuration holding a copy of the shipped sensors and cameras (the shipped records answer for the
+    shipped files themselves, so the preset cache is exercised through user files: ``sensors.yaml-*.json``)."""
+    from camtool.presets import paths
+
+    config = root / "xdg_config_home"
+    (config / "camtool").mkdir(parents=True)
+    for name in ("sensors.yaml", "cameras.yaml"):
+        shutil.copyfile(os.path.join(paths.shipped_dir(), name), config / "camtool" / name)
+    return config
 
 
 @pytest.fixture(scope="module")
@@ -54,7 +68,7 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[tuple
     """
     root = tmp_path_factory.mktemp("caches")
     with pytest.MonkeyPatch.context() as monkeypatch:
-        _point_xdg_at(root, monkeypatch)
+        _point_xdg_at(root, monkeypatch, _user_sensors(root))
         references = {command: answer(command, no_cache=True) for command in (ABERRATION_COMMAND, PRESET_COMMAND,
                                                                                 LIST_COMMAND)}
         assert not (root / "xdg_cache_home").exists()  # CAMTOOL_NO_CACHE writes nothing, not even the key
@@ -70,15 +84,16 @@ def references(template: tuple[Path, dict[tuple[str, ...], str]]) -> dict[tuple[
 
 @pytest.fixture
 def home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, template: tuple[Path, Any]) -> Path:
-    """XDG directories for one test, the cache a copy of the template's (key included)."""
+    """XDG directories for one test, the cache a copy of the template's (key included); the user file the template's
+    (its entry is bound to its path)."""
     shutil.copytree(template[0], tmp_path / "xdg_cache_home", symlinks=True)
-    _point_xdg_at(tmp_path, monkeypatch)
+    _point_xdg_at(tmp_path, monkeypatch, template[0].parent / "xdg_config_home")
     return tmp_path / "xdg_cache_home" / "camtool"
 
 
 @pytest.fixture
-def empty_home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    _point_xdg_at(tmp_path, monkeypatch)
+def empty_home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, template: tuple[Path, Any]) -> Path:
+    _point_xdg_at(tmp_path, monkeypatch, template[0].parent / "xdg_config_home")
     return tmp_path / "xdg_cache_home" / "camtool"
 
 

@@ -51,15 +51,15 @@ def test_shipped_records_answer_only_for_the_bytes_they_were_made_from(tmp_path:
 
 def test_a_first_load_from_the_shipped_records_is_the_parsed_database(cache_home: Path) -> None:
     fresh = load_db(use_cache=False, lensfun=False)
-    first = load_db(lensfun=False)  # every cache empty: the shipped records (and the cache written from them)
-    assert list((cache_home / "xdg_cache_home" / "camtool" / "presets").glob("sensors.yaml-*.json"))
+    first = load_db(lensfun=False)  # every cache empty: the shipped records answer, no cache entry is written
+    assert not list((cache_home / "xdg_cache_home" / "camtool" / "presets").glob("sensors.yaml-*.json"))
     for kind in ("sensor", "camera", "lens", "prescription", "scene"):
         assert first.all(kind) == fresh.all(kind), kind
 
 
 def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
     index, body = loader._shipped_records()
-    start, length = index["sensors.yaml"][1:]
+    start, length = index["sensors.yaml"][1:3]
     payload = body[start:start + length]
     end = payload.index(b"\n")
     spans = json.loads(payload[:end])
@@ -72,7 +72,8 @@ def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
         blobs.append(blob)
         offset += len(blob)
     poisoned = json.dumps(new_spans).encode() + b"\n" + b"".join(blobs)
-    files = {**index, "sensors.yaml": [index["sensors.yaml"][0], len(body), len(poisoned)]}
+    # the span's recorded digest stays the build's: the poisoned span does not have it
+    files = {**index, "sensors.yaml": [index["sensors.yaml"][0], len(body), len(poisoned), index["sensors.yaml"][3]]}
     monkeypatch.setattr(loader, "_shipped_index", {"index": files, "body": body + poisoned})
 
 
@@ -108,3 +109,17 @@ def test_a_first_command_parses_no_yaml(tmp_path: Path) -> None:
     env.pop("CAMTOOL_NO_CACHE", None)
     run = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert run.stderr.strip().splitlines()[-1] == "[]"  # every cache empty: no YAML parse, no ray trace
+
+
+def test_the_shipped_records_are_used_on_their_digest_without_a_second_schema_check(cache_home: Path,
+                                                                                   monkeypatch: pytest.MonkeyPatch):
+    # the build's parse checked every record; a span with the digest the build recorded is that parse's output
+    fresh = load_db(use_cache=False, lensfun=False)
+
+    def refuse(kind, record):
+        raise AssertionError("a shipped record went through the cache's schema check again")
+
+    monkeypatch.setattr(loader, "_valid_record", refuse)
+    first = load_db(lensfun=False)
+    for kind in ("sensor", "camera", "lens", "prescription", "scene"):
+        assert first.all(kind) == fresh.all(kind), kind

@@ -9,10 +9,12 @@ Parsing YAML is the slow part of a command that names a preset (PyYAML's
 import alone costs about 20 ms), so the validated records of every file are
 cached as JSON under ``$XDG_CACHE_HOME/camtool/presets``, bound to the
 SHA-256 of the file's path and bytes (recomputed on every read). A warm start
-reads only the JSON files and never imports yaml; so does a first one with the
-shipped files, whose records ship with the package (:data:`SHIPPED_RECORDS`,
-used only for the very bytes they were made from and checked as a cache
-entry's records are; ``CAMTOOL_NO_CACHE`` parses every file).
+reads only the JSON files and never imports yaml. The shipped files' records
+ship with the package (:data:`SHIPPED_RECORDS`), made by the package's own
+build from a validated parse; they are used only for the very bytes they were
+made from and only when their own SHA-256 is the one the build recorded, and
+are then used without a second schema check (the build's parse was that
+check); ``CAMTOOL_NO_CACHE`` parses every file.
 
 The cache is never trusted: an entry is used only when it passes the checks
 of :mod:`camtool.core.cache` (a regular file of bounded size, the camtool
@@ -154,19 +156,21 @@ class _Cached:
     """A cache entry that passed the envelope checks: its sections, parsed and checked on first use."""
 
     def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes, cache_path: str, source: str,
-                 limit: int) -> None:
+                 limit: int, verified: bool = False) -> None:
         self.body = body
         self.sections = sections
         self.raw = raw
         self.cache_path = cache_path
         self.source = source
         self.limit = limit
+        self.verified = verified  # the shipped records, their digest the build's: no second schema check
         self.handed: dict[str, list[list[str]]] = {}
         self._parsed: dict[str, Any] = {}
         self._checked: dict[tuple[str, int], dict[str, Any]] = {}
 
     @classmethod
-    def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str, limit: int) -> _Cached | None:
+    def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str, limit: int,
+              verified: bool = False) -> _Cached | None:
         end = payload.find(b"\n")
         if end < 0:
             return None
@@ -184,7 +188,7 @@ class _Cached:
                 return None
             if span[0] < 0 or span[1] < 0 or span[0] + span[1] > len(body):
                 return None
-        return cls(body, sections, raw, cache_path, source, limit)
+        return cls(body, sections, raw, cache_path, source, limit, verified)
 
     def kinds(self) -> list[str]:
         return [name for name in self.sections if "#" not in name]
@@ -232,10 +236,14 @@ class _Cached:
         if handed is not None and len(handed) != len(records):
             return None
         record = records[index]
-        if not _valid_record(kind, record) or (handed is not None and record["_keys"] != handed[index]):
+        if not self._valid(kind, record) or (handed is not None and record["_keys"] != handed[index]):
             return None
         self._checked[(kind, index)] = record
         return record
+
+    def _valid(self, kind: str, record: Any) -> bool:
+        return isinstance(record, dict) and isinstance(record.get("_keys"), list) if self.verified else \
+            _valid_record(kind, record)
 
     def all(self, kind: str) -> list[dict[str, Any]] | None:
         """Every record of one kind when each passes :func:`_valid_record` (and matches the keys given out), else None.
@@ -253,7 +261,7 @@ class _Cached:
         for index, record in enumerate(records):
             checked = self._checked.get((kind, index))
             if checked is None:
-                if not _valid_record(kind, record) or record["_keys"] != handed[index]:
+                if not self._valid(kind, record) or record["_keys"] != handed[index]:
                     return None
                 checked = record
             out.append(checked)
@@ -343,17 +351,15 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     cache_path = _cache_path(cache_dir, absolute)
     source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     limit = _cache_limit(len(raw))
+    payload = shipped_payload(absolute, raw)
+    if payload is not None:
+        cached = _Cached.parse(payload, raw, cache_path, source, limit, verified=True)
+        if cached is not None:
+            return FileData(path, cached=cached)
     payload = cache.read(cache_path, _CACHE_KIND, source, limit)
     if payload is not None:
         cached = _Cached.parse(payload, raw, cache_path, source, limit)
         if cached is not None:
-            return FileData(path, cached=cached)
-    payload = shipped_payload(absolute, raw)
-    if payload is not None:
-        cached = _Cached.parse(payload, raw, cache_path, source, limit)
-        if cached is not None:
-            if len(payload) + 1024 <= limit:
-                cache.write(cache_path, _CACHE_KIND, source, payload)
             return FileData(path, cached=cached)
     data = _parse_or_raise(path, raw)
     _write_cache(cache_path, source, data._records, limit)
@@ -363,14 +369,16 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
 SHIPPED_RECORDS = "shipped-records.json"
 """The records of the shipped preset files (``lens_db/``), beside this module.
 
-Written by ``python -m camtool.presets.shipped``: one JSON line mapping each
-file's name under ``lens_db/`` to the SHA-256 of the bytes it was made from
-and its span in the rest of the file, then each file's records in the
-layout of a cache entry. A first command (every cache empty) reads these
-instead of parsing the YAML; each is used only for the very bytes it was
-made from, and its records pass the same checks as a cache entry's
-(:func:`_valid_record`) when they are used. An edited file finds no match
-and is parsed.
+Written by ``python -m camtool.presets.shipped`` from a validated parse of
+each file: one JSON line mapping each file's name under ``lens_db/`` to the
+SHA-256 of the bytes it was made from, its span in the rest of the file and
+the SHA-256 of that span, then each file's records in the layout of a cache
+entry. A command reads these instead of parsing the YAML or reading the
+cache, each only for the very bytes it was made from and only when the span
+still has its recorded digest (then without :func:`_valid_record`: the
+build's parse checked every record, ``tests/test_presets_shipped.py`` that
+the file is the build's). An edited file, or a span that is not what the
+build wrote, finds no match: the cache or a parse answers.
 """
 
 _shipped_index: dict[str, Any] | None = None
@@ -406,12 +414,13 @@ def shipped_payload(absolute: str, raw: bytes) -> bytes | None:
         return None
     index, body = _shipped_records()
     entry = index.get(real[len(directory):].replace(os.sep, "/"))
-    if not (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], str)
-            and all(type(n) is int and n >= 0 for n in entry[1:]) and entry[1] + entry[2] <= len(body)):
+    if not (isinstance(entry, list) and len(entry) == 4 and isinstance(entry[0], str) and isinstance(entry[3], str)
+            and all(type(n) is int and n >= 0 for n in entry[1:3]) and entry[1] + entry[2] <= len(body)):
         return None
     if entry[0] != cache.source_digest(raw):
         return None
-    return body[entry[1]:entry[1] + entry[2]]
+    payload = body[entry[1]:entry[1] + entry[2]]
+    return payload if cache.source_digest(payload) == entry[3] else None
 
 
 def _parse_or_raise(path: str, raw: bytes) -> FileData:
