@@ -77,11 +77,22 @@ def root() -> str:
     return os.path.join(base, "camtool")
 
 
+_constructors: dict[str, Any] = {}
+
+
 def _hash(name: str, modules: tuple[str, ...]) -> Any:
-    """The constructor ``name`` from the first of ``modules`` that has it (:mod:`hashlib` last)."""
+    """The constructor ``name`` from the first of ``modules`` that has it (:mod:`hashlib` last), found once.
+
+    A module that is not there is searched for on the whole path each time it
+    is imported, so the constructor found is remembered.
+    """
+    found = _constructors.get(name)
+    if found is not None:
+        return found
     for module in (*modules, "hashlib"):
         try:
-            return getattr(__import__(module), name)
+            found = _constructors[name] = getattr(__import__(module), name)
+            return found
         except (ImportError, AttributeError):
             continue
     raise ImportError(name)
