@@ -275,6 +275,14 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-rf-400mm-f2.8l-is-usm", 400.0),
     # 2.4 m with 0.24x at the long end implies about 375 mm there (Fujifilm XF150-600mm)
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600.0),
+    # sony-lenses.yaml, internal focusing: 0.35 m with 0.12x, 0.28 m with 0.2x, 0.41 m with 0.16x, 0.85 m with
+    # 0.12x and 0.11x, 0.57 m with 0.25x, 0.7 m with 0.25x imply about 34, 39, 49, 81, 76, 91 and 112 mm (FE 35mm
+    # F2.8 ZA, 40mm F2.5 G, 50mm F1.4 GM, 85mm F1.4 GM and GM II, 100mm STF in its macro range, 135mm F1.8 GM);
+    # 0.2 m with 0.12x, 0.3 m with 0.15x and 0.39 m with 0.16x about 19, 34 and 46 mm (E 20mm, 35mm and 50mm)
+    ("sony-fe-35mm-f2.8-za", 35.0), ("sony-fe-40mm-f2.5-g", 40.0), ("sony-fe-50mm-f1.4-gm", 50.0),
+    ("sony-fe-85mm-f1.4-gm", 85.0), ("sony-fe-85mm-f1.4-gm-ii", 85.0), ("sony-fe-100mm-f2.8-stf-gm-oss", 100.0),
+    ("sony-fe-135mm-f1.8-gm", 135.0), ("sony-e-20mm-f2.8", 20.0), ("sony-e-35mm-f1.8-oss", 35.0),
+    ("sony-e-50mm-f1.8-oss", 50.0),
 }
 
 
