@@ -283,6 +283,16 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sony-fe-85mm-f1.4-gm", 85.0), ("sony-fe-85mm-f1.4-gm-ii", 85.0), ("sony-fe-100mm-f2.8-stf-gm-oss", 100.0),
     ("sony-fe-135mm-f1.8-gm", 135.0), ("sony-e-20mm-f2.8", 20.0), ("sony-e-35mm-f1.8-oss", 35.0),
     ("sony-e-50mm-f1.8-oss", 50.0),
+    # independent-lenses.yaml, internal focusing: 0.85 m with 0.119x, 1.1 m with 0.145x, 1.7 m with 0.132x and
+    # 3.2 m with 0.167x imply about 81, 122, 175 and 392 mm (Sigma 85mm F1.4 DG DN, 135mm F1.4 DG, 200mm F2 DG OS,
+    # 500mm F5.6 DG DN); 0.27 m with 0.175x, 0.24 m with 0.25x, 0.55 m with 0.147x and 0.5 m with 0.2x imply
+    # about 34, 38, 62 and 69 mm (Sigma 35mm F2, 45mm F2.8, 65mm F2 and 90mm F2.8 DG DN); 0.22 m with 1:2 at
+    # 50 mm about 49 mm (Tamron 50-300mm A069)
+    ("sigma-85mm-f1.4-dg-dn-art", 85.0), ("sigma-135mm-f1.4-dg-art", 135.0),
+    ("sigma-200mm-f2-dg-os-sports", 200.0), ("sigma-500mm-f5.6-dg-dn-os-sports", 500.0),
+    ("sigma-35mm-f2-dg-dn-contemporary", 35.0), ("sigma-45mm-f2.8-dg-dn-contemporary", 45.0),
+    ("sigma-65mm-f2-dg-dn-contemporary", 65.0), ("sigma-90mm-f2.8-dg-dn-contemporary", 90.0),
+    ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", 50.0),
 }
 
 
