@@ -36,6 +36,8 @@ from hypothesis.extra import numpy as hnp
 
 import camtool
 from camtool.core.errors import CamtoolError, DomainError
+from camtool.core.record import Record
+from camtool.core.record import fields as record_fields
 
 EXAMPLES = int(os.environ.get("CAMTOOL_API_FUZZ_EXAMPLES", "150"))
 _OUT = tempfile.mkdtemp(prefix="camtool-api-fuzz-")
@@ -198,9 +200,11 @@ def arguments(function: Any) -> st.SearchStrategy[dict[str, Any]]:
 
 
 def _values(result: Any, field: str = "") -> list[tuple[str, Any]]:
-    """Every (field, number) in a result: named tuples, dataclasses and arrays opened up."""
+    """Every (field, number) in a result: named tuples, dataclasses, presets and arrays opened up."""
     if isinstance(result, tuple) and hasattr(result, "_fields"):
         return [v for name in result._fields for v in _values(getattr(result, name), name)]
+    if isinstance(result, Record):
+        return [v for f in record_fields(result) for v in _values(getattr(result, f.name), f.name)]
     if dataclasses.is_dataclass(result) and not isinstance(result, type):
         return [v for f in dataclasses.fields(result) for v in _values(getattr(result, f.name), f.name)]
     if isinstance(result, (str, bytes, type(None), bool)):

@@ -13,9 +13,9 @@ and one function. docs/design.md §4.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any, NamedTuple
 
+from camtool.core.record import Record
 from camtool.dof.closed import approx_dof, thin_dof
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import FocusGeometry, LensPlaneDistances, focus_geometry
@@ -23,8 +23,7 @@ from camtool.geometry.thinlens import FocusGeometry, LensPlaneDistances, focus_g
 __all__ = ["NO_LENS", "RUNGS", "Focus", "LensData", "Rung", "by_name", "geometric", "in_air", "names", "traceable"]
 
 
-@dataclass(frozen=True)
-class LensData:
+class LensData(Record):
     """What is known about the lens beyond its focal length.
 
     ``pupil_magnification`` P (exit/entrance pupil diameter) and

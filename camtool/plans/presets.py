@@ -10,10 +10,11 @@ every field of one preset with its derived values and, for a prescription
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
+from camtool.core.record import Record
+from camtool.core.record import fields as fields_of
 from camtool.presets import PresetNotFound
 
 __all__ = ["FILMS_ORIGIN", "KINDS", "NoSuchPreset", "PresetRow", "PresetShown", "describe", "film",
@@ -135,13 +136,13 @@ def show_preset(*, database: Any, name: str, kind: str | None = None) -> PresetS
 def describe(preset: Any) -> dict[str, Any]:
     """Every field of a preset, its derived values and, for a prescription, its first-order data."""
     fields: dict[str, Any] = {"kind": type(preset).__name__.lower()}
-    for item in dataclasses.fields(preset):
+    for item in fields_of(preset):
         value = getattr(preset, item.name)
-        if dataclasses.is_dataclass(value):
+        if isinstance(value, Record):
             value = getattr(value, "id", value)  # a referenced preset (a camera's sensor, a scene's lens)
         elif isinstance(value, tuple):
             # a lens set's members are presets of their own (SET@FOCAL): named here, shown on their own
-            value = [getattr(v, "id", v) if dataclasses.is_dataclass(v) else v for v in value]
+            value = [getattr(v, "id", v) if isinstance(v, Record) else v for v in value]
         if item.name not in ("data", "prescription", "optics"):
             fields[item.name] = value
     for derived in ("diagonal_mm", "crop_factor", "aspect_ratio", "pixel_pitch_mm", "megapixels"):

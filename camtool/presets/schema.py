@@ -1,8 +1,9 @@
-"""What a preset is: the keys of each kind, their checks, and the frozen dataclasses.
+"""What a preset is: the keys of each kind, their checks, and the frozen value classes.
 
 Validation turns one raw YAML mapping into a *record*: a plain dict of checked
 values (numbers in millimetres, strings, lists) that can be cached as JSON.
-The dataclasses below are built from records only when a preset is looked up,
+The value classes below (frozen :class:`camtool.core.record.Record` classes)
+are built from records only when a preset is looked up,
 so loading thousands of presets costs no object construction.
 
 Every check reports ``(key, problem)`` pairs instead of raising, so that
@@ -14,8 +15,9 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
 from typing import Any
+
+from camtool.core.record import Record, field
 
 KINDS = ("sensor", "camera", "lens", "prescription", "scene", "film")
 """The kinds of preset, in the order they are listed."""
@@ -718,11 +720,10 @@ _CROSS_CHECKS: dict[str, Callable[[dict[str, Any]], list[tuple[str, str]]]] = {
 }
 
 
-# --- the dataclasses ------------------------------------------------------------------------
+# --- the value classes ----------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Sensor:
+class Sensor(Record):
     """A sensor or film format; sizes in mm, width the long side.
 
     ``approximate`` marks a size that was derived (e.g. from a crop factor)
@@ -764,8 +765,7 @@ class Sensor:
         return self.width_mm / self.height_mm
 
 
-@dataclass(frozen=True)
-class Camera:
+class Camera(Record):
     """A camera body: its sensor (resolved to a :class:`Sensor`), pixel counts, mount and built-in lens.
 
     ``lens_id`` is the id of the lens preset of a camera whose lens is part of
@@ -806,8 +806,7 @@ class Camera:
         return None if not (self.pixels_w and self.pixels_h) else self.pixels_w * self.pixels_h / 1e6
 
 
-@dataclass(frozen=True)
-class Prescription:
+class Prescription(Record):
     """A lens prescription preset: its names and ``optics``, the validated lens.
 
     ``optics`` is the :class:`camtool.optics.prescription.Prescription` that
@@ -841,8 +840,7 @@ class Prescription:
         return int(self.optics.stop_index)
 
 
-@dataclass(frozen=True)
-class Lens:
+class Lens(Record):
     """A lens: focal length or range (mm), f-number range and close-focus data.
 
     ``f_number_min`` is the widest aperture (smallest f-number), at the short
@@ -948,8 +946,7 @@ class Lens:
         return short + t * (long - short)
 
 
-@dataclass(frozen=True)
-class Scene:
+class Scene(Record):
     """A named shot: equipment references resolved to presets, distances in mm.
 
     Any field may be None; options given on the command line override a scene.
@@ -980,8 +977,7 @@ class Scene:
 Preset = Sensor | Camera | Lens | Prescription | Scene
 
 
-@dataclass(frozen=True)
-class Film:
+class Film(Record):
     """A film's reciprocity data from a preset file: an exponent ``p`` or a table ``points``.
 
     :meth:`reciprocity` gives the :class:`camtool.exposure.reciprocity.Film`
