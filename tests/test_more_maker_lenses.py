@@ -28,17 +28,12 @@ RECORDS = lens_records(FILE)
 
 # (lens, focal length mm, closest focus mm, magnification at that row or None, (widest, smallest f-number or
 # None), largest magnification the source gives for the lens) as the sources each entry names print them:
-# Canon's Japanese pages (polynomial/camera canon_mtf_data: 最短撮影距離 / 最大撮影倍率 / 最小絞り, autofocus
-# figures), and isamu/lens-database's records of panasonic.jp and jp.omsystem.com (minFocusDistance in m,
+# isamu/lens-database's records of personal.canon.jp, panasonic.jp and jp.omsystem.com (minFocusDistance in m,
 # maxMagnification, the other end of a zoom from the record's note; Micro Four Thirds magnifications are the
-# actual ratio, not the 35 mm equivalent one)
+# actual ratio, not the 35 mm equivalent one), and the pages cited beside them
 CITED = [
-    # 0.28m and 0.09倍 at 15mm (AF), 0.16倍 at 30mm (AF); 22 at 15mm, 32 at 30mm
-    ("canon-rf-15-30mm-f4.5-6.3-is-stm", 15, 280, 0.09, (4.5, 22), 0.16),
-    # 0.27m at 28mm (AF), 0.24倍 at 70mm; 22
-    ("canon-rf-28-70mm-f2.8-is-stm", 28, 270, None, (2.8, 22), 0.24),
-    # 0.5m at 24mm, 0.26倍 at 240mm; 22 at 24mm, 36 at 240mm
-    ("canon-rf-24-240mm-f4-6.3-is-usm", 24, 500, None, (4, 22), 0.26),
+    # minFocusDistance 0.45, maxMagnification 0.13
+    ("canon-rf-45mm-f1.2-stm", 45, 450, 0.13, (1.2, None), 0.13),
     # minFocusDistance 0.15, maxMagnification 0.5
     ("panasonic-lumix-s-14-28mm-f4-5.6-macro", 14, 150, None, (4, None), 0.5),
     ("panasonic-lumix-s-14-28mm-f4-5.6-macro", 28, 150, None, (5.6, None), 0.5),
@@ -203,12 +198,12 @@ def test_ids_and_aliases_are_unique_within_the_file():
 
 
 def test_a_figure_from_one_dataset_is_approximate_and_a_confirmed_one_is_not():
-    # the Canon pages are the maker's own (as current-lenses.yaml takes them); of the dataset entries only the
-    # Leica DG Macro-Elmarit 45mm, whose operating instructions print the same figures, is not approximate
+    # every entry is from the one dataset; only the Leica DG Macro-Elmarit 45mm, whose operating instructions
+    # print the same figures, is not approximate
     for record in RECORDS:
-        from_dataset = "isamu/lens-database" in record["source"]
+        assert "isamu/lens-database" in record["source"], record["id"]
         confirmed = "emanuals.org" in record["source"]
-        assert bool(record.get("approximate")) == (from_dataset and not confirmed), record["id"]
+        assert bool(record.get("approximate")) == (not confirmed), record["id"]
 
 
 def test_micro_four_thirds_magnifications_are_the_actual_ratio():
@@ -231,17 +226,14 @@ def test_the_model_never_magnifies_more_than_the_source_says(lens_id):
     check_never_magnifies_more(load_db().lens(lens_id))
 
 
-def test_a_canon_zoom_with_one_published_row_keeps_it_over_the_zoom():
-    # RF28-70 F2.8: 0.27 m (at 28 mm) is the one row; its magnification is modelled at 28 mm (unit focusing,
-    # 28 mm at 0.27 m) and, being the nearest row, it holds at 70 mm too: below the 0.24x Canon gives there
-    lens = load_db().lens("canon-rf-28-70mm-f2.8-is-stm")
-    k = 270.0 / 28.0 - 2.0  # a thin lens focused as a unit: D = f (2 + m + 1/m), the root below 1
+def test_a_row_without_a_published_magnification_is_the_unit_focusing_one_below_the_maximum():
+    # the Lumix G 14-140mm II at 14 mm: 0.3 m, no magnification placed there; a thin 14 mm lens focused as a unit
+    # at 0.3 m from the sensor (D = f (2 + m + 1/m), the root below 1), well under the 0.25x of the lens
+    lens = load_db().lens("panasonic-lumix-g-vario-14-140mm-f3.5-5.6-ii")
+    k = 300.0 / 14.0 - 2.0
     unit = (k - math.sqrt(k * k - 4.0)) / 2.0
-    assert 0.1 < unit < 0.24
-    for focal in (28.0, 50.0, 70.0):
-        model = focus_model(lens, focal)
-        assert model.min_focus_mm == pytest.approx(270.0)
-        assert internal_focus_at_distance(model, 270.0)[0] == pytest.approx(unit, rel=1e-6)
+    assert unit < 0.25
+    assert internal_focus_at_distance(focus_model(lens, 14.0), 300.0)[0] == pytest.approx(unit, rel=1e-6)
 
 
 def test_a_zoom_with_published_magnifications_at_each_row_meets_them():

@@ -275,6 +275,16 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-rf-400mm-f2.8l-is-usm", 400.0),
     # 2.4 m with 0.24x at the long end implies about 375 mm there (Fujifilm XF150-600mm)
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600.0),
+    # more-maker-lenses.yaml, internal focusing: 0.33 m with 0.22x at 60 mm (Lumix S 24-60mm), 0.8 m with
+    # 0.16x at 100 mm (S 100-500mm), 1.4 m with 0.24x (M.Zuiko 300mm F4) and 2.8 m with 0.20x at 600 mm
+    # (M.Zuiko 150-600mm) imply about 49, 95, 219 and 389 mm; the primes' two-figure magnifications imply
+    # 37-81 mm for the S 40, 50 and 85mm, 41 mm for the Nocticron 42.5mm and the M.Zuiko 45mm F1.2, 69 mm for
+    # the M.Zuiko 75mm and 24 mm for the M.Zuiko 25mm F1.8 II
+    ("panasonic-lumix-s-24-60mm-f2.8", 60.0), ("panasonic-lumix-s-100-500mm-f5-7.1-ois", 100.0),
+    ("om-m-zuiko-300mm-f4-is-pro", 300.0), ("om-m-zuiko-150-600mm-f5-6.3-is", 600.0),
+    ("panasonic-lumix-s-40mm-f2", 40.0), ("panasonic-lumix-s-50mm-f1.8", 50.0), ("panasonic-lumix-s-85mm-f1.8", 85.0),
+    ("panasonic-leica-dg-nocticron-42.5mm-f1.2", 42.5), ("om-m-zuiko-45mm-f1.2-pro", 45.0),
+    ("om-m-zuiko-75mm-f1.8", 75.0), ("om-m-zuiko-25mm-f1.8-ii", 25.0),
 }
 
 
