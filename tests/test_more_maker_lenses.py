@@ -84,6 +84,16 @@ CITED = [
     ("panasonic-lumix-s-26mm-f8", 26, 250, 0.14, (8, 8), 0.14),
     # minFocusDistance 0.204, maxMagnification 1 (等倍)
     ("panasonic-lumix-s-100mm-f2.8-macro", 100, 204, 1, (2.8, None), 1),
+    # 0.24 m, 1:5 (0.2x)
+    ("leica-apo-summicron-sl-28mm-f2-asph", 28, 240, 0.2, (2, None), 0.2),
+    # 0.35 m, 1:5 (0.2x)
+    ("leica-apo-summicron-sl-50mm-f2-asph", 50, 350, 0.2, (2, 22), 0.2),
+    # 0.27 m, 1:5 (0.2x)
+    ("leica-apo-summicron-sl-35mm-f2-asph", 35, 270, 0.2, (2, None), 0.2),
+    # 0.5 m, 1:5 (0.2x)
+    ("leica-apo-summicron-sl-75mm-f2-asph", 75, 500, 0.2, (2, None), 0.2),
+    # 0.6 m, 1:5 (0.2x)
+    ("leica-apo-summicron-sl-90mm-f2-asph", 90, 600, 0.2, (2, None), 0.2),
     # minFocusDistance 0.095, maxMagnification 0.25
     ("panasonic-leica-dg-summilux-9mm-f1.7", 9, 95, 0.25, (1.7, None), 0.25),
     # minFocusDistance 0.2, maxMagnification 0.1
@@ -197,13 +207,28 @@ def test_ids_and_aliases_are_unique_within_the_file():
     assert len(names) == len(set(names))
 
 
+# the entries whose figures a second page confirms: the Leica DG Macro-Elmarit 45mm (Panasonic's operating
+# instructions), the APO-Summicron-SL 28 (Leica Society International, The Phoblographer) and 50 (Macfilos,
+# Fstoppers)
+CONFIRMED = {"panasonic-leica-dg-macro-elmarit-45mm-f2.8", "leica-apo-summicron-sl-28mm-f2-asph",
+             "leica-apo-summicron-sl-50mm-f2-asph"}
+
+
 def test_a_figure_from_one_dataset_is_approximate_and_a_confirmed_one_is_not():
-    # every entry is from the one dataset; only the Leica DG Macro-Elmarit 45mm, whose operating instructions
-    # print the same figures, is not approximate
     for record in RECORDS:
         assert "isamu/lens-database" in record["source"], record["id"]
-        confirmed = "emanuals.org" in record["source"]
-        assert bool(record.get("approximate")) == (not confirmed), record["id"]
+        assert bool(record.get("approximate")) == (record["id"] not in CONFIRMED), record["id"]
+    for lens_id in CONFIRMED:
+        # a second source beside the dataset, named in `source`
+        source = record_of(RECORDS, lens_id)["source"]
+        assert any(site in source for site in ("emanuals.org", "leicasocietyinternational.org", "fstoppers.com")), lens_id
+
+
+def test_the_apo_summicron_sl_28_takes_the_pages_magnification_not_the_datasets():
+    # the dataset records 0.14x; the review (and the 1:5 of the series) 0.2x, which the entry holds
+    record = record_of(RECORDS, "leica-apo-summicron-sl-28mm-f2-asph")
+    assert "maxMagnification 0.14" in record["source"] and "0.2x" in record["source"]
+    assert record["max_magnification"] == 0.2
 
 
 def test_micro_four_thirds_magnifications_are_the_actual_ratio():

@@ -285,6 +285,9 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("panasonic-lumix-s-40mm-f2", 40.0), ("panasonic-lumix-s-50mm-f1.8", 50.0), ("panasonic-lumix-s-85mm-f1.8", 85.0),
     ("panasonic-leica-dg-nocticron-42.5mm-f1.2", 42.5), ("om-m-zuiko-45mm-f1.2-pro", 45.0),
     ("om-m-zuiko-75mm-f1.8", 75.0), ("om-m-zuiko-25mm-f1.8-ii", 25.0),
+    # 1:5 at 0.35, 0.5 and 0.6 m imply about 49, 69 and 83 mm (APO-Summicron-SL 50, 75, 90, internal focusing)
+    ("leica-apo-summicron-sl-50mm-f2-asph", 50.0), ("leica-apo-summicron-sl-75mm-f2-asph", 75.0),
+    ("leica-apo-summicron-sl-90mm-f2-asph", 90.0),
 }
 
 
