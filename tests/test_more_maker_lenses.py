@@ -106,12 +106,12 @@ CITED = [
     ("panasonic-lumix-g-20mm-f1.7-ii", 20, 200, 0.13, (1.7, None), 0.13),
     # minFocusDistance 0.25, maxMagnification 0.14
     ("panasonic-lumix-g-25mm-f1.7", 25, 250, 0.14, (1.7, None), 0.14),
-    # minFocusDistance 0.5, maxMagnification 0.1
-    ("panasonic-leica-dg-nocticron-42.5mm-f1.2", 42.5, 500, 0.1, (1.2, None), 0.1),
     # minFocusDistance 0.31, maxMagnification 0.2
     ("panasonic-lumix-g-42.5mm-f1.7", 42.5, 310, 0.2, (1.7, None), 0.2),
     # minFocusDistance 0.18, maxMagnification 0.1
     ("panasonic-lumix-g-14mm-f2.5-ii", 14, 180, 0.1, (2.5, None), 0.1),
+    # 0.5 m, 0.1x; aperture 1.2 / 16
+    ("panasonic-leica-dg-nocticron-42.5mm-f1.2", 42.5, 500, 0.1, (1.2, 16), 0.1),
     # 0.15 m, 1.0x (35 mm equivalent 2.0x), F22
     ("panasonic-leica-dg-macro-elmarit-45mm-f2.8", 45, 150, 1, (2.8, 22), 1),
     # minFocusDistance 0.105, maxMagnification 1 (35 mm equivalent 2.0)
@@ -166,6 +166,9 @@ CITED = [
     ("om-m-zuiko-17mm-f1.8-ii", 17, 250, 0.08, (1.8, None), 0.08),
     # minFocusDistance 0.25, maxMagnification 0.12
     ("om-m-zuiko-25mm-f1.8-ii", 25, 250, 0.12, (1.8, None), 0.12),
+    # minFocusDistance 1.3, maxMagnification 0.29; 365photo.de: 1,3 Meter
+    ("om-m-zuiko-150-400mm-f4.5-tc1.25x-is-pro", 150, 1300, None, (4.5, None), 0.29),
+    ("om-m-zuiko-150-400mm-f4.5-tc1.25x-is-pro", 400, 1300, None, (4.5, None), 0.29),
     # 0.56 m and 0.35x at the wide end, 2.8 m and 0.20x at the long end
     ("om-m-zuiko-150-600mm-f5-6.3-is", 150, 560, 0.35, (5, None), 0.35),
     ("om-m-zuiko-150-600mm-f5-6.3-is", 600, 2800, 0.2, (6.3, None), 0.35),
@@ -207,21 +210,25 @@ def test_ids_and_aliases_are_unique_within_the_file():
     assert len(names) == len(set(names))
 
 
-# the entries whose figures a second page confirms: the Leica DG Macro-Elmarit 45mm (Panasonic's operating
-# instructions), the APO-Summicron-SL 28 (Leica Society International, The Phoblographer) and 50 (Macfilos,
-# Fstoppers)
-CONFIRMED = {"panasonic-leica-dg-macro-elmarit-45mm-f2.8", "leica-apo-summicron-sl-28mm-f2-asph",
-             "leica-apo-summicron-sl-50mm-f2-asph"}
+# the entries whose figures a second page confirms, and the site that page is on: the Leica DG Macro-Elmarit 45mm
+# (Panasonic's operating instructions), the Nocticron 42.5mm (Wikipedia's data of the lens), the Lumix S 100mm
+# Macro (Miss Numerique), the APO-Summicron-SL 28 (Leica Society International) and 50 (Macfilos, Fstoppers)
+CONFIRMED = {
+    "panasonic-leica-dg-macro-elmarit-45mm-f2.8": "emanuals.org",
+    "panasonic-leica-dg-nocticron-42.5mm-f1.2": "en.wikipedia.org/wiki/Nocticron",
+    "panasonic-lumix-s-100mm-f2.8-macro": "missnumerique.com",
+    "leica-apo-summicron-sl-28mm-f2-asph": "leicasocietyinternational.org",
+    "leica-apo-summicron-sl-50mm-f2-asph": "fstoppers.com",
+}
 
 
 def test_a_figure_from_one_dataset_is_approximate_and_a_confirmed_one_is_not():
     for record in RECORDS:
         assert "isamu/lens-database" in record["source"], record["id"]
         assert bool(record.get("approximate")) == (record["id"] not in CONFIRMED), record["id"]
-    for lens_id in CONFIRMED:
-        # a second source beside the dataset, named in `source`
-        source = record_of(RECORDS, lens_id)["source"]
-        assert any(site in source for site in ("emanuals.org", "leicasocietyinternational.org", "fstoppers.com")), lens_id
+    for lens_id, site in CONFIRMED.items():
+        # the second source beside the dataset, named in `source`
+        assert site in record_of(RECORDS, lens_id)["source"], lens_id
 
 
 def test_the_apo_summicron_sl_28_takes_the_pages_magnification_not_the_datasets():
