@@ -48,7 +48,7 @@ CITED = [
     ("panasonic-lumix-s-24-60mm-f2.8", 24, 190, 0.25, (2.8, None), 0.3),
     ("panasonic-lumix-s-24-60mm-f2.8", 30, 190, 0.3, (2.8, None), 0.3),
     ("panasonic-lumix-s-24-60mm-f2.8", 60, 330, 0.22, (2.8, None), 0.3),
-    # minFocusDistance 0.37, maxMagnification 0.25
+    # minFocusDistance 0.37, maxMagnification 0.25; Le Monde de la Photo: 37 cm at every focal length
     ("panasonic-lumix-s-pro-24-70mm-f2.8", 24, 370, None, (2.8, None), 0.25),
     ("panasonic-lumix-s-pro-24-70mm-f2.8", 70, 370, None, (2.8, None), 0.25),
     # 0.14 m and 0.5x at the wide end, 0.65 m at the long end
