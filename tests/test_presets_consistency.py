@@ -293,6 +293,19 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("sigma-35mm-f2-dg-dn-contemporary", 35.0), ("sigma-45mm-f2.8-dg-dn-contemporary", 45.0),
     ("sigma-65mm-f2-dg-dn-contemporary", 65.0), ("sigma-90mm-f2.8-dg-dn-contemporary", 90.0),
     ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", 50.0),
+    # more-maker-lenses.yaml, internal focusing: 0.33 m with 0.22x at 60 mm (Lumix S 24-60mm), 0.8 m with
+    # 0.16x at 100 mm (S 100-500mm), 1.4 m with 0.24x (M.Zuiko 300mm F4) and 2.8 m with 0.20x at 600 mm
+    # (M.Zuiko 150-600mm) imply about 49, 95, 219 and 389 mm; the primes' two-figure magnifications imply
+    # 37-81 mm for the S 40, 50 and 85mm, 41 mm for the Nocticron 42.5mm and the M.Zuiko 45mm F1.2, 69 mm for
+    # the M.Zuiko 75mm and 24 mm for the M.Zuiko 25mm F1.8 II
+    ("panasonic-lumix-s-24-60mm-f2.8", 60.0), ("panasonic-lumix-s-100-500mm-f5-7.1-ois", 100.0),
+    ("om-m-zuiko-300mm-f4-is-pro", 300.0), ("om-m-zuiko-150-600mm-f5-6.3-is", 600.0),
+    ("panasonic-lumix-s-40mm-f2", 40.0), ("panasonic-lumix-s-50mm-f1.8", 50.0), ("panasonic-lumix-s-85mm-f1.8", 85.0),
+    ("panasonic-leica-dg-nocticron-42.5mm-f1.2", 42.5), ("om-m-zuiko-45mm-f1.2-pro", 45.0),
+    ("om-m-zuiko-75mm-f1.8", 75.0), ("om-m-zuiko-25mm-f1.8-ii", 25.0),
+    # 1:5 at 0.35, 0.5 and 0.6 m imply about 49, 69 and 83 mm (APO-Summicron-SL 50, 75, 90, internal focusing)
+    ("leica-apo-summicron-sl-50mm-f2-asph", 50.0), ("leica-apo-summicron-sl-75mm-f2-asph", 75.0),
+    ("leica-apo-summicron-sl-90mm-f2-asph", 90.0),
 }
 
 
