@@ -275,6 +275,12 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-rf-400mm-f2.8l-is-usm", 400.0),
     # 2.4 m with 0.24x at the long end implies about 375 mm there (Fujifilm XF150-600mm)
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600.0),
+    # nikon-fujifilm-lenses.yaml, internal focusing: 0.33 m with 0.32x at 70 mm, 0.85 m with 0.11x, 0.267 m with
+    # 0.5x, 0.39 m with 0.15x, 2.75 m with 0.2x and 1.75 m with 0.19x at 400 mm imply about 61, 76, 59, 44, 382
+    # and 235 mm (NIKKOR Z 24-70mm f/2.8 S II, Z 85mm f/1.2 S; XF60mm Macro, XF50mm F2, XF500mm, XF100-400mm)
+    ("nikon-z-24-70mm-f2.8-s-ii", 70.0), ("nikon-z-85mm-f1.2-s", 85.0), ("fujifilm-xf60mm-f2.4-r-macro", 60.0),
+    ("fujifilm-xf50mm-f2-r-wr", 50.0), ("fujifilm-xf500mm-f5.6-r-lm-ois-wr", 500.0),
+    ("fujifilm-xf100-400mm-f4.5-5.6-r-lm-ois-wr", 400.0),
 }
 
 
