@@ -3,6 +3,8 @@ the magnification the focusing model derives at the closest focus against the pu
 
 from __future__ import annotations
 
+import re
+
 import pytest
 from lens_checks import (  # noqa: F401 - isolated: an autouse fixture
     DB,
@@ -45,9 +47,13 @@ CITED = [
     # nikon/z/zoom.js: fStop [4, 7.1], 0.2, 0.5
     ("nikon-z-24-105mm-f4-7.1", 24, 200, None, (4, None), 0.5),
     ("nikon-z-24-105mm-f4-7.1", 105, 200, None, (7.1, None), 0.5),
-    # nikon/z/zoom.js: 0.38, 0.3
-    ("nikon-z-70-200mm-f2.8-vr-s-ii", 70, 380, None, (2.8, None), 0.3),
-    ("nikon-z-70-200mm-f2.8-vr-s-ii", 200, 380, None, (2.8, None), 0.3),
+    # LensVisualizer (Nikon's pages): 0.38 m at 70 and 85 mm, 0.5 m at 105, 0.6 m at 135, 0.8 m at 200; 0.3x at 70 mm,
+    # 0.25x at 200 mm; nikon/z/zoom.js: 0.38, 0.3
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 70, 380, 0.3, (2.8, None), 0.3),
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 85, 380, None, (2.8, None), 0.3),
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 105, 500, None, (2.8, None), 0.3),
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 135, 600, None, (2.8, None), 0.3),
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 200, 800, 0.25, (2.8, None), 0.3),
     # nikon/z/zoom.js: 0.15, 0.24
     ("nikon-z-dx-16-50mm-f2.8-vr", 16, 150, None, (2.8, None), 0.24),
     ("nikon-z-dx-16-50mm-f2.8-vr", 50, 150, None, (2.8, None), 0.24),
@@ -58,7 +64,7 @@ CITED = [
     ("nikon-z-dx-mc-35mm-f1.7", 35, 160, 0.67, (1.7, None), 0.67),
     # nikon/z/prime.js: 0.85; Photography Life review: 0.11x
     ("nikon-z-85mm-f1.2-s", 85, 850, 0.11, (1.2, None), 0.11),
-    # fujifilm/x/prime.js: 0.267, 0.5; Admiring Light and kstphotography: 1:2 (0.5)
+    # fujifilm/x/prime.js: 0.267, 0.5; LensVisualizer: 0.5x at 26.7 cm; Admiring Light and kstphotography: 1:2 (0.5)
     ("fujifilm-xf60mm-f2.4-r-macro", 60, 267, 0.5, (2.4, None), 0.5),
     # fujifilm/x/prime.js: 0.39, 0.15; danielm.photo.blog: 39cm
     ("fujifilm-xf50mm-f2-r-wr", 50, 390, 0.15, (2, None), 0.15),
@@ -82,16 +88,32 @@ CITED = [
     # fujifilm/x/xc.js: 0.2, 0.25
     ("fujifilm-xc13-33mm-f3.5-6.3-ois", 13, 200, None, (3.5, None), 0.25),
     ("fujifilm-xc13-33mm-f3.5-6.3-ois", 33, 200, None, (6.3, None), 0.25),
-    # jalangle/ghtns notes: Min Aperture 5.6, Max Aperture 32, 0.6m-∞,1.6m-∞, 0.2x; fujifilm/g/index.js: 0.6
-    ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100, 600, None, (5.6, 32), 0.2),
+    # LensVisualizer (Fujifilm's pages): 0.6 m at wide, 1.6 m at telephoto, 0.2x at wide; jalangle/ghtns notes: Min
+    # Aperture 5.6, Max Aperture 32, 0.6m-∞,1.6m-∞, 0.2x; fujifilm/g/index.js: 0.6
+    ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100, 600, 0.2, (5.6, 32), 0.2),
     ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 200, 1600, None, (5.6, 32), 0.2),
     # fujifilm/g/index.js: 0.43, 0.5
     ("fujifilm-gf110mm-f5.6-t-s-macro", 110, 430, 0.5, (5.6, None), 0.5),
+    # LensVisualizer (Fujifilm's pages): a 20 cm minimum focus distance from the focal plane; 0.15x
+    ("fujifilm-xf18mm-f1.4-r-lm-wr", 18, 200, 0.15, (1.4, None), 0.15),
+    # LensVisualizer (Fujifilm's pages): 0.6 m, 0.2x at the tele end; fujifilm/x/zoom.js: 0.6
+    ("fujifilm-xf18-120mm-f4-lm-pz-wr", 18, 600, None, (4, None), 0.2),
+    ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120, 600, 0.2, (4, None), 0.2),
+    # fujifilm/x/zoom.js: 1.1; seriouscompacts.com: 1.1m for .18x
+    ("fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", 55, 1100, None, (3.5, None), 0.18),
+    ("fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", 200, 1100, None, (4.8, None), 0.18),
+    # LensVisualizer (Fujifilm's specifications): 0.45 m, 0.14x; fujifilm/g/index.js: 0.45
+    ("fujifilm-gf45mm-f2.8-r-wr", 45, 450, 0.14, (2.8, None), 0.14),
+    # LensVisualizer (Fujifilm's page): 0.35 m, 0.28x at the telephoto end; fujifilm/g/index.js: 0.35
+    ("fujifilm-gf35-70mm-f4.5-5.6-wr", 35, 350, None, (4.5, None), 0.28),
+    ("fujifilm-gf35-70mm-f4.5-5.6-wr", 70, 350, 0.28, (5.6, None), 0.28),
+    # LensVisualizer (Fujifilm's specification): 2.75 m, 0.2x; fujifilm/g/index.js: 2.75
+    ("fujifilm-gf500mm-f5.6-r-lm-ois-wr", 500, 2750, 0.2, (5.6, None), 0.2),
 ]
 
-# the one entry every figure of which a page printing the maker's specification gives; every other entry has a figure
-# that only one dataset gives, and is approximate
-CONFIRMED = {"nikon-z-24-70mm-f2.8-s-ii"}
+# the entries every figure of which two sources give (a page printing the maker's specification, or two datasets
+# transcribing the maker's pages); every other entry has a figure that only one source gives, and is approximate
+CONFIRMED = {"nikon-z-24-70mm-f2.8-s-ii", "nikon-z-70-200mm-f2.8-vr-s-ii", "fujifilm-xf60mm-f2.4-r-macro"}
 
 
 def test_every_entry_is_checked_against_its_sources():
@@ -130,8 +152,8 @@ def test_every_entry_is_new_names_its_mount_and_says_what_is_unconfirmed():
         assert bool(record.get("approximate")) == (record["id"] not in CONFIRMED), record["id"]
         if record.get("approximate"):
             assert " ".join(record["notes"].split()).startswith("approximate:"), record["id"]
-        # every source names the repository commit or page it quotes
-        assert "isamu/lens-database" in record["source"] or "digitalcameraworld" in record["source"]
+        # every source names the commit of the dataset it quotes
+        assert re.search(r"\bat [0-9a-f]{40}\b", " ".join(record["source"].split())), record["id"]
         assert load_db().lens(record["id"]).tier == "shipped"
 
 

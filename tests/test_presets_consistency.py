@@ -281,6 +281,13 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("nikon-z-24-70mm-f2.8-s-ii", 70.0), ("nikon-z-85mm-f1.2-s", 85.0), ("fujifilm-xf60mm-f2.4-r-macro", 60.0),
     ("fujifilm-xf50mm-f2-r-wr", 50.0), ("fujifilm-xf500mm-f5.6-r-lm-ois-wr", 500.0),
     ("fujifilm-xf100-400mm-f4.5-5.6-r-lm-ois-wr", 400.0),
+    # 0.38 m with 0.3x at 70 mm and 0.8 m with 0.25x at 200 mm imply about 67 and 128 mm (NIKKOR Z 70-200mm f/2.8
+    # VR S II); 0.6 m with 0.2x at 120 mm, 0.6 m with 0.2x at 100 mm, 0.35 m with 0.28x at 70 mm and 2.75 m with 0.2x
+    # imply about 83, 83, 60 and 382 mm (XF18-120mm, GF100-200mm, GF35-70mm, GF500mm)
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 70.0), ("nikon-z-70-200mm-f2.8-vr-s-ii", 200.0),
+    ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120.0),
+    ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100.0), ("fujifilm-gf35-70mm-f4.5-5.6-wr", 70.0),
+    ("fujifilm-gf500mm-f5.6-r-lm-ois-wr", 500.0),
 }
 
 
