@@ -96,6 +96,9 @@ CITED = [
     ("fujifilm-gf110mm-f5.6-t-s-macro", 110, 430, 0.5, (5.6, None), 0.5),
     # LensVisualizer (Fujifilm's pages): a 20 cm minimum focus distance from the focal plane; 0.15x
     ("fujifilm-xf18mm-f1.4-r-lm-wr", 18, 200, 0.15, (1.4, None), 0.15),
+    # LensVisualizer (Fujifilm's specification): 0.30 m, 0.21x; fujifilm/x/zoom.js: 0.3
+    ("fujifilm-xf16-55mm-f2.8-r-lm-wr-ii", 16, 300, None, (2.8, None), 0.21),
+    ("fujifilm-xf16-55mm-f2.8-r-lm-wr-ii", 55, 300, None, (2.8, None), 0.21),
     # LensVisualizer (Fujifilm's pages): 0.6 m, 0.2x at the tele end; fujifilm/x/zoom.js: 0.6
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 18, 600, None, (4, None), 0.2),
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120, 600, 0.2, (4, None), 0.2),
