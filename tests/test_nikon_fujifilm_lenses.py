@@ -41,9 +41,10 @@ CITED = [
     # Digital Camera World: 0.24m at 24mm and 0.33m at 70mm; 0.21x at 24mm and 0.32x at 70mm; f/2.8-22
     ("nikon-z-24-70mm-f2.8-s-ii", 24, 240, 0.21, (2.8, 22), 0.32),
     ("nikon-z-24-70mm-f2.8-s-ii", 70, 330, 0.32, (2.8, 22), 0.32),
-    # nikon/z/zoom.js: 0.75, 0.38; Photography Life review: 0.38x
+    # LensVisualizer (Nikon's specification): 0.75 m at 100 mm and 0.98 m at 400 mm; nikon/z/zoom.js: 0.75, 0.38;
+    # Photography Life review: 0.38x
     ("nikon-z-100-400mm-f4.5-5.6-vr-s", 100, 750, None, (4.5, None), 0.38),
-    ("nikon-z-100-400mm-f4.5-5.6-vr-s", 400, 750, None, (5.6, None), 0.38),
+    ("nikon-z-100-400mm-f4.5-5.6-vr-s", 400, 980, None, (5.6, None), 0.38),
     # nikon/z/zoom.js: fStop [4, 7.1], 0.2, 0.5
     ("nikon-z-24-105mm-f4-7.1", 24, 200, None, (4, None), 0.5),
     ("nikon-z-24-105mm-f4-7.1", 105, 200, None, (7.1, None), 0.5),
