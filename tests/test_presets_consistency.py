@@ -306,6 +306,19 @@ SHORTER_AT_CLOSE_FOCUS = {
     # 1:5 at 0.35, 0.5 and 0.6 m imply about 49, 69 and 83 mm (APO-Summicron-SL 50, 75, 90, internal focusing)
     ("leica-apo-summicron-sl-50mm-f2-asph", 50.0), ("leica-apo-summicron-sl-75mm-f2-asph", 75.0),
     ("leica-apo-summicron-sl-90mm-f2-asph", 90.0),
+    # nikon-fujifilm-lenses.yaml, internal focusing: 0.33 m with 0.32x at 70 mm, 0.85 m with 0.11x, 0.267 m with
+    # 0.5x, 0.39 m with 0.15x, 2.75 m with 0.2x and 1.75 m with 0.19x at 400 mm imply about 61, 76, 59, 44, 382
+    # and 235 mm (NIKKOR Z 24-70mm f/2.8 S II, Z 85mm f/1.2 S; XF60mm Macro, XF50mm F2, XF500mm, XF100-400mm)
+    ("nikon-z-24-70mm-f2.8-s-ii", 70.0), ("nikon-z-85mm-f1.2-s", 85.0), ("fujifilm-xf60mm-f2.4-r-macro", 60.0),
+    ("fujifilm-xf50mm-f2-r-wr", 50.0), ("fujifilm-xf500mm-f5.6-r-lm-ois-wr", 500.0),
+    ("fujifilm-xf100-400mm-f4.5-5.6-r-lm-ois-wr", 400.0),
+    # 0.38 m with 0.3x at 70 mm and 0.8 m with 0.25x at 200 mm imply about 67 and 128 mm (NIKKOR Z 70-200mm f/2.8
+    # VR S II); 0.6 m with 0.2x at 120 mm, 0.6 m with 0.2x at 100 mm, 0.35 m with 0.28x at 70 mm and 2.75 m with 0.2x
+    # imply about 83, 83, 60 and 382 mm (XF18-120mm, GF100-200mm, GF35-70mm, GF500mm)
+    ("nikon-z-70-200mm-f2.8-vr-s-ii", 70.0), ("nikon-z-70-200mm-f2.8-vr-s-ii", 200.0),
+    ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120.0),
+    ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100.0), ("fujifilm-gf35-70mm-f4.5-5.6-wr", 70.0),
+    ("fujifilm-gf500mm-f5.6-r-lm-ois-wr", 500.0),
 }
 
 
