@@ -81,7 +81,6 @@ NOMINAL = [
 PHONES = [
     ("xiaomi-15-ultra", "1-inch-phone"),
     ("apple-iphone-air", "1-1.56-inch"),
-    ("huawei-pura-80-ultra", "1-inch-phone"),
 ]
 
 
@@ -158,10 +157,6 @@ LENSES = [
     ("apple-iphone-air-main", "apple-iphone-air", 1.6, 26.0),
     # Wex Photo Video: "a razor-sharp Zeiss 35mm f2 Sonnar T* lens" on the full-frame RX1R III (35 mm stated).
     ("sony-rx1r-iii-lens", "sony-rx1r-iii", 2.0, 35.0),
-    # HardwareZone: "50 MP 1-inch ... main camera with physical variable aperture of F1.6~F4.0"; Digitec: "focal
-    # lengths of 13, 22.5, 83 and 212 millimetres in 35 mm format", the 83 mm at f/2.4 on the 1/1.28-inch sensor.
-    ("huawei-pura-80-ultra-main", "huawei-pura-80-ultra", 1.6, 22.5),
-    ("huawei-pura-80-ultra-telephoto", "huawei-pura-80-ultra", 2.4, 83.0),
 ]
 
 # (sensor preset, optical type in inches as the page names it): sized by the type rule, diagonal = 2/3 inch / type.
@@ -253,20 +248,6 @@ def test_the_12k_height_is_the_identity_of_its_published_width_and_image():
     assert body.sensor.height_mm == pytest.approx(27.03 * 6480 / 12288, abs=0.005)
     assert body.approximate and "height is not confirmed" in " ".join(body.notes.split())
     assert body.category == "cine" and body.mount is None
-
-
-def test_the_pura_80_ultra_keeps_only_the_modules_a_page_gives_in_full():
-    db = load_db()
-    main = db.lens("huawei-pura-80-ultra-main")
-    # HardwareZone: "physical variable aperture of F1.6~F4.0": the module's own aperture range
-    assert (main.f_number_min, main.f_number_max) == (1.6, 4.0)
-    telephoto = db.lens("huawei-pura-80-ultra-telephoto")
-    assert telephoto.sensor_id == "1-1.28-inch"  # "a single 50MP 1/1.28-inch sensor"
-    lens_ids = {lens.id for lens in db.all("lens")}
-    # the 13 mm ultra wide (aperture, sensor type) and the 212 mm crop of the shared sensor are on no page read
-    assert not {lens for lens in lens_ids if lens.startswith("huawei-pura-80-ultra")} - {main.id, telephoto.id}
-    notes = " ".join(db.camera("huawei-pura-80-ultra").notes.split())
-    assert "13 mm ultra wide" in notes and "212 mm telephoto" in notes
 
 
 def test_compacts_without_a_page_for_their_lens_name_none():
