@@ -53,6 +53,9 @@ CONFIRMED = [
     ("sony-zv-1f", 13.2, 8.8, None, None, "fixed lens", None),
     # Notebookcheck: "Dieser 22 Megapixel Sensor im 1,4 Zoll Format misst 18,4 x 12,3 Millimeter".
     ("canon-powershot-v1", 18.4, 12.3, None, None, "fixed lens", None),
+    # digitalkamera.de: the 13.2 x 8.8 mm sensor "im Hochformat verbaut und in seiner Höhe auf 11,7 Millimeter
+    # beschnitten": an 8.8 x 11.7 mm frame, entered landscape.
+    ("fujifilm-x-half", 11.7, 8.8, None, None, "fixed lens", None),
 ]
 
 # (camera, nominal format standing in, category): the bodies whose own size and image size no page gives.
@@ -75,6 +78,8 @@ NOMINAL = [
     ("sony-rx1r-iii", "full-frame", None),
     # fotografia.it: "sensore Quattro Terzi da 21 Mpxl nominali e 17 Mpxl effettivi".
     ("leica-d-lux-8", "four-thirds", None),
+    # DOCMA: "Die neue Sony a7 V ... dank eines teilgestapelten Sensors ... 33 Megapixel Raws".
+    ("sony-a7-v", "full-frame", None),
 ]
 
 # (phone, sensor preset of its main module): phones, whose sensor sizes are derived (see the sensor presets).
@@ -157,6 +162,8 @@ LENSES = [
     ("apple-iphone-air-main", "apple-iphone-air", 1.6, 26.0),
     # Wex Photo Video: "a razor-sharp Zeiss 35mm f2 Sonnar T* lens" on the full-frame RX1R III (35 mm stated).
     ("sony-rx1r-iii-lens", "sony-rx1r-iii", 2.0, 35.0),
+    # digitalkamera.de: "einem kleinbildäquivalenten 32mm-Objektiv mit einer Blendenöffnung von F2,8".
+    ("fujifilm-x-half-lens", "fujifilm-x-half", 2.8, 32.0),
 ]
 
 # (sensor preset, optical type in inches as the page names it): sized by the type rule, diagonal = 2/3 inch / type.
@@ -179,8 +186,8 @@ def test_built_in_lenses_against_their_pages(lens_id, camera, f_number, equivale
     assert lens.f_number_min == f_number
     assert phone_lens_records()[lens_id]["equivalent_focal_length_mm"] == equivalent
     assert lens.mount == "fixed lens"
-    if lens.category == "phone" or lens_id == "ricoh-gr-iv-lens":  # the RX1R III's 35 mm is stated
-        # a module's (and the GR IV's) focal length is derived from the stated equivalent and the sensor (no page gives it): flagged
+    if lens.category == "phone" or lens_id in ("ricoh-gr-iv-lens", "fujifilm-x-half-lens"):  # the RX1R III's 35 mm is stated
+        # a module's (and the GR IV's and X half's) focal length is derived from the stated equivalent and the sensor (no page gives it): flagged
         assert lens.approximate and "derived" in lens.notes
     sensor = db.sensor(lens.sensor_id) if lens.sensor_id in {s.id for s in db.all("sensor")} else db.camera(camera).sensor
     crop = FULL_FRAME_DIAGONAL_MM / math.hypot(sensor.width_mm, sensor.height_mm)
@@ -259,3 +266,11 @@ def test_compacts_without_a_page_for_their_lens_name_none():
     rx1 = db.lens("sony-rx1r-iii-lens")
     assert rx1.min_focus_mm is None and rx1.f_number_max is None
     assert "min_focus_mm not found" in rx1.notes and "f_number_max not found" in rx1.notes
+
+
+def test_the_x_half_frame_gives_the_pages_crop_factor():
+    # digitalkamera.de: the 8.8 x 11.7 mm frame "bedeutet" an effective crop factor of 3
+    body = load_db().camera("fujifilm-x-half")
+    assert FULL_FRAME_DIAGONAL_MM / math.hypot(body.sensor.width_mm, body.sensor.height_mm) == pytest.approx(3.0, rel=0.02)
+    # and the 3:4 aspect of the half frame
+    assert body.sensor.height_mm / body.sensor.width_mm == pytest.approx(3 / 4, rel=0.005)
