@@ -7,6 +7,7 @@ page gives is left out of the entry, which is then ``approximate`` with notes na
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import pytest
@@ -40,6 +41,21 @@ CONFIRMED = [
     # DPReview (database/panasonic_dcbgh1.yaml): 'Four Thirds (19.2 x 13 mm)', Micro Four Thirds; its
     # 3680 x 2760 is a 4:3 crop of the multi-aspect sensor and is left out.
     ("panasonic-lumix-bgh1", 19.2, 13.0, None, None, "Micro Four Thirds", "cine"),
+    # Camera Sensor Database (data/markdown/blackmagic/pocketcinemacamera6kprog2.md, "Pocket Cinema Camera 6K
+    # (Pro/G2)"): 6K 16:9 6144 x 3456, 23.1 x 12.99 mm; no mount in the file.
+    ("blackmagic-pocket-6k-pro", 23.1, 12.99, 6144, 3456, None, "cine"),
+    ("blackmagic-pocket-6k-g2", 23.1, 12.99, 6144, 3456, None, "cine"),
+    # Camera Sensor Database (data/markdown/blackmagic/ursacineimmersive.md): 8K 8160 x 7200, 23.66 x 20.88 mm.
+    ("blackmagic-ursa-cine-immersive", 23.66, 20.88, 8160, 7200, None, "cine"),
+    # DPReview (database/sony_zv1.yaml): SensorSize '1″ (13.2 x 8.8 mm)', MaxResolution 5472 x 3648.
+    ("sony-zv-1", 13.2, 8.8, 5472, 3648, "fixed lens", None),
+    # DPReview (database/sony_zv1f.yaml): SensorSize '1″ (13.2 x 8.8 mm)', MaxResolution empty.
+    ("sony-zv-1f", 13.2, 8.8, None, None, "fixed lens", None),
+    # Notebookcheck: "Dieser 22 Megapixel Sensor im 1,4 Zoll Format misst 18,4 x 12,3 Millimeter".
+    ("canon-powershot-v1", 18.4, 12.3, None, None, "fixed lens", None),
+    # digitalkamera.de: the 13.2 x 8.8 mm sensor "im Hochformat verbaut und in seiner Höhe auf 11,7 Millimeter
+    # beschnitten": an 8.8 x 11.7 mm frame, entered landscape.
+    ("fujifilm-x-half", 11.7, 8.8, None, None, "fixed lens", None),
 ]
 
 # (camera, nominal format standing in, category): the bodies whose own size and image size no page gives.
@@ -58,6 +74,12 @@ NOMINAL = [
     ("ricoh-gr-iv", "aps-c", None),
     # DPReview's GFX100RF page (open-product-data, main branch): "102MP medium format CMOS sensor".
     ("fujifilm-gfx100rf", "mf-44x33", None),
+    # Wex Photo Video: "a full-frame premium compact ... a beefy 61MP sensor".
+    ("sony-rx1r-iii", "full-frame", None),
+    # fotografia.it: "sensore Quattro Terzi da 21 Mpxl nominali e 17 Mpxl effettivi".
+    ("leica-d-lux-8", "four-thirds", None),
+    # DOCMA: "Die neue Sony a7 V ... dank eines teilgestapelten Sensors ... 33 Megapixel Raws".
+    ("sony-a7-v", "full-frame", None),
 ]
 
 # (phone, sensor preset of its main module): phones, whose sensor sizes are derived (see the sensor presets).
@@ -77,8 +99,13 @@ def test_phones_name_their_main_module(camera, sensor_id):
     assert db.lens(body.lens_id).sensor_id == sensor_id
 
 
+# Bodies whose figures come partly from a page and partly from an identity: approximate, notes say which.
+DERIVED = ["blackmagic-ursa-mini-pro-12k"]
+
+
 def added_camera_ids() -> set[str]:
-    return {row[0] for row in CONFIRMED} | {row[0] for row in NOMINAL} | {row[0] for row in PHONES}
+    return ({row[0] for row in CONFIRMED} | {row[0] for row in NOMINAL} | {row[0] for row in PHONES}
+            | set(DERIVED))
 
 
 @pytest.mark.parametrize(("camera", "width", "height", "across", "down", "mount", "category"), CONFIRMED)
@@ -109,7 +136,9 @@ def test_every_added_body_cites_a_page_or_the_file_read():
     records = {r["id"]: r for r in yaml.safe_load((ROOT / "lens_db" / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]}
     for camera in added_camera_ids():
         source = " ".join(records[camera]["source"].split())
-        assert "https://" in source or "open-product-data/digital-cameras" in source, camera
+        # a page's address, DPReview's archived file, or a public repository's file at a named commit
+        at_commit = re.search(r"[\w.-]+/[\w.-]+ on GitHub, [\w./-]+\.\w+ at commit [0-9a-f]{40}", source)
+        assert "https://" in source or "open-product-data/digital-cameras" in source or at_commit, camera
 
 
 # --- phone-lenses.yaml -----------------------------------------------------------------------------
@@ -131,6 +160,10 @@ LENSES = [
     ("fujifilm-gfx100rf-lens", "fujifilm-gfx100rf", 4.0, 28.0),
     # The Verge (quoted by Briefly): "a 48-megapixel sensor with a 26mm-equivalent f/1.6 lens".
     ("apple-iphone-air-main", "apple-iphone-air", 1.6, 26.0),
+    # Wex Photo Video: "a razor-sharp Zeiss 35mm f2 Sonnar T* lens" on the full-frame RX1R III (35 mm stated).
+    ("sony-rx1r-iii-lens", "sony-rx1r-iii", 2.0, 35.0),
+    # digitalkamera.de: "einem kleinbildäquivalenten 32mm-Objektiv mit einer Blendenöffnung von F2,8".
+    ("fujifilm-x-half-lens", "fujifilm-x-half", 2.8, 32.0),
 ]
 
 # (sensor preset, optical type in inches as the page names it): sized by the type rule, diagonal = 2/3 inch / type.
@@ -153,8 +186,8 @@ def test_built_in_lenses_against_their_pages(lens_id, camera, f_number, equivale
     assert lens.f_number_min == f_number
     assert phone_lens_records()[lens_id]["equivalent_focal_length_mm"] == equivalent
     assert lens.mount == "fixed lens"
-    if lens.category == "phone" or lens_id == "ricoh-gr-iv-lens":
-        # a module's (and the GR IV's) focal length is derived from the stated equivalent and the sensor (no page gives it): flagged
+    if lens.category == "phone" or lens_id in ("ricoh-gr-iv-lens", "fujifilm-x-half-lens"):  # the RX1R III's 35 mm is stated
+        # a module's (and the GR IV's and X half's) focal length is derived from the stated equivalent and the sensor (no page gives it): flagged
         assert lens.approximate and "derived" in lens.notes
     sensor = db.sensor(lens.sensor_id) if lens.sensor_id in {s.id for s in db.all("sensor")} else db.camera(camera).sensor
     crop = FULL_FRAME_DIAGONAL_MM / math.hypot(sensor.width_mm, sensor.height_mm)
@@ -210,3 +243,34 @@ def test_phone_lenses_file_holds_only_fixed_lenses_named_by_a_camera():
     db = load_db()
     for camera in cameras:
         assert db.camera(camera).lens_id in {lens["id"] for lens in lenses}, camera
+
+
+# --- the gaps of 2020-2026 added after the comparison with the makers' announcements ----------------
+
+def test_the_12k_height_is_the_identity_of_its_published_width_and_image():
+    # telemetry-parser: width 27.03 mm; Digital Trends (mostathmr.com) and es.wtvid.com: 12 288 x 6 480 photosites.
+    body = load_db().camera("blackmagic-ursa-mini-pro-12k")
+    assert body.sensor.width_mm == 27.03 and (body.pixels_w, body.pixels_h) == (12288, 6480)
+    # square photosites: the height is the width scaled by the image's aspect, to the page's two decimals
+    assert body.sensor.height_mm == pytest.approx(27.03 * 6480 / 12288, abs=0.005)
+    assert body.approximate and "height is not confirmed" in " ".join(body.notes.split())
+    assert body.category == "cine" and body.mount is None
+
+
+def test_compacts_without_a_page_for_their_lens_name_none():
+    db = load_db()
+    for camera in ("sony-zv-1", "sony-zv-1f", "canon-powershot-v1", "leica-d-lux-8"):
+        body = db.camera(camera)
+        assert body.mount == "fixed lens" and body.lens_id is None, camera
+        assert "not entered" in " ".join(body.notes.split()), camera
+    rx1 = db.lens("sony-rx1r-iii-lens")
+    assert rx1.min_focus_mm is None and rx1.f_number_max is None
+    assert "min_focus_mm not found" in rx1.notes and "f_number_max not found" in rx1.notes
+
+
+def test_the_x_half_frame_gives_the_pages_crop_factor():
+    # digitalkamera.de: the 8.8 x 11.7 mm frame "bedeutet" an effective crop factor of 3
+    body = load_db().camera("fujifilm-x-half")
+    assert FULL_FRAME_DIAGONAL_MM / math.hypot(body.sensor.width_mm, body.sensor.height_mm) == pytest.approx(3.0, rel=0.02)
+    # and the 3:4 aspect of the half frame
+    assert body.sensor.height_mm / body.sensor.width_mm == pytest.approx(3 / 4, rel=0.005)

@@ -26,6 +26,15 @@ NO_LENS_PRESET = {
     # no page read gives the closest focus at the long end, which every shipped zoom must have
     # (tests/test_presets_consistency.py, test_every_shipped_zoom_has_per_focal_length_rows).
     "sony-rx100-vii",
+    # Zooms too, and no page read gives their closest focus (nor, for the ZV-1 and PowerShot V1, their real focal
+    # lengths): DPReview's ZV-1 page (24-70 mm equivalent, 5 cm without its plane), Notebookcheck's PowerShot V1
+    # (16-50 mm equivalent), fotografia.it's D-Lux 8 (10.9-34 mm).
+    "sony-zv-1",
+    "canon-powershot-v1",
+    "leica-d-lux-8",
+    # A prime whose page gives a 22 mm equivalent in its specifications and 20 mm in its conclusion, and no real
+    # focal length (DPReview's ZV-1F page).
+    "sony-zv-1f",
 }
 
 
@@ -35,9 +44,10 @@ def fixed_lens_cameras():
 
 def test_every_fixed_lens_camera_names_its_lens():
     cameras = fixed_lens_cameras()
-    # with the Leica Q3 43, Ricoh GR IV, Fujifilm GFX100RF, Xiaomi 15 Ultra and iPhone Air (their lenses in
-    # phone-lenses.yaml)
-    assert len(cameras) == 23
+    # with the Leica Q3 43, Ricoh GR IV, Fujifilm GFX100RF, Xiaomi 15 Ultra, iPhone Air, Sony RX1R III and Fujifilm
+    # X half (their lenses in phone-lenses.yaml), and the Sony ZV-1 and ZV-1F, Canon PowerShot V1 and Leica D-Lux 8
+    # (no lens preset, above)
+    assert len(cameras) == 29
     named = {camera.id for camera in cameras if camera.lens_id is not None}
     assert named == {camera.id for camera in cameras} - NO_LENS_PRESET
     db = load_db()
