@@ -72,7 +72,7 @@ def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
         blobs.append(blob)
         offset += len(blob)
     poisoned = json.dumps(new_spans).encode() + b"\n" + b"".join(blobs)
-    # the span's recorded digest stays the build's: the poisoned span does not have it
+    # the sections' recorded digests stay the build's: the poisoned sections do not have them
     files = {**index, "sensors.yaml": [index["sensors.yaml"][0], len(body), len(poisoned), index["sensors.yaml"][3]]}
     monkeypatch.setattr(loader, "_shipped_index", {"index": files, "body": body + poisoned})
 

@@ -156,21 +156,23 @@ class _Cached:
     """A cache entry that passed the envelope checks: its sections, parsed and checked on first use."""
 
     def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes, cache_path: str, source: str,
-                 limit: int, verified: bool = False) -> None:
+                 limit: int, digests: dict[str, str] | None = None) -> None:
         self.body = body
         self.sections = sections
         self.raw = raw
         self.cache_path = cache_path
         self.source = source
         self.limit = limit
-        self.verified = verified  # the shipped records, their digest the build's: no second schema check
+        # the shipped records: each section used only with the digest the build recorded, then without a second
+        # schema check (None: a cache entry, every record checked)
+        self.digests = digests
         self.handed: dict[str, list[list[str]]] = {}
         self._parsed: dict[str, Any] = {}
         self._checked: dict[tuple[str, int], dict[str, Any]] = {}
 
     @classmethod
     def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str, limit: int,
-              verified: bool = False) -> _Cached | None:
+              digests: dict[str, str] | None = None) -> _Cached | None:
         end = payload.find(b"\n")
         if end < 0:
             return None
@@ -188,7 +190,7 @@ class _Cached:
                 return None
             if span[0] < 0 or span[1] < 0 or span[0] + span[1] > len(body):
                 return None
-        return cls(body, sections, raw, cache_path, source, limit, verified)
+        return cls(body, sections, raw, cache_path, source, limit, digests)
 
     def kinds(self) -> list[str]:
         return [name for name in self.sections if "#" not in name]
@@ -198,10 +200,12 @@ class _Cached:
             value = None
             span = self.sections.get(name)
             if span is not None:
-                try:
-                    value = json.loads(self.body[span[0]:span[0] + span[1]])
-                except (ValueError, RecursionError):
-                    value = None
+                blob = self.body[span[0]:span[0] + span[1]]
+                if self.digests is None or self.digests.get(name) == _source_digest(blob):
+                    try:
+                        value = json.loads(blob)
+                    except (ValueError, RecursionError):
+                        value = None
             self._parsed[name] = value
         return self._parsed[name]
 
@@ -242,7 +246,7 @@ class _Cached:
         return record
 
     def _valid(self, kind: str, record: Any) -> bool:
-        return isinstance(record, dict) and isinstance(record.get("_keys"), list) if self.verified else \
+        return isinstance(record, dict) and isinstance(record.get("_keys"), list) if self.digests is not None else \
             _valid_record(kind, record)
 
     def all(self, kind: str) -> list[dict[str, Any]] | None:
@@ -266,6 +270,12 @@ class _Cached:
                 checked = record
             out.append(checked)
         return out
+
+
+def _source_digest(data: bytes) -> str:
+    from camtool.core import cache
+
+    return cache.source_digest(data)
 
 
 def _valid_keys(keys: Any) -> bool:
@@ -351,9 +361,9 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     cache_path = _cache_path(cache_dir, absolute)
     source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     limit = _cache_limit(len(raw))
-    payload = shipped_payload(absolute, raw)
-    if payload is not None:
-        cached = _Cached.parse(payload, raw, cache_path, source, limit, verified=True)
+    shipped = shipped_payload(absolute, raw)
+    if shipped is not None:
+        cached = _Cached.parse(shipped[0], raw, cache_path, source, limit, digests=shipped[1])
         if cached is not None:
             return FileData(path, cached=cached)
     payload = cache.read(cache_path, _CACHE_KIND, source, limit)
@@ -372,10 +382,11 @@ SHIPPED_RECORDS = "shipped-records.json"
 Written by ``python -m camtool.presets.shipped`` from a validated parse of
 each file: one JSON line mapping each file's name under ``lens_db/`` to the
 SHA-256 of the bytes it was made from, its span in the rest of the file and
-the SHA-256 of that span, then each file's records in the layout of a cache
-entry. A command reads these instead of parsing the YAML or reading the
-cache, each only for the very bytes it was made from and only when the span
-still has its recorded digest (then without :func:`_valid_record`: the
+the SHA-256 of each section of the span (a kind's records, a kind's keys),
+then each file's records in the layout of a cache entry. A command reads
+these instead of parsing the YAML or reading the cache, each only for the
+very bytes it was made from and each section only when it still has its
+recorded digest (then without :func:`_valid_record`: the
 build's parse checked every record, ``tests/test_presets_shipped.py`` that
 the file is the build's). An edited file, or a span that is not what the
 build wrote, finds no match: the cache or a parse answers.
@@ -403,8 +414,9 @@ def _shipped_records() -> tuple[dict[str, Any], bytes]:
     return _shipped_index["index"], _shipped_index["body"]
 
 
-def shipped_payload(absolute: str, raw: bytes) -> bytes | None:
-    """The shipped records of the file at ``absolute`` when it is a shipped file holding exactly ``raw``, else None."""
+def shipped_payload(absolute: str, raw: bytes) -> tuple[bytes, dict[str, str]] | None:
+    """The shipped records of the file at ``absolute`` and the digest of each section, when it is a shipped file
+    holding exactly ``raw`` (else None)."""
     from camtool.core import cache
     from camtool.presets import paths
 
@@ -414,13 +426,13 @@ def shipped_payload(absolute: str, raw: bytes) -> bytes | None:
         return None
     index, body = _shipped_records()
     entry = index.get(real[len(directory):].replace(os.sep, "/"))
-    if not (isinstance(entry, list) and len(entry) == 4 and isinstance(entry[0], str) and isinstance(entry[3], str)
-            and all(type(n) is int and n >= 0 for n in entry[1:3]) and entry[1] + entry[2] <= len(body)):
+    if not (isinstance(entry, list) and len(entry) == 4 and isinstance(entry[0], str)
+            and all(type(n) is int and n >= 0 for n in entry[1:3]) and entry[1] + entry[2] <= len(body)
+            and isinstance(entry[3], dict) and all(isinstance(d, str) for d in entry[3].values())):
         return None
     if entry[0] != cache.source_digest(raw):
         return None
-    payload = body[entry[1]:entry[1] + entry[2]]
-    return payload if cache.source_digest(payload) == entry[3] else None
+    return body[entry[1]:entry[1] + entry[2]], entry[3]
 
 
 def _parse_or_raise(path: str, raw: bytes) -> FileData:

@@ -7,8 +7,9 @@ tracing). Both are therefore made once, here, from the shipped files:
 
 - :data:`camtool.presets.loader.SHIPPED_RECORDS`, beside the loader: one JSON
   line (the record layout's format number and, for each file of
-  ``lens_db/``, the SHA-256 of its bytes, its span and the SHA-256 of the
-  span), then each file's validated records as a cache entry holds them;
+  ``lens_db/``, the SHA-256 of its bytes, its span and the SHA-256 of each
+  section of the span), then each file's validated records as a cache entry
+  holds them;
 - :data:`camtool.dof.auto.SHIPPED_TABLES`, beside :mod:`camtool.dof.auto`: the
   aberration table of each prescription of ``lens_db/prescriptions/``, keyed
   by the content digest a cache entry is bound to.
@@ -45,7 +46,11 @@ def build_records() -> bytes:
         if payload is None:
             raise ValueError(f"{path}: its records cannot be written as JSON")
         name = os.path.relpath(path, directory).replace(os.sep, "/")
-        files[name] = [source_digest(raw), offset, len(payload), source_digest(payload)]
+        end = payload.index(b"\n")
+        spans = json.loads(payload[:end])
+        body = payload[end + 1:]
+        digests = {section: source_digest(body[start:start + length]) for section, (start, length) in spans.items()}
+        files[name] = [source_digest(raw), offset, len(payload), digests]
         blobs.append(payload)
         offset += len(payload)
     index = json.dumps({"format": loader.CACHE_FORMAT, "files": files}, separators=(",", ":"), sort_keys=True)
