@@ -38,6 +38,16 @@ CONFIRMED = [
     ("panasonic-lumix-g95", 17.3, 13.0, 5184, 3888, "Micro Four Thirds", None),
     # DPReview (database/leica_q2.yaml): 'Full frame (36 x 24 mm)', 8368 x 5584; DigitalRev: "8368×5584 pixels".
     ("leica-q2", 36.0, 24.0, 8368, 5584, "fixed lens", None),
+    # DPReview (database/canon_g9xii.yaml): '1″ (13.2 x 8.8 mm)', 5472 x 3648.
+    ("canon-powershot-g9-x-mark-ii", 13.2, 8.8, 5472, 3648, "fixed lens", None),
+    # DPReview (database/canon_g1xiii.yaml): 'APS-C (22.3 x 14.9 mm)', 6000 x 4000.
+    ("canon-powershot-g1-x-mark-iii", 22.3, 14.9, 6000, 4000, "fixed lens", None),
+    # DPReview (database/panasonic_dczs200.yaml): '1″ (13.2 x 8.8 mm)', 5472 x 3648.
+    ("panasonic-lumix-zs200", 13.2, 8.8, 5472, 3648, "fixed lens", None),
+    # DPReview (database/fujifilm_x100f.yaml): 'APS-C (23.6 x 15.6 mm)', 6000 x 4000.
+    ("fujifilm-x100f", 23.6, 15.6, 6000, 4000, "fixed lens", None),
+    # DPReview (database/ricoh_grii.yaml): 'APS-C (23.7 x 15.7 mm)', 4928 x 3264.
+    ("ricoh-gr-ii", 23.7, 15.7, 4928, 3264, "fixed lens", None),
     # DPReview (database/olympus_tg6.yaml): '1/2.3" (6.17 x 4.55 mm)'; its 4000 x 3000 is left out (see below).
     ("olympus-tough-tg-6", 6.17, 4.55, None, None, "fixed lens", None),
     # Camera Sensor Database (blackmagic/ursaminipro46kg2.md): 4.6K 16:9 4608 x 2592, 25.34 x 14.25 mm;
@@ -173,3 +183,12 @@ def test_a_full_frame_compact_gives_its_focal_length_back_as_the_equivalent():
     # on the Q2's 36 x 24 mm the 35 mm-equivalent of its 28 mm is 28 mm (DPReview: FocalLengthEquiv 28 mm)
     (row,) = run_json("fov", "--camera", "leica-q2", "-f", "28")
     assert row["equivalent_focal_length_mm"] == pytest.approx(28.0, abs=0.05)
+
+
+@pytest.mark.parametrize("camera", [row[0] for row in CONFIRMED if row[5] == "fixed lens"])
+def test_compacts_whose_lens_no_page_gives_name_none(camera):
+    # the pages give the built-in lens's 35 mm equivalent, not its real focal length and closest focus:
+    # the lens is not entered, and the notes say so
+    body = load_db().camera(camera)
+    assert body.lens_id is None
+    assert "not entered" in " ".join(body.notes.split())
