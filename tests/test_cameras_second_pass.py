@@ -53,6 +53,8 @@ CONFIRMED = [
     # Camera Sensor Database (blackmagic/ursaminipro46kg2.md): 4.6K 16:9 4608 x 2592, 25.34 x 14.25 mm;
     # telemetry-parser (camera_db/blackmagic.json): "URSA Mini Pro 4.6K G2" sw 25.34. No mount in either.
     ("blackmagic-ursa-mini-pro-46k-g2", 25.34, 14.25, 4608, 2592, None, "cine"),
+    # Camera Sensor Database (sony/venice.md): "6K Full Frame Mode 6K 3:2 | 6048 x 4032 | 35.9 x 24.0".
+    ("sony-venice", 35.9, 24.0, 6048, 4032, None, "cine"),
 ]
 
 # (camera, the body whose figures it carries, what the page says of them)
@@ -192,3 +194,13 @@ def test_compacts_whose_lens_no_page_gives_name_none(camera):
     body = load_db().camera(camera)
     assert body.lens_id is None
     assert "not entered" in " ".join(body.notes.split())
+
+
+def test_the_venice_and_venice_2_6k_record_the_same_raster_on_the_same_area():
+    # sony/venice.md: 6048 x 4032 on 35.9 x 24.0 mm; sony/venice26k.md: 6048 x 4032 on 35.93 x 23.95 mm
+    db = load_db()
+    first, second = db.camera("sony-venice"), db.camera("sony-venice-2-6k")
+    assert (first.pixels_w, first.pixels_h) == (second.pixels_w, second.pixels_h)
+    # within the rounding of the two files: one decimal (±0.05 mm) against two (±0.005 mm)
+    assert first.sensor.width_mm == pytest.approx(second.sensor.width_mm, abs=0.055)
+    assert first.sensor.height_mm == pytest.approx(second.sensor.height_mm, abs=0.055)
