@@ -46,8 +46,8 @@ CONFIRMED = [
     ("panasonic-lumix-zs200", 13.2, 8.8, 5472, 3648, "fixed lens", None),
     # DPReview (database/fujifilm_x100f.yaml): 'APS-C (23.6 x 15.6 mm)', 6000 x 4000.
     ("fujifilm-x100f", 23.6, 15.6, 6000, 4000, "fixed lens", None),
-    # DPReview (database/ricoh_grii.yaml): 'APS-C (23.7 x 15.7 mm)', 4928 x 3264.
-    ("ricoh-gr-ii", 23.7, 15.7, 4928, 3264, "fixed lens", None),
+    # DPReview (database/fujifilm_xf10.yaml): 'APS-C (23.5 x 15.7 mm)', 6000 x 4000.
+    ("fujifilm-xf10", 23.5, 15.7, 6000, 4000, "fixed lens", None),
     # DPReview (database/olympus_tg6.yaml): '1/2.3" (6.17 x 4.55 mm)'; its 4000 x 3000 is left out (see below).
     ("olympus-tough-tg-6", 6.17, 4.55, None, None, "fixed lens", None),
     # Camera Sensor Database (blackmagic/ursaminipro46kg2.md): 4.6K 16:9 4608 x 2592, 25.34 x 14.25 mm;
