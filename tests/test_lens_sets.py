@@ -22,16 +22,26 @@ def isolated(request, monkeypatch, shared_presets_home):
     return root
 
 
-# lens_db/lenses.yaml, arri-signature-prime (its source: the Signature Prime rows of
-# Hugo9809/cine-power-planner's gear table): T1.8; 0.35 m from 12 to 40 mm, 0.45 m at 47 mm
-SIGNATURE = [(12, 350), (15, 350), (18, 350), (21, 350), (25, 350), (29, 350), (35, 350), (40, 350), (47, 450)]
+# lens_db/lenses.yaml, arri-signature-prime (its source: the 'ARRI Signature Prime <f>mm T<t>' rows of
+# Hugo9809/cine-power-planner's gear table, src/data/devices/gearList.js at 1a0649d, and the arri_signature_prime_*
+# rows of InfraXCoders/iris's lenses.csv at f7b56ce, ARRI's technical data): (focal length, 'tStop', 'minFocusMeters'
+# in mm) -- T1.8 from 12 to 150 mm, 0.35 m from 12 to 40 mm, 0.45 m at 47 and 58 mm, ...; T2.5 and 1.8 m at 200 mm,
+# T2.8 and 2.5 m at 280 mm
+SIGNATURE = [(12, 1.8, 350), (15, 1.8, 350), (18, 1.8, 350), (21, 1.8, 350), (25, 1.8, 350), (29, 1.8, 350),
+             (35, 1.8, 350), (40, 1.8, 350), (47, 1.8, 450), (58, 1.8, 450), (75, 1.8, 650), (95, 1.8, 850),
+             (125, 1.8, 1000), (150, 1.8, 1500), (200, 2.5, 1800), (280, 2.8, 2500)]
 
 
 def test_every_member_carries_its_own_stop_and_close_focus():
     lens = load_db().lens("signature-prime")
-    assert [(m.focal_min_mm, m.min_focus_mm) for m in lens.members] == SIGNATURE
-    assert all(m.t_number_min == 1.8 and not m.is_zoom for m in lens.members)
-    assert not lens.is_zoom and (lens.focal_min_mm, lens.focal_max_mm) == (12.0, 47.0)
+    assert [(m.focal_min_mm, m.t_number_min, m.min_focus_mm) for m in lens.members] == SIGNATURE
+    assert all(not m.is_zoom for m in lens.members) and lens.approximate
+    assert not lens.is_zoom and (lens.focal_min_mm, lens.focal_max_mm) == (12.0, 280.0)
+    # each close focus leaves room for a real image: object and image at least 4f apart for a thin lens
+    assert all(close > 4 * focal for focal, _, close in SIGNATURE)
+    records = yaml.safe_load((Path(__file__).resolve().parents[1] / "lens_db" / "lenses.yaml").read_text(encoding="utf-8"))
+    source = " ".join(next(r for r in records["lenses"] if r["id"] == "arri-signature-prime")["source"].split())
+    assert "1a0649dfdf38d652a175d9ba9dca737677f1d1ff" in source and "f7b56cebe00e52f7842a2758a9efeece84519db8" in source
     # the 47 mm agrees with the single-lens entry that cites the same figures
     single = load_db().lens("arri-signature-prime-47mm-t1.8")
     assert lens.member(47.0).min_focus_mm == single.min_focus_mm
@@ -83,7 +93,8 @@ def test_what_a_set_refuses_is_one_line_exit_2(args, words):
 
 def test_presets_show_and_list_name_the_members():
     (row,) = run_json("presets", "show", "signature-prime")
-    assert row["members"][0] == "arri-signature-prime@12" and len(row["members"]) == 9
+    assert row["members"][0] == "arri-signature-prime@12" and len(row["members"]) == len(SIGNATURE)
+    assert row["members"][-1] == "arri-signature-prime@280"
     (row,) = run_json("presets", "show", "signature-prime@25")
     assert row["min_focus_mm"] == 350.0
 
