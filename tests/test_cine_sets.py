@@ -112,6 +112,12 @@ DATASET_SETS = {
         ("atlas_orion_28", 28, 2, 0.53), ("atlas_orion_32", 32, 2, 0.56), ("atlas_orion_40", 40, 2, 0.76),
         ("atlas_orion_50", 50, 2, 0.84), ("atlas_orion_65", 65, 2, 0.91), ("atlas_orion_80", 80, 2, 0.91),
         ("atlas_orion_100", 100, 2, 1.1), ("atlas_orion_135", 135, 2.2, 1.1), ("atlas_orion_200", 200, 3.2, 1.1)]),
+    "cooke-anamorphic-i": (2, [
+        ("cooke_anamorphic_i_s35_25", 25, 2.3, 1), ("cooke_anamorphic_i_s35_32", 32, 2.3, 0.85),
+        ("cooke_anamorphic_i_s35_40", 40, 2.3, 0.85), ("cooke_anamorphic_i_s35_50", 50, 2.3, 0.85),
+        ("cooke_anamorphic_i_s35_65", 65, 2.6, 0.44), ("cooke_anamorphic_i_s35_75", 75, 2.3, 1),
+        ("cooke_anamorphic_i_s35_100", 100, 2.3, 1.2), ("cooke_anamorphic_i_s35_135", 135, 2.3, 1.4),
+        ("cooke_anamorphic_i_s35_180", 180, 2.8, 2), ("cooke_anamorphic_i_s35_300", 300, 3.5, 3)]),
     "cooke-anamorphic-i-ff-plus": (1.8, [
         ("cooke_anamorphic_i_ff_32", 32, 2.3, 0.9), ("cooke_anamorphic_i_ff_40", 40, 2.3, 0.9),
         ("cooke_anamorphic_i_ff_50", 50, 2.3, 0.85), ("cooke_anamorphic_i_ff_75", 75, 2.3, 1),

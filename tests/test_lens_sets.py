@@ -141,25 +141,28 @@ def test_the_cine_lens_file_s_sets_load_member_by_member():
 # Each set's members as its source prints them: (focal length mm, widest T-stop, closest focus mm or None where
 # the source gives none). Figures in metres in the source are written here in mm (0.22 m = 220 mm).
 CITED_SETS = {
-    # Hugo9809/cine-power-planner gearList.js, 'ARRI/ZEISS Ultra Prime <f>mm T<t>' rows, minFocusMeters
+    # Hugo9809/cine-power-planner gearList.js at 1a0649d, 'ARRI/ZEISS Ultra Prime <f>mm T<t>' rows, minFocusMeters;
+    # the 28 mm from InfraXCoders/iris lenses.csv at f7b56ce, row arri_zeiss_ultra_prime_28 (ARRI's page)
     "arri-zeiss-ultra-prime": [
         (8, 2.8, 350), (10, 2.1, 350), (12, 2.0, 300), (14, 1.9, 220), (16, 1.9, 250), (20, 1.9, 280),
-        (24, 1.9, None), (32, 1.9, None), (40, 1.9, 380), (50, 1.9, 600), (65, 1.9, 650), (85, 1.9, 900),
+        (24, 1.9, 300), (28, 1.9, 280), (32, 1.9, 350), (40, 1.9, 380), (50, 1.9, 600), (65, 1.9, 650), (85, 1.9, 900),
         (100, 1.9, 1000), (135, 1.9, 1500), (180, 1.9, 2600)],
-    # the same table, 'ZEISS Master Prime <f>mm T1.3' rows
+    # the same table, 'ZEISS Master Prime <f>mm T1.3' rows; the 27, 32, 35, 40, 65, 135 and 150 mm close focus from
+    # the dataset's arri_zeiss_master_prime_<f> rows (ARRI's page)
     "arri-zeiss-master-prime": [
         (12, 1.3, 400), (14, 1.3, 350), (16, 1.3, 350), (18, 1.3, 350), (21, 1.3, 350), (25, 1.3, 350),
-        (27, 1.3, None), (40, 1.3, None), (50, 1.3, 500), (65, 1.3, None), (75, 1.3, 800), (100, 1.3, 1000),
-        (135, 1.3, None)],
-    # the same table, 'Leitz Summicron-C <f>mm T2.0' rows
+        (27, 1.3, 350), (32, 1.3, 350), (35, 1.3, 350), (40, 1.3, 400), (50, 1.3, 500), (65, 1.3, 650),
+        (75, 1.3, 800), (100, 1.3, 1000), (135, 1.3, 950), (150, 1.3, 1500)],
+    # the same table, 'Leitz Summicron-C <f>mm T2.0' rows; the dataset's leitz_summicron_c_<f> rows (Leitz's page)
     "leitz-summicron-c": [
-        (15, 2.0, 300), (18, 2.0, 300), (21, 2.0, 300), (25, 2.0, 300), (35, 2.0, None), (50, 2.0, None),
-        (75, 2.0, None), (100, 2.0, None)],
+        (15, 2.0, 300), (18, 2.0, 300), (21, 2.0, 300), (25, 2.0, 300), (29, 2.0, 300), (35, 2.0, 360),
+        (40, 2.0, 450), (50, 2.0, 600), (75, 2.0, 800), (100, 2.0, 1000), (135, 2.0, 1350)],
     # SHOOT Online: 'the S8/i FF spherical lenses, at T1.4'; focal lengths from the table's 'Cooke S8/i FF' rows
     "cooke-s8i-ff": [(25, 1.4, None), (32, 1.4, None), (40, 1.4, None), (50, 1.4, None), (75, 1.4, None),
                      (100, 1.4, None)],
-    # RedShark News review (2mmachining.com copy): '25, 32, 50, 75, and 100mm focal lengths all at T2.4'
-    "cooke-sp3": [(25, 2.4, None), (32, 2.4, None), (50, 2.4, None), (75, 2.4, None), (100, 2.4, None)],
+    # RedShark News review (2mmachining.com copy): '25, 32, 50, 75, and 100mm focal lengths all at T2.4'; the close
+    # focus and the 18 mm from the dataset's cooke_sp3_<f> rows (Cooke's SP3 sheet)
+    "cooke-sp3": [(18, 2.4, 250), (25, 2.4, 250), (32, 2.4, 350), (50, 2.4, 500), (75, 2.4, 800), (100, 2.4, 800)],
     # the table's 'ZEISS Nano Prime <f>mm T1.5' rows
     "zeiss-nano-prime": [(18, 1.5, None), (24, 1.5, None), (35, 1.5, None), (50, 1.5, None), (75, 1.5, None),
                          (100, 1.5, None)],
