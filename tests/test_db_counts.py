@@ -55,18 +55,18 @@ def test_every_shipped_file_has_a_row_in_the_table():
 
 def test_shipped_lens_count_floor():
     # Floor on the lenses of every shipped file together (every file with a `lenses` section): 388 entries,
-    # 627 lenses when each member of a cinema set counts. Raise it as entries are added; it never goes down unnoticed.
+    # 635 lenses when each member of a cinema set counts. Raise it as entries are added; it never goes down unnoticed.
     lenses = [lens for path in DB.glob("*.yaml")
               for lens in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []]
     assert len(lenses) >= 388
-    assert sum(len(lens["set"]) if "set" in lens else 1 for lens in lenses) >= 627
+    assert sum(len(lens["set"]) if "set" in lens else 1 for lens in lenses) >= 635
 
 
 def test_the_cine_sets_the_issue_asks_for_stay_shipped():
     """Floors: the cinema lens sets and the anamorphic set shipped in cine-lenses.yaml are not lost."""
     lenses = yaml.safe_load((DB / "cine-lenses.yaml").read_text(encoding="utf-8"))["lenses"]
     sets = [lens for lens in lenses if "set" in lens]
-    assert len(sets) >= 24 and sum(len(lens["set"]) for lens in sets) >= 248
+    assert len(sets) >= 24 and sum(len(lens["set"]) for lens in sets) >= 256
     assert sum(1 for lens in sets if lens.get("squeeze")) >= 4
     cameras = yaml.safe_load((DB / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]
     assert len(cameras) >= 189 and sum(1 for c in cameras if c.get("category") == "cine") >= 20
