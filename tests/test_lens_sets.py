@@ -22,16 +22,26 @@ def isolated(request, monkeypatch, shared_presets_home):
     return root
 
 
-# lens_db/lenses.yaml, arri-signature-prime (its source: the Signature Prime rows of
-# Hugo9809/cine-power-planner's gear table): T1.8; 0.35 m from 12 to 40 mm, 0.45 m at 47 mm
-SIGNATURE = [(12, 350), (15, 350), (18, 350), (21, 350), (25, 350), (29, 350), (35, 350), (40, 350), (47, 450)]
+# lens_db/lenses.yaml, arri-signature-prime (its source: the 'ARRI Signature Prime <f>mm T<t>' rows of
+# Hugo9809/cine-power-planner's gear table, src/data/devices/gearList.js at 1a0649d, and the arri_signature_prime_*
+# rows of InfraXCoders/iris's lenses.csv at f7b56ce, ARRI's technical data): (focal length, 'tStop', 'minFocusMeters'
+# in mm) -- T1.8 from 12 to 150 mm, 0.35 m from 12 to 40 mm, 0.45 m at 47 and 58 mm, ...; T2.5 and 1.8 m at 200 mm,
+# T2.8 and 2.5 m at 280 mm
+SIGNATURE = [(12, 1.8, 350), (15, 1.8, 350), (18, 1.8, 350), (21, 1.8, 350), (25, 1.8, 350), (29, 1.8, 350),
+             (35, 1.8, 350), (40, 1.8, 350), (47, 1.8, 450), (58, 1.8, 450), (75, 1.8, 650), (95, 1.8, 850),
+             (125, 1.8, 1000), (150, 1.8, 1500), (200, 2.5, 1800), (280, 2.8, 2500)]
 
 
 def test_every_member_carries_its_own_stop_and_close_focus():
     lens = load_db().lens("signature-prime")
-    assert [(m.focal_min_mm, m.min_focus_mm) for m in lens.members] == SIGNATURE
-    assert all(m.t_number_min == 1.8 and not m.is_zoom for m in lens.members)
-    assert not lens.is_zoom and (lens.focal_min_mm, lens.focal_max_mm) == (12.0, 47.0)
+    assert [(m.focal_min_mm, m.t_number_min, m.min_focus_mm) for m in lens.members] == SIGNATURE
+    assert all(not m.is_zoom for m in lens.members) and lens.approximate
+    assert not lens.is_zoom and (lens.focal_min_mm, lens.focal_max_mm) == (12.0, 280.0)
+    # each close focus leaves room for a real image: object and image at least 4f apart for a thin lens
+    assert all(close > 4 * focal for focal, _, close in SIGNATURE)
+    records = yaml.safe_load((Path(__file__).resolve().parents[1] / "lens_db" / "lenses.yaml").read_text(encoding="utf-8"))
+    source = " ".join(next(r for r in records["lenses"] if r["id"] == "arri-signature-prime")["source"].split())
+    assert "1a0649dfdf38d652a175d9ba9dca737677f1d1ff" in source and "f7b56cebe00e52f7842a2758a9efeece84519db8" in source
     # the 47 mm agrees with the single-lens entry that cites the same figures
     single = load_db().lens("arri-signature-prime-47mm-t1.8")
     assert lens.member(47.0).min_focus_mm == single.min_focus_mm
@@ -83,7 +93,8 @@ def test_what_a_set_refuses_is_one_line_exit_2(args, words):
 
 def test_presets_show_and_list_name_the_members():
     (row,) = run_json("presets", "show", "signature-prime")
-    assert row["members"][0] == "arri-signature-prime@12" and len(row["members"]) == 9
+    assert row["members"][0] == "arri-signature-prime@12" and len(row["members"]) == len(SIGNATURE)
+    assert row["members"][-1] == "arri-signature-prime@280"
     (row,) = run_json("presets", "show", "signature-prime@25")
     assert row["min_focus_mm"] == 350.0
 
@@ -130,25 +141,32 @@ def test_the_cine_lens_file_s_sets_load_member_by_member():
 # Each set's members as its source prints them: (focal length mm, widest T-stop, closest focus mm or None where
 # the source gives none). Figures in metres in the source are written here in mm (0.22 m = 220 mm).
 CITED_SETS = {
-    # Hugo9809/cine-power-planner gearList.js, 'ARRI/ZEISS Ultra Prime <f>mm T<t>' rows, minFocusMeters
+    # Hugo9809/cine-power-planner gearList.js at 1a0649d, 'ARRI/ZEISS Ultra Prime <f>mm T<t>' rows, minFocusMeters;
+    # the 28 mm from InfraXCoders/iris lenses.csv at f7b56ce, row arri_zeiss_ultra_prime_28 (ARRI's page)
     "arri-zeiss-ultra-prime": [
         (8, 2.8, 350), (10, 2.1, 350), (12, 2.0, 300), (14, 1.9, 220), (16, 1.9, 250), (20, 1.9, 280),
-        (24, 1.9, None), (32, 1.9, None), (40, 1.9, 380), (50, 1.9, 600), (65, 1.9, 650), (85, 1.9, 900),
+        (24, 1.9, 300), (28, 1.9, 280), (32, 1.9, 350), (40, 1.9, 380), (50, 1.9, 600), (65, 1.9, 650), (85, 1.9, 900),
         (100, 1.9, 1000), (135, 1.9, 1500), (180, 1.9, 2600)],
-    # the same table, 'ZEISS Master Prime <f>mm T1.3' rows
+    # the same table, 'ZEISS Master Prime <f>mm T1.3' rows; the 27, 32, 35, 40, 65, 135 and 150 mm close focus from
+    # the dataset's arri_zeiss_master_prime_<f> rows (ARRI's page)
     "arri-zeiss-master-prime": [
         (12, 1.3, 400), (14, 1.3, 350), (16, 1.3, 350), (18, 1.3, 350), (21, 1.3, 350), (25, 1.3, 350),
-        (27, 1.3, None), (40, 1.3, None), (50, 1.3, 500), (65, 1.3, None), (75, 1.3, 800), (100, 1.3, 1000),
-        (135, 1.3, None)],
-    # the same table, 'Leitz Summicron-C <f>mm T2.0' rows
+        (27, 1.3, 350), (32, 1.3, 350), (35, 1.3, 350), (40, 1.3, 400), (50, 1.3, 500), (65, 1.3, 650),
+        (75, 1.3, 800), (100, 1.3, 1000), (135, 1.3, 950), (150, 1.3, 1500)],
+    # the same table, 'Leitz Summicron-C <f>mm T2.0' rows; the dataset's leitz_summicron_c_<f> rows (Leitz's page)
     "leitz-summicron-c": [
-        (15, 2.0, 300), (18, 2.0, 300), (21, 2.0, 300), (25, 2.0, 300), (35, 2.0, None), (50, 2.0, None),
-        (75, 2.0, None), (100, 2.0, None)],
+        (15, 2.0, 300), (18, 2.0, 300), (21, 2.0, 300), (25, 2.0, 300), (29, 2.0, 300), (35, 2.0, 360),
+        (40, 2.0, 450), (50, 2.0, 600), (75, 2.0, 800), (100, 2.0, 1000), (135, 2.0, 1350)],
+    # InfraXCoders/iris lenses.csv at f7b56ce, rows cooke_s7i_prime_<f> (Cooke's S7/i sheet), t_stop and close_focus_m
+    "cooke-s7i": [
+        (16, 2, 400), (18, 2, 400), (21, 2, 400), (25, 2, 350), (27, 2, 350), (32, 2, 350), (40, 2, 450), (50, 2, 500),
+        (65, 2, 500), (75, 2, 475), (100, 2, 700), (135, 2, 950), (180, 2, 1300), (300, 3.3, 2100)],
     # SHOOT Online: 'the S8/i FF spherical lenses, at T1.4'; focal lengths from the table's 'Cooke S8/i FF' rows
     "cooke-s8i-ff": [(25, 1.4, None), (32, 1.4, None), (40, 1.4, None), (50, 1.4, None), (75, 1.4, None),
                      (100, 1.4, None)],
-    # RedShark News review (2mmachining.com copy): '25, 32, 50, 75, and 100mm focal lengths all at T2.4'
-    "cooke-sp3": [(25, 2.4, None), (32, 2.4, None), (50, 2.4, None), (75, 2.4, None), (100, 2.4, None)],
+    # RedShark News review (2mmachining.com copy): '25, 32, 50, 75, and 100mm focal lengths all at T2.4'; the close
+    # focus and the 18 mm from the dataset's cooke_sp3_<f> rows (Cooke's SP3 sheet)
+    "cooke-sp3": [(18, 2.4, 250), (25, 2.4, 250), (32, 2.4, 350), (50, 2.4, 500), (75, 2.4, 800), (100, 2.4, 800)],
     # the table's 'ZEISS Nano Prime <f>mm T1.5' rows
     "zeiss-nano-prime": [(18, 1.5, None), (24, 1.5, None), (35, 1.5, None), (50, 1.5, None), (75, 1.5, None),
                          (100, 1.5, None)],
@@ -236,7 +254,8 @@ def test_the_vazen_anamorphic_carries_its_squeeze_stop_and_close_focus():
 
 
 def test_a_set_member_s_own_close_focus_is_refused_closer():
-    # lens_db/cine-lenses.yaml, cooke-s7i: 0.36 m at 25 mm (its cited table)
-    result = run("dof", "--lens", "cooke-s7i", "-f", "25", "-N", "T2", "-s", "0.35m")
-    assert result.exit_code == 2 and "0.36 m" in result.stderr and result.stderr.count("\n") == 1
-    assert run("dof", "--lens", "cooke-s7i", "-f", "25", "-N", "T2", "-s", "0.36m").exit_code == 0
+    # lens_db/cine-lenses.yaml, cooke-s7i: 0.35 m at 25 mm (Cooke's sheet as the dataset transcribes it; the gear
+    # table's 0.36 m is not entered)
+    result = run("dof", "--lens", "cooke-s7i", "-f", "25", "-N", "T2", "-s", "0.34m")
+    assert result.exit_code == 2 and "0.35 m" in result.stderr and result.stderr.count("\n") == 1
+    assert run("dof", "--lens", "cooke-s7i", "-f", "25", "-N", "T2", "-s", "0.35m").exit_code == 0

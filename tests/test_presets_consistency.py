@@ -260,6 +260,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     # 0.27 m with 1:4.5 at 50 mm and 4.0 m with 1:9.5 imply about 40 mm and 345 mm (Tamron 17-50mm A16,
     # Sigma APO 400mm)
     ("tamron-sp-af-17-50mm-f2.8-xr-di-ii-ld-a16", 50.0), ("sigma-400mm-f5.6-apo", 400.0),
+    # 0.4 m with 0.161x imply about 48 mm at the closest focus (Sigma 50mm F1.2 DG DN Art, internal focusing)
+    ("sigma-50mm-f1.2-dg-dn-art", 50.0),
     # 0.39 m with 1:2 implies about 87 mm (Tamron SP AF 90mm F/2.5 52E)
     ("tamron-sp-af-90mm-f2.5-macro-52e", 90.0),
     # current-lenses.yaml: 0.39 m with 0.18x at the 70 mm end implies about 50 mm there (RF 28-70 F2 L)

@@ -47,8 +47,8 @@ CITED = [
     # ppa.com: 11.8 in (30 cm) throughout, 1:4 at 28 or 45 mm, F1.8
     ("sigma-28-45mm-f1.8-dg-dn-art", 28, 300, 0.25, (1.8, None)),
     ("sigma-28-45mm-f1.8-dg-dn-art", 45, 300, 0.25, (1.8, None)),
-    # Phototrend: f/1.2 to f/16, no closest focus in the part read
-    ("sigma-50mm-f1.2-dg-dn-art", 50, None, None, (1.2, 16)),
+    # Phototrend: f/1.2 to f/16; isamu/lens-database (Sigma Japan's page, a024_50_12): 0.4 m, 0.161x
+    ("sigma-50mm-f1.2-dg-dn-art", 50, 400, 0.161, (1.2, 16)),
     # Sigma Suisse: 15 mm f/1.4, 38.5 cm
     ("sigma-15mm-f1.4-dg-dn-diagonal-fisheye-art", 15, 385, None, (1.4, None)),
     # Webnews: f/1.4 to f/16, 28 cm
