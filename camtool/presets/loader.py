@@ -149,13 +149,16 @@ class FileData:
         self._handed = cached.handed
         data = _parse_or_raise(self.path, cached.raw)
         self._records = data._records
-        _write_cache(cached.cache_path, cached.source, self._records, cached.limit)
+        source = cached.source
+        if source is None:  # shipped records that failed their digest: the file's cache entry answers next time
+            source = _source_digest(os.fsencode(os.path.abspath(self.path)) + b"\0" + cached.raw)
+        _write_cache(cached.cache_path, source, self._records, cached.limit)
 
 
 class _Cached:
     """A cache entry that passed the envelope checks: its sections, parsed and checked on first use."""
 
-    def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes, cache_path: str, source: str,
+    def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes, cache_path: str, source: str | None,
                  limit: int, digests: dict[str, str] | None = None) -> None:
         self.body = body
         self.sections = sections
@@ -171,7 +174,7 @@ class _Cached:
         self._checked: dict[tuple[str, int], dict[str, Any]] = {}
 
     @classmethod
-    def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str, limit: int,
+    def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str | None, limit: int,
               digests: dict[str, str] | None = None) -> _Cached | None:
         end = payload.find(b"\n")
         if end < 0:
@@ -224,7 +227,7 @@ class _Cached:
             return None  # records without their keys: not an entry this module writes
         else:
             keys = []
-        if not isinstance(keys, list) or not all(_valid_keys(k) for k in keys):
+        if not isinstance(keys, list) or not (self.digests is not None or all(_valid_keys(k) for k in keys)):
             return None
         return keys
 
@@ -359,13 +362,14 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
         return _parse_or_raise(path, raw)
     absolute = os.path.abspath(path)
     cache_path = _cache_path(cache_dir, absolute)
-    source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     limit = _cache_limit(len(raw))
     shipped = shipped_payload(absolute, raw)
     if shipped is not None:
-        cached = _Cached.parse(shipped[0], raw, cache_path, source, limit, digests=shipped[1])
+        # the cache's own digest (path and bytes) is needed only if a section fails and the file is parsed
+        cached = _Cached.parse(shipped[0], raw, cache_path, None, limit, digests=shipped[1])
         if cached is not None:
             return FileData(path, cached=cached)
+    source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     payload = cache.read(cache_path, _CACHE_KIND, source, limit)
     if payload is not None:
         cached = _Cached.parse(payload, raw, cache_path, source, limit)
