@@ -70,3 +70,16 @@ def test_the_cine_sets_the_issue_asks_for_stay_shipped():
     assert sum(1 for lens in sets if lens.get("squeeze")) >= 4
     cameras = yaml.safe_load((DB / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]
     assert len(cameras) >= 220 and sum(1 for c in cameras if c.get("category") == "cine") >= 35
+
+
+def test_readme_counts_every_lens_and_the_approximate_entries():
+    text = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    match = re.search(r"(\d+) lens entries in all, (\d+) lenses counting each member of a cinema set\. (\d+) lens "
+                      r"entries and (\d+) cameras are marked `approximate`", text)
+    assert match, "README.md no longer totals the shipped lenses"
+    lenses = [lens for path in DB.glob("*.yaml")
+              for lens in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []]
+    cameras = yaml.safe_load((DB / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]
+    assert tuple(map(int, match.groups())) == (
+        len(lenses), sum(len(lens["set"]) if "set" in lens else 1 for lens in lenses),
+        sum(1 for lens in lenses if lens.get("approximate")), sum(1 for camera in cameras if camera.get("approximate")))
