@@ -228,12 +228,15 @@ def test_a_contrast_criterion_gives_one_answer_by_option_batch_and_api(criterion
 
 ANAMORPHIC = sorted((m for lens in load_db().all("lens") if getattr(lens, "squeeze", None) for m in lens.members
                      or [lens]), key=lambda m: m.id)
+CHARTED = {(lens.members or (lens,))[0].id for lens in load_db().all("lens") if getattr(lens, "squeeze", None)}
+"""The members whose chart is compared too: the first of each anamorphic set, and each single anamorphic lens."""
 
 
 @pytest.mark.parametrize("member", ANAMORPHIC, ids=lambda m: m.id)
 def test_an_anamorphic_preset_and_its_squeeze_typed_on_a_spherical_lens_give_one_answer(member, tmp_path) -> None:
     """The same scene via --lens ANAMORPHIC and via --squeeze S on a spherical lens preset with the member's own
-    focal length, T-stop and closest focus: fov, dof, compose and chart dof give the same numbers."""
+    focal length, T-stop and closest focus: fov, dof and compose give the same numbers, and so does chart dof on the
+    first member of each set."""
     own = {"focal_length_mm": member.focal_min_mm, "t_number_min": member.t_number_min,
            "min_focus_mm": member.min_focus_mm}
     spherical = tmp_path / "spherical.yaml"
@@ -253,6 +256,8 @@ def test_an_anamorphic_preset_and_its_squeeze_typed_on_a_spherical_lens_give_one
         ]
     assert answers["preset"] == answers["typed"]
     assert answers["preset"][1][0]["horizontal_focal_length_mm"] == member.focal_min_mm / member.squeeze
+    if member.id not in CHARTED:
+        return
     pytest.importorskip("matplotlib")
     import json
 
