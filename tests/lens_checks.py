@@ -1,5 +1,5 @@
 """The checks every lens file of lens_db/ gets against the pages its entries cite, shared by the modules that test
-one file each (test_third_party_lenses.py, test_maker_lenses.py, test_current_lenses.py)."""
+one file each (test_third_party_lenses.py, test_maker_lenses.py, test_current_lenses.py and the others)."""
 
 from __future__ import annotations
 
@@ -35,7 +35,7 @@ def record_of(records: list[dict[str, Any]], lens_id: str) -> dict[str, Any]:
 
 
 def check_cited_row(record: dict[str, Any], focal: float, distance: float | None, magnification: float | None,
-                    apertures: tuple[float, float | None]) -> None:
+                    apertures: tuple[float, float | None], largest: float | None = None) -> None:
     """The entry's row at ``focal`` (a prime's own figures) holds the page's closest focus and magnification, and the
     lens its widest and smallest f-number (at the long end of a zoom whose apertures change); a smallest aperture
     the page does not give is said in the notes to be "not found"."""
@@ -57,6 +57,29 @@ def check_cited_row(record: dict[str, Any], focal: float, distance: float | None
     assert record.get(key) == smallest
     if smallest is None:
         assert "f_number_max not found" in " ".join(record["notes"].split())
+    if largest is not None:  # the largest magnification the source gives for the lens
+        assert record["max_magnification"] == pytest.approx(largest, abs=0.0006)
+
+
+def check_every_entry_cited(records: list[dict[str, Any]], cited: list[tuple[Any, ...]]) -> None:
+    """Every entry of a file has its rows in ``cited`` (lens id, focal length, ...), a zoom one per published row."""
+    assert {lens_id for lens_id, *_ in cited} == {r["id"] for r in records}
+    for record in records:
+        if "focal_min_mm" in record:
+            focals = sorted(f for lens_id, f, *_ in cited if lens_id == record["id"])
+            assert focals == [row["focal_length_mm"] for row in record["close_focus"]], record["id"]
+
+
+def check_entries_are_new(path: Path, records: list[dict[str, Any]]) -> None:
+    """No id, alias or display name of the file is in another lens_db file, and each entry loads as shipped."""
+    from camtool.presets import load_db
+
+    taken, names = taken_elsewhere(path)
+    database = load_db()
+    for record in records:
+        assert not ({record["id"], *record.get("aliases", [])} & taken), record["id"]
+        assert name_key(record.get("name", record["id"])) not in names, record["id"]
+        assert database.lens(record["id"]).tier == "shipped", record["id"]
 
 
 def name_key(name: str) -> str:
