@@ -67,6 +67,8 @@ class Record:
 
     __fields__: tuple[Field, ...] = ()
     __names__: frozenset[str] = frozenset()
+    _record_order: tuple[str, ...] = ()
+    _record_defaults: dict[str, Any] = {}  # noqa: RUF012 - each class's own, set once when it is created
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
@@ -84,24 +86,26 @@ class Record:
             declared.append(spec)
         cls.__fields__ = tuple(declared)
         cls.__names__ = frozenset(spec.name for spec in declared)
+        cls._record_order = tuple(spec.name for spec in declared)
+        cls._record_defaults = {spec.name: spec.default for spec in declared if spec.default is not _MISSING}
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
-        specs = self.__fields__
-        if len(args) > len(specs):
-            raise TypeError(f"{type(self).__name__}() takes {len(specs)} arguments, {len(args)} given")
-        values = {spec.name: arg for spec, arg in zip(specs, args)}
-        for name, value in kwargs.items():
-            if name not in self.__names__ or name in values:
-                raise TypeError(f"{type(self).__name__}() got {'an unexpected' if name not in self.__names__ else 'a second'}"
-                                f" argument {name!r}")
-            values[name] = value
-        if len(values) < len(specs):
-            for spec in specs:
-                if spec.name not in values:
-                    if spec.default is _MISSING:
-                        raise TypeError(f"{type(self).__name__}() missing argument {spec.name!r}")
-                    values[spec.name] = spec.default
-        object.__setattr__(self, "__dict__", {spec.name: values[spec.name] for spec in specs})
+        order = self._record_order
+        values = dict(self._record_defaults)
+        if args:
+            if len(args) > len(order):
+                raise TypeError(f"{type(self).__name__}() takes {len(order)} arguments, {len(args)} given")
+            values.update(zip(order, args))
+        if kwargs:
+            for name in kwargs:
+                if name not in self.__names__ or name in order[:len(args)]:
+                    raise TypeError(f"{type(self).__name__}() got "
+                                    f"{'an unexpected' if name not in self.__names__ else 'a second'} argument {name!r}")
+            values.update(kwargs)
+        if len(values) < len(order):
+            missing = next(name for name in order if name not in values)
+            raise TypeError(f"{type(self).__name__}() missing argument {missing!r}")
+        object.__setattr__(self, "__dict__", values)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError(f"cannot assign to field {name!r} of a frozen {type(self).__name__}")
