@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 import yaml
 from conftest import point_xdg_at, presets_home
+from test_phones_2026 import PHONES_2026
 
 from camtool.presets import load_db, paths
 from camtool.presets.loader import read_file
@@ -129,6 +130,8 @@ def test_every_phone_has_every_rear_module():
         # phone-lenses.yaml
         "xiaomi-15-ultra": ("main", "ultra-wide", "telephoto", "periscope"),
         "apple-iphone-air": ("main",),
+        # the phones of tests/test_phones_2026.py, each with all its rear modules
+        **PHONES_2026,
     }
     # Every shipped phone is listed, so a new phone cannot ship without its modules.
     phones = {camera.id for camera in load_db().all("camera") if camera.category == "phone"}
