@@ -97,10 +97,10 @@ class Record:
                 raise TypeError(f"{type(self).__name__}() takes {len(order)} arguments, {len(args)} given")
             values.update(zip(order, args))
         if kwargs:
-            for name in kwargs:
-                if name not in self.__names__ or name in order[:len(args)]:
-                    raise TypeError(f"{type(self).__name__}() got "
-                                    f"{'an unexpected' if name not in self.__names__ else 'a second'} argument {name!r}")
+            if not self.__names__.issuperset(kwargs) or (args and not kwargs.keys().isdisjoint(order[:len(args)])):
+                name = next(n for n in kwargs if n not in self.__names__ or n in order[:len(args)])
+                raise TypeError(f"{type(self).__name__}() got "
+                                f"{'an unexpected' if name not in self.__names__ else 'a second'} argument {name!r}")
             values.update(kwargs)
         if len(values) < len(order):
             missing = next(name for name in order if name not in values)
