@@ -83,3 +83,16 @@ def test_readme_counts_every_lens_and_the_approximate_entries():
     assert tuple(map(int, match.groups())) == (
         len(lenses), sum(len(lens["set"]) if "set" in lens else 1 for lens in lenses),
         sum(1 for lens in lenses if lens.get("approximate")), sum(1 for camera in cameras if camera.get("approximate")))
+
+
+def test_lens_db_readme_counts_the_kinds_of_body():
+    text = " ".join((DB / "README.md").read_text(encoding="utf-8").split())
+    match = re.search(r"The (\d+) bodies are (\d+) interchangeable-lens stills bodies, (\d+) compacts, (\d+) phones "
+                      r"and (\d+) cinema and video cameras", text)
+    assert match, "lens_db/README.md no longer counts the kinds of body"
+    cameras = yaml.safe_load((DB / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]
+    phones = sum(1 for c in cameras if c.get("category") == "phone")
+    cine = sum(1 for c in cameras if c.get("category") == "cine")
+    compacts = sum(1 for c in cameras if c.get("category") not in ("phone", "cine") and c.get("mount") == "fixed lens")
+    assert tuple(map(int, match.groups())) == (len(cameras), len(cameras) - phones - cine - compacts, compacts, phones,
+                                               cine)
