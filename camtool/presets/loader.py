@@ -149,10 +149,8 @@ class FileData:
         self._handed = cached.handed
         data = _parse_or_raise(self.path, cached.raw)
         self._records = data._records
-        source = cached.source
-        if source is None:  # shipped records that failed their digest: the file's cache entry answers next time
-            source = _source_digest(os.fsencode(os.path.abspath(self.path)) + b"\0" + cached.raw)
-        _write_cache(cached.cache_path, source, self._records, cached.limit)
+        if cached.source is not None:  # a shipped section that failed its digest has no cache entry to mend
+            _write_cache(cached.cache_path, cached.source, self._records, cached.limit)
 
 
 class _Cached:
