@@ -12,8 +12,8 @@ import re
 from pathlib import Path
 
 import pytest
-import yaml
 from cli_helpers import run_json
+from test_cameras_2026 import camera_records, check_confirmed_body
 
 from camtool.presets import load_db
 
@@ -87,21 +87,9 @@ def added_camera_ids() -> set[str]:
             | {row[0] for row in ONE_DATASET})
 
 
-def camera_records() -> dict[str, dict]:
-    text = (ROOT / "lens_db" / "cameras.yaml").read_text(encoding="utf-8")
-    return {record["id"]: record for record in yaml.safe_load(text)["cameras"]}
-
-
 @pytest.mark.parametrize(("camera", "width", "height", "across", "down", "mount", "category"), CONFIRMED)
 def test_confirmed_bodies_against_their_files(camera, width, height, across, down, mount, category):
-    body = load_db().camera(camera)
-    assert (body.sensor.width_mm, body.sensor.height_mm) == (width, height)
-    assert (body.pixels_w, body.pixels_h) == (across, down)
-    assert body.mount == mount and body.category == category
-    assert not body.approximate
-    if across:
-        # the published size and image size give square pixels (width / across = height / down)
-        assert width / across == pytest.approx(height / down, rel=0.015)
+    check_confirmed_body(camera, width, height, across, down, mount, category)
 
 
 @pytest.mark.parametrize(("camera", "multiplier"), [
