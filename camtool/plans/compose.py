@@ -110,10 +110,11 @@ def compose(*, focal_length_mm: Any, sensor_width_mm: float, sensor_height_mm: f
                 raise
             raise DomainError(f"{name}_mm", given, "less than the distance from the subject to the lens's front "
                               "focal point") from None
-        from camtool.geometry.projection import fisheye_field_size_mm
+        visible = view.visible_width_mm
+        if fisheye:  # a fisheye's visible width at the plane is its field there
+            from camtool.geometry.projection import fisheye_field_size_mm
 
-        visible = view.visible_width_mm if not fisheye else fisheye_field_size_mm(
-            shot.horizontal_deg, shot.lens_distance_mm + offset)
+            visible = fisheye_field_size_mm(shot.horizontal_deg, shot.lens_distance_mm + offset)
         values.update({f"{name}_scale": view.scale, f"{name}_width_mm": visible,
                        f"{name}_blur_mm": view.blur_mm, f"{name}_blur_pct": view.blur_pct})
     return values
