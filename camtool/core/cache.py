@@ -51,6 +51,7 @@ import json
 import os
 import stat
 import sys
+import time
 from typing import Any
 
 from camtool.core.files import FileProblem, read_bytes
@@ -263,3 +264,76 @@ def _remove(path: str) -> None:
 def dumps(value: Any) -> bytes:
     """Canonical JSON of a payload (no NaN or infinity: ValueError)."""
     return json.dumps(value, separators=(",", ":"), allow_nan=False).encode("utf-8")
+
+
+_SETTLED_NS = 2_000_000_000
+"""A file changed less than this long ago may change again within its clock tick: its digest is not remembered."""
+
+
+def _stat_key(path: str) -> list[int] | None:
+    """What a rewrite of the regular file at ``path`` changes: size, modification and change times, inode, device."""
+    try:
+        st = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    if not stat.S_ISREG(st.st_mode):
+        return None
+    return [st.st_size, st.st_mtime_ns, st.st_ctime_ns, st.st_ino, st.st_dev]
+
+
+class FileDigests:
+    """The SHA-256 of each of a fixed list of files, remembered in one cache entry against the files' ``stat``.
+
+    A command that binds data to a file's bytes (the shipped preset records
+    to the YAML they were made from) would otherwise read and hash every such
+    file on every run. The entry's ``source`` is the digest of every file's
+    path, size, modification time, change time (which no program can set),
+    inode and device, so any rewrite of any file, or another file in its
+    place, finds no entry; the entry's digests are then used without reading
+    the files. A digest is remembered only when the file's times were more
+    than two seconds old when it was looked at (a file rewritten within the
+    same clock tick would keep its times), and the entry is written only when
+    every file's digest is known. The entry goes through :func:`read` and
+    :func:`write` like every other, and a bad one is only a miss.
+    """
+
+    KIND = "file-digests"
+
+    def __init__(self, entry: str, paths: list[str]) -> None:
+        self.entry = entry
+        self.paths = list(paths)
+        self._stats = {path: _stat_key(path) for path in self.paths}
+        now = time.time_ns()
+        self._settled = {path: key is not None and now - max(key[1], key[2]) > _SETTLED_NS
+                         for path, key in self._stats.items()}
+        listing = json.dumps([[path, self._stats[path]] for path in self.paths], separators=(",", ":"))
+        self._source = source_digest(listing.encode("utf-8", "surrogateescape"))
+        self.known: dict[str, str] = {}
+        if self.paths and all(self._settled.values()):
+            payload = read(entry, self.KIND, self._source, 1024 + 80 * len(self.paths))
+            try:
+                digests = json.loads(payload) if payload is not None else None
+            except (ValueError, RecursionError):
+                digests = None
+            if (isinstance(digests, list) and len(digests) == len(self.paths)
+                    and all(isinstance(d, str) and len(d) == 64 and d.strip("0123456789abcdef") == "" for d in digests)):
+                self.known = dict(zip(self.paths, digests, strict=True))
+
+    def get(self, path: str) -> str | None:
+        """The remembered digest of ``path`` while it still has the ``stat`` the entry was bound to (None: not one
+        of the files, not known or changed since; hash its bytes)."""
+        digest = self.known.get(path)
+        return digest if digest is not None and _stat_key(path) == self._stats[path] else None
+
+    def put(self, path: str, data: bytes) -> str:
+        """The digest of ``data``, the bytes just read from ``path``; remembered when ``path`` is one of the files,
+        had settled and still has the ``stat`` it had when first looked at (the entry written once every file's
+        digest is known)."""
+        digest = source_digest(data)
+        key = self._stats.get(path)
+        if (key is not None and self._settled[path] and key[0] == len(data) and self.known.get(path) != digest
+                and _stat_key(path) == key):
+            self.known[path] = digest
+            if len(self.known) == len(self.paths):
+                write(self.entry, self.KIND, self._source, dumps([self.known[p] for p in self.paths]))
+        return digest

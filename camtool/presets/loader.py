@@ -14,7 +14,9 @@ ship with the package (:data:`SHIPPED_RECORDS`), made by the package's own
 build from a validated parse; they are used only for the very bytes they were
 made from and only when their own SHA-256 is the one the build recorded, and
 are then used without a second schema check (the build's parse was that
-check); ``CAMTOOL_NO_CACHE`` parses every file.
+check); ``CAMTOOL_NO_CACHE`` parses every file. The digest of each shipped
+file's bytes is remembered against its ``stat``
+(:class:`camtool.core.cache.FileDigests`), so a warm command reads no YAML.
 
 The cache is never trusted: an entry is used only when it passes the checks
 of :mod:`camtool.core.cache` (a regular file of bounded size, the camtool
@@ -147,7 +149,13 @@ class FileData:
         assert cached is not None
         self._cached = None
         self._handed = cached.handed
-        data = _parse_or_raise(self.path, cached.raw)
+        raw = cached.raw
+        if raw is None:  # shipped records taken on the file's remembered digest: its bytes were not read
+            try:
+                raw = read_bytes(self.path, MAX_BYTES)
+            except FileProblem as problem:
+                raise PresetFileError(self.path, problem.problem, line=problem.line) from None
+        data = _parse_or_raise(self.path, raw)
         self._records = data._records
         if cached.source is not None:  # a shipped section that failed its digest has no cache entry to mend
             _write_cache(cached.cache_path, cached.source, self._records, cached.limit)
@@ -156,7 +164,7 @@ class FileData:
 class _Cached:
     """A cache entry that passed the envelope checks: its sections, parsed and checked on first use."""
 
-    def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes, cache_path: str, source: str | None,
+    def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes | None, cache_path: str, source: str | None,
                  limit: int, digests: dict[str, str] | None = None) -> None:
         self.body = body
         self.sections = sections
@@ -172,7 +180,7 @@ class _Cached:
         self._checked: dict[tuple[str, int], dict[str, Any]] = {}
 
     @classmethod
-    def parse(cls, payload: bytes, raw: bytes, cache_path: str, source: str | None, limit: int,
+    def parse(cls, payload: bytes, raw: bytes | None, cache_path: str, source: str | None, limit: int,
               digests: dict[str, str] | None = None) -> _Cached | None:
         end = payload.find(b"\n")
         if end < 0:
@@ -352,16 +360,25 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     """
     from camtool.core import cache
 
+    use_cache = bool(cache_dir) and cache.enabled()
+    absolute = os.path.abspath(path)
+    digests = _shipped_digests(cache_dir) if cache_dir and use_cache else None
+    if digests is not None:
+        digest = digests.get(absolute)
+        known = _shipped_entry(os.path.realpath(absolute), digest) if digest is not None else None
+        if known is not None:  # a shipped file whose bytes have the remembered digest: not read at all
+            cached = _Cached.parse(known[0], None, "", None, 0, digests=known[1])
+            if cached is not None:
+                return FileData(path, cached=cached)
     try:
         raw = read_bytes(path, MAX_BYTES)
     except FileProblem as problem:
         raise PresetFileError(path, problem.problem, line=problem.line) from None
-    if not cache_dir or not cache.enabled():
+    if not cache_dir or not use_cache:
         return _parse_or_raise(path, raw)
-    absolute = os.path.abspath(path)
     cache_path = _cache_path(cache_dir, absolute)
     limit = _cache_limit(len(raw))
-    shipped = shipped_payload(absolute, raw)
+    shipped = shipped_payload(absolute, raw, digests)
     if shipped is not None:
         # the cache's own digest (path and bytes) is needed only if a section fails and the file is parsed
         cached = _Cached.parse(shipped[0], raw, cache_path, None, limit, digests=shipped[1])
@@ -416,25 +433,72 @@ def _shipped_records() -> tuple[dict[str, Any], bytes]:
     return _shipped_index["index"], _shipped_index["body"]
 
 
-def shipped_payload(absolute: str, raw: bytes) -> tuple[bytes, dict[str, str]] | None:
+def shipped_payload(absolute: str, raw: bytes, digests: Any = None) -> tuple[bytes, dict[str, str]] | None:
     """The shipped records of the file at ``absolute`` and the digest of each section, when it is a shipped file
-    holding exactly ``raw`` (else None)."""
+    holding exactly ``raw`` (else None). ``digests`` (a :class:`camtool.core.cache.FileDigests`) remembers the digest
+    of ``raw`` against the file's ``stat``."""
     from camtool.core import cache
+
+    real = os.path.realpath(absolute)
+    if _shipped_name(real) is None:
+        return None
+    return _shipped_entry(real, digests.put(absolute, raw) if digests is not None else cache.source_digest(raw))
+
+
+def _shipped_name(real: str) -> str | None:
+    """The name under ``lens_db/`` of the file whose real path is ``real`` (None: not a shipped file)."""
+    directory = _shipped_real_dir()
+    return real[len(directory):].replace(os.sep, "/") if real.startswith(directory) else None
+
+
+_real_dirs: dict[str, str] = {}
+
+
+def _shipped_real_dir() -> str:
+    """The real path of the shipped directory, with a trailing separator (resolved once per directory)."""
     from camtool.presets import paths
 
-    directory = os.path.join(os.path.realpath(paths.shipped_dir()), "")
-    real = os.path.realpath(absolute)
-    if not real.startswith(directory):
+    directory = paths.shipped_dir()
+    real = _real_dirs.get(directory)
+    if real is None:
+        real = _real_dirs[directory] = os.path.join(os.path.realpath(directory), "")
+    return real
+
+
+def _shipped_entry(real: str, digest: str) -> tuple[bytes, dict[str, str]] | None:
+    """The shipped records of the file whose real path is ``real`` when they were made from bytes of SHA-256
+    ``digest``."""
+    name = _shipped_name(real)
+    if name is None:
         return None
     index, body = _shipped_records()
-    entry = index.get(real[len(directory):].replace(os.sep, "/"))
+    entry = index.get(name)
     if not (isinstance(entry, list) and len(entry) == 4 and isinstance(entry[0], str)
             and all(type(n) is int and n >= 0 for n in entry[1:3]) and entry[1] + entry[2] <= len(body)
             and isinstance(entry[3], dict) and all(isinstance(d, str) for d in entry[3].values())):
         return None
-    if entry[0] != cache.source_digest(raw):
+    if entry[0] != digest:
         return None
     return body[entry[1]:entry[1] + entry[2]], entry[3]
+
+
+_file_digests: dict[tuple[str, str], Any] = {}
+
+
+def _shipped_digests(cache_dir: str) -> Any:
+    """The remembered digests of the shipped files (:class:`camtool.core.cache.FileDigests`), one per cache directory
+    and shipped directory."""
+    directory = _shipped_real_dir()
+    digests = _file_digests.get((cache_dir, directory))
+    if digests is None:
+        from camtool.core import cache
+        from camtool.presets import paths
+
+        files = [os.path.abspath(path) for path in paths.shipped_files()]
+        crc = zlib.crc32(directory.encode("utf-8", "surrogateescape"))
+        entry = os.path.join(cache_dir, f"shipped-digests-{crc:08x}.json")
+        digests = _file_digests[(cache_dir, directory)] = cache.FileDigests(entry, files)
+    return digests
 
 
 def _parse_or_raise(path: str, raw: bytes) -> FileData:
