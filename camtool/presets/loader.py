@@ -34,7 +34,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import zlib
 from typing import Any
 
 from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
@@ -495,8 +494,8 @@ def _shipped_digests(cache_dir: str) -> Any:
         from camtool.presets import paths
 
         files = [os.path.abspath(path) for path in paths.shipped_files()]
-        crc = zlib.crc32(directory.encode("utf-8", "surrogateescape"))
-        entry = os.path.join(cache_dir, f"shipped-digests-{crc:08x}.json")
+        name = cache.source_digest(directory.encode("utf-8", "surrogateescape"))[:16]
+        entry = os.path.join(cache_dir, f"shipped-digests-{name}.json")
         digests = _file_digests[(cache_dir, directory)] = cache.FileDigests(entry, files)
     return digests
 
@@ -610,6 +609,8 @@ def _collect_entry(kind: str, entry: dict[Any, Any], node: Any, data: FileData) 
 
 
 def _cache_path(cache_dir: str, path: str) -> str:
+    import zlib  # only a file that is not shipped, or no longer the shipped bytes, has a cache entry
+
     base = os.path.basename(path) or "preset"
     return os.path.join(cache_dir, f"{base}-{zlib.crc32(path.encode('utf-8', 'surrogateescape')):08x}.json")
 

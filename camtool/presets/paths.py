@@ -53,11 +53,20 @@ def shipped_dir() -> str:
     the file system, computed here without importing importlib.resources); from
     a source tree it is the repository's ``lens_db/``.
     """
-    package = os.path.dirname(os.path.realpath(camtool.__file__))
-    for candidate in (os.path.join(package, "lens_db"), os.path.join(os.path.dirname(package), "lens_db")):
-        if os.path.isdir(candidate):
-            return candidate
-    return os.path.join(package, "lens_db")
+    found = _shipped.get(camtool.__file__)
+    if found is None:
+        package = os.path.dirname(os.path.realpath(camtool.__file__))
+        found = os.path.join(package, "lens_db")
+        for candidate in (found, os.path.join(os.path.dirname(package), "lens_db")):
+            if os.path.isdir(candidate):
+                found = candidate
+                break
+        _shipped[camtool.__file__] = found
+    return found
+
+
+_shipped: dict[str, str] = {}
+"""The shipped directory found for the package file (found once a process: it is a lookup's most frequent path)."""
 
 
 def data_dir() -> str:
