@@ -63,6 +63,10 @@ CARRIED = [
     # "red_v_raptor_xl_8k_vv,RED,V-RAPTOR XL 8K VV,PL;EF,8k_17x9,8K 17:9 (full sensor),40.96,21.60,8192,4320";
     # the V-RAPTOR 8K VV's in the Camera Sensor Database (red/vraptor8kvv.md): 8192 x 4320, 40.96 x 21.6 mm.
     ("red-v-raptor-xl-8k-vv", "red-v-raptor-8k-vv", 40.96, 21.60, 8192, 4320, None),
+    # "red_v_raptor_x_8k_vv,RED,V-RAPTOR [X] 8K VV,RF,8k_17x9,8K 17:9 (full sensor),40.96,21.60,8192,4320"
+    ("red-v-raptor-x-8k-vv", "red-v-raptor-8k-vv", 40.96, 21.60, 8192, 4320, "Canon RF"),
+    # "red_v_raptor_xl_x_8k_vv,RED,V-RAPTOR XL [X] 8K VV,PL;EF,8k_17x9,8K 17:9 (full sensor),40.96,21.60,8192,4320"
+    ("red-v-raptor-xl-x-8k-vv", "red-v-raptor-8k-vv", 40.96, 21.60, 8192, 4320, None),
 ]
 
 # (camera, a smaller mode's width mm, its pixels across, the mode as `source` quotes it): modes read 1:1 from a
@@ -72,6 +76,7 @@ WINDOWS = [
     ("red-komodo-x", 25.34, 5760, "6K 16:9 25.34 x 14.26 mm at 5760 x 3240"),
     # iris, from RED's V-RAPTOR [X] 8K VV format table: "6k_17x9,6K 17:9 (S35 crop),30.72,16.20,6144,3240"
     ("red-v-raptor-xl-8k-vv", 30.72, 6144, "6K 17:9 30.72 x 16.20 mm at 6144 x 3240"),
+    ("red-v-raptor-x-8k-vv", 30.72, 6144, "6K 17:9 30.72 x 16.20 mm at 6144 x 3240"),
     # iris, from ARRI's Xtreme poster: "4k_16x9,4K 16:9,24.88,14.00,4096,2304"
     ("arri-alexa-35-xtreme", 24.88, 4096, '"4K 16:9", 24.88 x 14.00 mm, 4096 x 2304'),
     # iris, from Blackmagic's 17K sheet: "12k_3x2_lf,12K 3:2 (LF crop),35.64,23.32,12288,8040,...,window"
