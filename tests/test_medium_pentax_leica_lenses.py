@@ -107,6 +107,8 @@ CITED = [
     ("pentax-hd-d-fa-150-450mm-f4.5-5.6-ed-dc-aw", 450, 2000, None, (5.6, None), 0.22),
     # Leica M. Summilux-M 35 (2022): dataset 0.4 m; digitalkamera.de: 40 Zentimeter, 1:8,9; LSI: 1:8.9
     ("leica-summilux-m-35mm-f1.4-asph-close-focus", 35, 400, round(1 / 8.9, 3), (1.4, None), round(1 / 8.9, 3)),
+    # Summilux-M 28: dataset 0.7 m; Leica's instructions: Arbeitsbereich 0,7m, größter Maßstab 1:21,9
+    ("leica-summilux-m-28mm-f1.4-asph", 28, 700, round(1 / 21.9, 3), (1.4, None), round(1 / 21.9, 3)),
     # Summilux-M 50 (2023): Amateur Photographer: f/1.4 - f/16, 45cm; LSI: 45 cm, 1:6.4
     ("leica-summilux-m-50mm-f1.4-asph-close-focus", 50, 450, round(1 / 6.4, 3), (1.4, 16), round(1 / 6.4, 3)),
     # APO-Summicron-M 75: dataset 0.7 m; LSI: 1:7 at the normal closest distance of 70cm
@@ -141,6 +143,7 @@ CONFIRMED = {
     "leica-summilux-m-35mm-f1.4-asph-close-focus": "digitalkamera.de",
     "leica-summilux-m-50mm-f1.4-asph-close-focus": "amateurphotographer.com",
     "leica-apo-summicron-m-75mm-f2-asph": "leicasocietyinternational.org",
+    "leica-summilux-m-28mm-f1.4-asph": "manualmachine.com",
 }
 
 # the Leica M lenses whose closest focus is closer than the rangefinder couples (live view only), and those at
@@ -248,8 +251,9 @@ def test_the_xcd_90v_takes_the_pages_closest_focus_not_the_datasets():
 
 
 def test_the_leica_magnifications_are_the_published_scales():
-    # 1:8.9, 1:6.4, 1:7 and 1:9 stored to three places
+    # 1:8.9, 1:6.4, 1:7, 1:9 and 1:21.9 stored to three places
     for lens_id, scale in (("leica-summilux-m-35mm-f1.4-asph-close-focus", 8.9),
+                           ("leica-summilux-m-28mm-f1.4-asph", 21.9),
                            ("leica-summilux-m-50mm-f1.4-asph-close-focus", 6.4),
                            ("leica-apo-summicron-m-75mm-f2-asph", 7.0), ("leica-apo-summicron-m-90mm-f2-asph", 9.0)):
         assert record_of(RECORDS, lens_id)["max_magnification"] == pytest.approx(1 / scale, abs=0.0005)
