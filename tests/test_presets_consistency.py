@@ -324,6 +324,10 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120.0),
     ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100.0), ("fujifilm-gf35-70mm-f4.5-5.6-wr", 70.0),
     ("fujifilm-gf500mm-f5.6-r-lm-ois-wr", 500.0),
+    # medium-format-pentax-leica-lenses.yaml, internal focusing: 0.7 m with 0.12x, 0.85 m with 0.12x and 1.4 m with
+    # 0.24x imply about 67, 81 and 219 mm (HD PENTAX-DA 70mm Limited, D FA★85mm, smc DA★300mm [IF])
+    ("pentax-hd-da-70mm-f2.4-limited", 70.0), ("pentax-hd-d-fa-star-85mm-f1.4-ed-sdm-aw", 85.0),
+    ("pentax-smc-da-star-300mm-f4-ed-if-sdm", 300.0),
 }
 
 
