@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from camtool.core.record import Record, field, fields
+from camtool.core.record import Record, field, fields, replace
 from camtool.presets.schema import Camera, Lens, Sensor
 
 
@@ -79,3 +79,26 @@ def test_a_lens_compares_without_its_prescription_and_members():
     plain = Lens("p", "P", 50.0, 50.0, 1.8)
     assert plain == Lens("p", "P", 50.0, 50.0, 1.8, prescription=object(), members=(plain,))
     assert " prescription=" not in repr(plain) and " members=" not in repr(plain)
+
+
+@pytest.mark.parametrize("changes", [{}, {"y": 7.0}, {"x": -1.0, "tag": "t"}])
+def test_replace_is_dataclasses_replace(changes):
+    record, reference = Point(1.0, 2.0, tag="a"), PointDataclass(1.0, 2.0, tag="a")
+    copied, expected = replace(record, **changes), dataclasses.replace(reference, **changes)
+    assert [getattr(copied, f.name) for f in fields(copied)] == [getattr(expected, f.name)
+                                                                for f in dataclasses.fields(expected)]
+    assert record == Point(1.0, 2.0)  # the original is untouched
+    with pytest.raises(TypeError):
+        replace(record, z=1.0)
+
+
+def test_the_optics_classes_are_records():
+    # the prescription path imports no dataclasses: its three value classes are records
+    from camtool.optics.paraxial import FirstOrder
+    from camtool.optics.prescription import Prescription, Surface
+
+    surface = Surface(50.0, 5.0, 1.5)
+    lens = Prescription((surface, replace(surface, radius_mm=-50.0, stop=True)))
+    assert lens == Prescription((Surface(50.0, 5.0, 1.5), Surface(-50.0, 5.0, 1.5, stop=True)))
+    assert hash(lens) == hash(Prescription((Surface(50.0, 5.0, 1.5), Surface(-50.0, 5.0, 1.5, stop=True))))
+    assert all(issubclass(cls, Record) for cls in (FirstOrder, Prescription, Surface))

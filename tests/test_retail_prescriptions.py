@@ -10,12 +10,12 @@ focus, a wrong focusing gap the close-focus magnification.
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any
 
 import pytest
 from cli_helpers import run, run_json
 
+from camtool.core.record import replace
 from camtool.dof.realray import real_focus
 from camtool.optics.paraxial import first_order, paraxial_trace
 from camtool.presets import load_db
@@ -75,8 +75,8 @@ def close_state(pid: str) -> tuple[float, float, float]:
     patent, lens = PATENTS[pid], optics(pid)
     surfaces = list(lens.surfaces)
     for number, gap in patent["close_gaps"].items():
-        surfaces[number - 1] = dataclasses.replace(surfaces[number - 1], thickness_mm=gap)
-    moved = dataclasses.replace(lens, surfaces=tuple(surfaces))
+        surfaces[number - 1] = replace(surfaces[number - 1], thickness_mm=gap)
+    moved = replace(lens, surfaces=tuple(surfaces))
     # A ray from the axial object point at unit slope reaches surface 1 at height d0.
     y, nu = paraxial_trace(moved, patent["close_object"], 1.0)
     return 1.0 / nu, -y / nu, moved.vertices_mm[-1]  # m = n0·u0 / (nK·uK); image where the ray meets the axis

@@ -26,6 +26,8 @@ Traceback (most recent call last):
 TypeError: Point() missing argument 'x'
 >>> [f.name for f in fields(p)]
 ['x', 'y', 'label']
+>>> replace(p, y=2.0)
+Point(x=1.0, y=2.0, label='a')
 """
 
 from __future__ import annotations
@@ -38,7 +40,7 @@ else:
     def dataclass_transform(**_options: Any) -> Any:
         return lambda cls: cls
 
-__all__ = ["Field", "Record", "field", "fields"]
+__all__ = ["Field", "Record", "field", "fields", "replace"]
 
 _MISSING: Any = object()
 
@@ -64,6 +66,9 @@ def field(*, default: Any = _MISSING, compare: bool = True, hash: bool | None = 
 @dataclass_transform(frozen_default=True, field_specifiers=(field,))
 class Record:
     """A frozen value class: the annotated names of its body are its fields, in order (see the module)."""
+
+    # the values live in the instance __dict__; a computed hash in a slot of its own, never pickled or copied
+    __slots__ = ("__dict__", "__weakref__", "_record_hash")
 
     __fields__: tuple[Field, ...] = ()
     __names__: frozenset[str] = frozenset()
@@ -123,7 +128,20 @@ class Record:
         return self._compared() == other._compared()
 
     def __hash__(self) -> int:
-        return hash(tuple(self.__dict__[spec.name] for spec in self.__fields__ if spec.hash))
+        # computed once: a prescription is a key of several caches, hashed on every call of a rung
+        try:
+            return self._record_hash  # type: ignore[no-any-return]
+        except AttributeError:
+            pass
+        value = hash(tuple(self.__dict__[spec.name] for spec in self.__fields__ if spec.hash))
+        object.__setattr__(self, "_record_hash", value)
+        return value
+
+    def __getstate__(self) -> dict[str, Any]:
+        return self.__dict__  # the values only: a hash depends on the process (string hashing is salted)
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        object.__setattr__(self, "__dict__", dict(state))
 
     def __repr__(self) -> str:
         shown = ", ".join(f"{spec.name}={self.__dict__[spec.name]!r}" for spec in self.__fields__ if spec.repr)
@@ -133,3 +151,8 @@ class Record:
 def fields(record: Record | type[Record]) -> tuple[Field, ...]:
     """The fields of a record (or a record class), in declaration order."""
     return record.__fields__
+
+
+def replace(record: Any, /, **changes: Any) -> Any:
+    """A copy of ``record`` with the fields ``changes`` names set anew (:func:`dataclasses.replace`'s contract)."""
+    return type(record)(**{**record.__dict__, **changes})

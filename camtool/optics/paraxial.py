@@ -14,16 +14,15 @@ has a dozen surfaces, and numpy would cost more to import than the trace.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
 
 from camtool.core.errors import require_positive
+from camtool.core.record import Record
 from camtool.optics.prescription import Prescription
 
 __all__ = ["FirstOrder", "first_order", "paraxial_trace"]
 
 
-@dataclass(frozen=True)
-class FirstOrder:
+class FirstOrder(Record):
     """First-order data of a lens, in mm (positions are z in lens coordinates).
 
     ``efl_mm`` f; ``bfd_mm`` last vertex → rear focal point; ``z_k_mm`` last

@@ -1,4 +1,4 @@
-"""Lens prescriptions: the surfaces of a real lens, validated into frozen dataclasses.
+"""Lens prescriptions: the surfaces of a real lens, validated into frozen value classes.
 
 A prescription lists the refracting surfaces from the object side. Each surface
 has a vertex radius (``inf`` for a flat surface), the axial thickness to the
@@ -23,10 +23,10 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import Any
 
 from camtool.core.errors import CamtoolError
+from camtool.core.record import Record
 
 __all__ = [
     "Prescription",
@@ -82,8 +82,7 @@ class PrescriptionError(CamtoolError, ValueError):
         super().__init__(f"{source}: {where}{key}: {problem}")
 
 
-@dataclass(frozen=True)
-class Surface:
+class Surface(Record):
     """One refracting surface of a prescription; lengths in mm.
 
     ``aspheric`` holds ``(power, coefficient)`` pairs of the polynomial sag
@@ -129,8 +128,7 @@ class Surface:
         return base + sum(a * r**power for power, a in self.aspheric)
 
 
-@dataclass(frozen=True)
-class Prescription:
+class Prescription(Record):
     """A validated lens prescription: surfaces from the object side plus the light it was designed for.
 
     ``focal_length_mm`` and ``f_number`` are the values the source states
