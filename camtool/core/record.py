@@ -130,7 +130,7 @@ class Record:
     def __hash__(self) -> int:
         # computed once: a prescription is a key of several caches, hashed on every call of a rung
         try:
-            return self._record_hash  # type: ignore[no-any-return]
+            return self._record_hash  # type: ignore[attr-defined]
         except AttributeError:
             pass
         value = hash(tuple(self.__dict__[spec.name] for spec in self.__fields__ if spec.hash))
