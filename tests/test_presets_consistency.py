@@ -324,8 +324,9 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120.0),
     ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100.0), ("fujifilm-gf35-70mm-f4.5-5.6-wr", 70.0),
     ("fujifilm-gf500mm-f5.6-r-lm-ois-wr", 500.0),
-    # viltrox-samyang-lenses.yaml, internal focusing: 0.19 m with 0.15x implies about 22 mm (Samyang AF 24mm F1.8 FE)
-    ("samyang-af-24mm-f1.8-fe", 24.0),
+    # viltrox-samyang-lenses.yaml, internal focusing: 0.19 m with 0.15x and 0.35 m with 0.12x imply about 22 and
+    # 33 mm (Samyang AF 24mm F1.8 FE and AF 35mm F2.8 FE)
+    ("samyang-af-24mm-f1.8-fe", 24.0), ("samyang-af-35mm-f2.8-fe", 35.0),
 }
 
 
