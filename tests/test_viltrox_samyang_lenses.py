@@ -312,8 +312,8 @@ def test_published_magnifications_against_unit_focusing():
     assert unit_focusing(16, 270) == pytest.approx(0.06753, abs=1e-5) and unit_focusing(16, 270) < 0.13
     assert unit_focusing(24, 190) == pytest.approx(0.17414, abs=1e-5) and unit_focusing(24, 190) > 0.15
     assert unit_focusing(35, 350) == pytest.approx(0.12702, abs=1e-5) and unit_focusing(35, 350) > 0.12
-    assert 190 / (2 + 0.15 + 1 / 0.15) == pytest.approx(21.55, abs=0.01)
-    assert 350 / (2 + 0.12 + 1 / 0.12) == pytest.approx(33.49, abs=0.01)
+    implied = [distance / (2 + m + 1 / m) for distance, m in ((190, 0.15), (350, 0.12))]
+    assert implied == pytest.approx([21.55, 33.49], abs=0.01)
     for alias, focal, distance, published in (("samyang-af-24-1.8", 24.0, 190.0, 0.15),
                                               ("samyang-af-35-2.8", 35.0, 350.0, 0.12)):
         model = focus_model(load_db().lens(alias), focal)
