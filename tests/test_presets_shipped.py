@@ -123,3 +123,85 @@ def test_the_shipped_records_are_used_on_their_digest_without_a_second_schema_ch
     first = load_db(lensfun=False)
     for kind in ("sensor", "camera", "lens", "prescription", "scene"):
         assert first.all(kind) == fresh.all(kind), kind
+
+
+def _built_rows(database, **kwargs):
+    """The listing made preset by preset (the database's shipped listing not used)."""
+    from camtool.plans.presets import list_presets
+
+    class Building:
+        def __getattr__(self, name):
+            return getattr(database, name)
+
+        def shipped_listing(self, kind):
+            return None
+
+    return list_presets(database=Building(), **kwargs)
+
+
+@pytest.mark.parametrize("kwargs", [{}, {"kind": "lens"}, {"kind": "camera", "search": "nikon"}, {"search": "50mm"}])
+def test_the_shipped_listing_is_the_listing_built_preset_by_preset(cache_home: Path, kwargs) -> None:
+    from camtool.plans.presets import list_presets
+
+    database = load_db(lensfun=False)
+    assert database.shipped_listing("lens")  # the shipped files alone: the build's listing answers
+    rows = list_presets(database=database, **kwargs)
+    assert rows and rows == _built_rows(load_db(lensfun=False), **kwargs)
+
+
+def test_the_shipped_listing_is_not_used_beside_another_file(cache_home: Path) -> None:
+    from camtool.plans.presets import list_presets
+
+    config = cache_home / "xdg_config_home" / "camtool"
+    config.mkdir(parents=True)
+    (config / "mine.yaml").write_text("sensors:\n  - id: full-frame\n    name: Full frame\n    width_mm: 35.8\n"
+                                      "    height_mm: 23.9\n", encoding="utf-8")
+    database = load_db(lensfun=False)
+    assert database.shipped_listing("camera") is None
+    rows = list_presets(database=database)
+    assert rows == _built_rows(database)
+    assert [r.summary for r in rows if r.kind == "sensor" and r.id == "full-frame"] == ["35.8 × 23.9 mm"]
+    # a shipped camera on that sensor is listed with the user's size
+    z8 = next(r for r in rows if r.kind == "camera" and r.id == "nikon-z-8")
+    assert "35.8 × 23.9 mm" in z8.summary
+
+
+def test_the_shipped_listing_is_not_used_for_an_edited_or_an_added_file(cache_home: Path, tmp_path: Path,
+                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    import shutil
+
+    from camtool.plans.presets import list_presets
+
+    copy = tmp_path / "lens_db"
+    shutil.copytree(paths.shipped_dir(), copy)
+    monkeypatch.setattr(paths, "shipped_dir", lambda: str(copy))
+    assert load_db(lensfun=False).shipped_listing("sensor")
+    sensors = copy / "sensors.yaml"
+    sensors.write_text(sensors.read_text(encoding="utf-8").replace("    width_mm: 36.0\n", "    width_mm: 35.9\n", 1),
+                       encoding="utf-8")
+    database = load_db(lensfun=False)
+    assert database.shipped_listing("sensor") is None
+    rows = list_presets(database=database, kind="sensor")
+    assert next(r.summary for r in rows if r.id == "full-frame") == "35.9 × 24 mm"
+    sensors.write_bytes((Path(paths.__file__).parents[2] / "lens_db" / "sensors.yaml").read_bytes())
+    assert load_db(lensfun=False).shipped_listing("sensor")  # the file as shipped again
+    (copy / "extra.yaml").write_text("scenes:\n  - id: my-scene\n    name: Mine\n    distance: 3m\n", encoding="utf-8")
+    database = load_db(lensfun=False)
+    assert database.shipped_listing("scene") is None
+    assert "my-scene" in [r.id for r in list_presets(database=database, kind="scene")]
+
+
+def test_a_listing_without_its_digest_is_not_used(cache_home: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from camtool.plans.presets import list_presets
+
+    index, body = loader._shipped_records()
+    start, length, digest = loader._shipped_index["listing"]
+    blob = body[start:start + length].replace(b'"36 \\u00d7 24 mm"', b'"99 \\u00d7 24 mm"').replace(
+        "36 × 24 mm".encode(), "99 × 24 mm".encode())
+    assert blob != body[start:start + length]
+    monkeypatch.setattr(loader, "_shipped_index", {"index": index, "body": body + blob,
+                                                   "listing": [len(body), len(blob), digest]})
+    database = load_db(lensfun=False)
+    assert database.shipped_listing("sensor") is None
+    rows = list_presets(database=database, kind="sensor")
+    assert next(r.summary for r in rows if r.id == "full-frame") == "36 × 24 mm"

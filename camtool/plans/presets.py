@@ -10,12 +10,14 @@ every field of one preset with its derived values and, for a prescription
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from camtool.core.record import Record
 from camtool.core.record import fields as fields_of
 from camtool.presets import PresetNotFound
+from camtool.presets.summary import summary
 
 __all__ = ["FILMS_ORIGIN", "KINDS", "NoSuchPreset", "PresetRow", "PresetShown", "describe", "film",
            "first_order_fields", "list_presets", "show_preset", "summary"]
@@ -52,36 +54,6 @@ class PresetShown(NamedTuple):
     fields: dict[str, Any]
 
 
-def summary(preset: Any) -> str:
-    """One line describing a preset, e.g. '36 × 24 mm' or '24–70 mm f/4–22'.
-
-    >>> from camtool.presets import Sensor
-    >>> summary(Sensor("full-frame", "Full frame", 36.0, 24.0))
-    '36 × 24 mm'
-    """
-    kind = type(preset).__name__.lower()
-    if kind == "sensor":
-        return f"{preset.width_mm:g} × {preset.height_mm:g} mm" + (" (approximate)" if preset.approximate else "")
-    if kind == "camera":
-        pixels = f", {preset.pixels_w} × {preset.pixels_h} px" if preset.pixels_w else ""
-        return f"{preset.sensor.id} {preset.sensor.width_mm:g} × {preset.sensor.height_mm:g} mm{pixels}"
-    if kind == "lens":
-        focal = (f"{preset.focal_min_mm:g}–{preset.focal_max_mm:g} mm" if preset.is_zoom
-                 else f"{preset.focal_min_mm:g} mm")
-        if preset.members:
-            return "set: " + ", ".join(f"{m.focal_min_mm:g}" for m in preset.members) + " mm"
-        stops = f" f/{preset.f_number_min:g}" if preset.f_number_min else ""
-        return focal + stops + (" (prescription)" if preset.prescription is not None else "")
-    if kind == "prescription":
-        return f"{len(preset.surfaces)} surfaces, f = {preset.focal_length_mm or 0:g} mm"
-    if kind == "film":
-        film = preset.reciprocity() if hasattr(preset, "reciprocity") else preset
-        model = (f"p = {film.p:g} beyond {film.threshold_s:g} s" if film.p is not None
-                 else f"published table to {film.points[-1][0]:g} s")
-        return f"{film.name}, reciprocity {model}"
-    return str(preset.name)
-
-
 def shipped_films() -> list[Any]:
     """The films camtool ships with their makers' reciprocity data (``camtool/exposure/films.yaml``)."""
     from camtool.exposure.reciprocity import load_films
@@ -98,6 +70,16 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
     needle = (search or "").lower()
     rows = []
     for each in [kind] if kind else KINDS:
+        shipped = database.shipped_listing(each) if each != "film" else None
+        if shipped is not None:  # the shipped files alone, as the build listed them (the same rows, not rebuilt)
+            from camtool.presets.paths import shipped_dir
+
+            directory = shipped_dir()
+            for preset_id, name, aliases, line, origin in shipped:
+                if not needle or needle in " ".join([preset_id, name, *aliases]).lower():
+                    rows.append(PresetRow(each, preset_id, name, line, "shipped",
+                                          os.path.join(directory, *origin.split("/"))))
+            continue
         listed: list[tuple[Any, str | None, str | None]] = [(p, p.tier, p.origin) for p in database.all(each)]
         if each == "film":
             films = shipped_films()

@@ -187,6 +187,20 @@ class Database:
                 data.records_of(each)  # each file's records of the kind at once (see loader._Cached.all)
         return [self._build(kind, entry) for entry in self._index(kind).entries]
 
+    def shipped_listing(self, kind: str) -> list[list[Any]] | None:
+        """``[id, name, aliases, summary, file]`` of every preset of ``kind``, in :meth:`all`'s order, written by the
+        package's build (:mod:`camtool.presets.shipped`), when this database holds exactly the shipped files, each
+        read for the bytes the build read; otherwise None (build the presets: :meth:`all`)."""
+        if len(self.tiers) != 1 or self.tiers[0].name != "shipped":
+            return None
+        names = {self._files[path].shipped_name for path in self.tiers[0].files}
+        if None in names or len(names) != len(self.tiers[0].files):
+            return None
+        from camtool.presets.loader import shipped_listing
+
+        rows = shipped_listing(names)  # type: ignore[arg-type]
+        return None if rows is None else rows.get(kind_of(kind), [])
+
     def find(self, name: str) -> list[Preset]:
         """The presets of every kind that answer to ``name`` (for ``camtool presets show``)."""
         key = normalize(str(name))

@@ -91,6 +91,8 @@ class FileData:
         self._records = records if records is not None else {}
         self._cached = cached
         self._handed: dict[str, list[list[str]]] = {}
+        # the name under lens_db/ of a shipped file read for the very bytes its shipped records were made from
+        self.shipped_name: str | None = None
 
     def records_of(self, kind: str) -> list[dict[str, Any]]:
         """The records of one kind (read from the cache, and checked, on first use)."""
@@ -364,11 +366,12 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     digests = _shipped_digests(cache_dir) if cache_dir and use_cache else None
     if digests is not None:
         digest = digests.get(absolute)
-        known = _shipped_entry(os.path.realpath(absolute), digest) if digest is not None else None
+        real = os.path.realpath(absolute)
+        known = _shipped_entry(real, digest) if digest is not None else None
         if known is not None:  # a shipped file whose bytes have the remembered digest: not read at all
             cached = _Cached.parse(known[0], None, "", None, 0, digests=known[1])
             if cached is not None:
-                return FileData(path, cached=cached)
+                return _shipped_data(path, cached, real)
     try:
         raw = read_bytes(path, MAX_BYTES)
     except FileProblem as problem:
@@ -382,7 +385,7 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
         # the cache's own digest (path and bytes) is needed only if a section fails and the file is parsed
         cached = _Cached.parse(shipped[0], raw, cache_path, None, limit, digests=shipped[1])
         if cached is not None:
-            return FileData(path, cached=cached)
+            return _shipped_data(path, cached, os.path.realpath(absolute))
     source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     payload = cache.read(cache_path, _CACHE_KIND, source, limit)
     if payload is not None:
@@ -401,7 +404,8 @@ Written by ``python -m camtool.presets.shipped`` from a validated parse of
 each file: one JSON line mapping each file's name under ``lens_db/`` to the
 SHA-256 of the bytes it was made from, its span in the rest of the file and
 the SHA-256 of each section of the span (a kind's records, a kind's keys),
-then each file's records in the layout of a cache entry. A command reads
+and the span and SHA-256 of the listing; then each file's records in the
+layout of a cache entry, then the listing (:func:`shipped_listing`). A command reads
 these instead of parsing the YAML or reading the cache, each only for the
 very bytes it was made from and each section only when it still has its
 recorded digest (then without :func:`_valid_record`: the
@@ -428,8 +432,37 @@ def _shipped_records() -> tuple[dict[str, Any], bytes]:
         except (ValueError, RecursionError):
             index = None
         if isinstance(index, dict) and index.get("format") == CACHE_FORMAT and isinstance(index.get("files"), dict):
-            _shipped_index = {"index": index["files"], "body": raw[end + 1:]}
+            _shipped_index = {"index": index["files"], "body": raw[end + 1:], "listing": index.get("listing")}
     return _shipped_index["index"], _shipped_index["body"]
+
+
+def shipped_listing(names: set[str]) -> dict[str, list[list[Any]]] | None:
+    """The listing of the shipped presets (see :mod:`camtool.presets.shipped`) when ``names``, the files under
+    ``lens_db/`` a database read (each for the bytes its shipped records were made from), are exactly the files
+    it was made from and it has the SHA-256 the build recorded (else None). Like a shipped section, it is then
+    the build's own output, used without a second check of every row."""
+    index, body = _shipped_records()
+    if names != set(index) or _shipped_index is None:
+        return None
+    if "rows" not in _shipped_index:  # read and checked once a process
+        _shipped_index["rows"] = None
+        span = _shipped_index.get("listing")
+        if (isinstance(span, list) and len(span) == 3 and isinstance(span[2], str)
+                and all(type(n) is int and n >= 0 for n in span[:2]) and span[0] + span[1] <= len(body)):
+            blob = body[span[0]:span[0] + span[1]]
+            try:
+                rows = json.loads(blob) if _source_digest(blob) == span[2] else None
+            except (ValueError, RecursionError):
+                rows = None
+            if isinstance(rows, dict) and set(rows) <= set(KINDS) and all(isinstance(v, list) for v in rows.values()):
+                _shipped_index["rows"] = rows
+    return _shipped_index["rows"]
+
+
+def _shipped_data(path: str, cached: _Cached, real: str) -> FileData:
+    data = FileData(path, cached=cached)
+    data.shipped_name = _shipped_name(real)
+    return data
 
 
 def shipped_payload(absolute: str, raw: bytes, digests: Any = None) -> tuple[bytes, dict[str, str]] | None:

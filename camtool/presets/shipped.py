@@ -8,8 +8,10 @@ tracing). Both are therefore made once, here, from the shipped files:
 - :data:`camtool.presets.loader.SHIPPED_RECORDS`, beside the loader: one JSON
   line (the record layout's format number and, for each file of
   ``lens_db/``, the SHA-256 of its bytes, its span and the SHA-256 of each
-  section of the span), then each file's validated records as a cache entry
-  holds them;
+  section of the span; the span and SHA-256 of the listing), then each file's
+  validated records as a cache entry holds them, then the listing: each
+  shipped preset's id, name, aliases, one-line summary and file, which
+  ``presets list`` shows when no other file is read;
 - :data:`camtool.dof.auto.SHIPPED_TABLES`, beside :mod:`camtool.dof.auto`: the
   aberration table of each prescription of ``lens_db/prescriptions/``, keyed
   by the content digest a cache entry is bound to.
@@ -38,11 +40,13 @@ def build_records() -> bytes:
     """The shipped records' bytes, every file of ``lens_db/`` parsed afresh (a file with a problem raises)."""
     directory = paths.shipped_dir()
     files: dict[str, list[object]] = {}
+    parsed: dict[str, loader.FileData] = {}
     blobs = []
     offset = 0
     for path in paths.shipped_files():
         raw = read_bytes(path, loader.MAX_BYTES)
-        payload = loader.entry_payload(loader._parse_or_raise(path, raw)._records)
+        parsed[path] = loader._parse_or_raise(path, raw)
+        payload = loader.entry_payload(parsed[path]._records)
         if payload is None:
             raise ValueError(f"{path}: its records cannot be written as JSON")
         name = os.path.relpath(path, directory).replace(os.sep, "/")
@@ -53,8 +57,28 @@ def build_records() -> bytes:
         files[name] = [source_digest(raw), offset, len(payload), digests]
         blobs.append(payload)
         offset += len(payload)
-    index = json.dumps({"format": loader.CACHE_FORMAT, "files": files}, separators=(",", ":"), sort_keys=True)
-    return index.encode("utf-8") + b"\n" + b"".join(blobs)
+    listing = listing_payload(parsed, directory)
+    document = {"format": loader.CACHE_FORMAT, "files": files,
+                "listing": [offset, len(listing), source_digest(listing)]}
+    index = json.dumps(document, separators=(",", ":"), sort_keys=True)
+    return index.encode("utf-8") + b"\n" + b"".join(blobs) + listing
+
+
+def listing_payload(parsed: dict[str, loader.FileData], directory: str) -> bytes:
+    """What ``presets list`` shows of the shipped presets alone, kind by kind in the database's order.
+
+    One JSON object: each kind's rows ``[id, name, aliases, summary, file under lens_db/]``, from a
+    database of the shipped files only (:func:`camtool.presets.summary.summary` of each preset built).
+    """
+    from camtool.presets.database import Database
+    from camtool.presets.schema import KINDS
+    from camtool.presets.summary import summary
+
+    database = Database([paths.Tier("shipped", tuple(parsed))], parsed)
+    rows = {kind: [[preset.id, preset.name, list(preset.aliases), summary(preset),
+                    os.path.relpath(str(preset.origin), directory).replace(os.sep, "/")]
+                   for preset in database.all(kind)] for kind in KINDS}
+    return json.dumps(rows, separators=(",", ":"), ensure_ascii=False).encode("utf-8")
 
 
 def prescriptions_by_id() -> dict[str, Any]:
