@@ -328,9 +328,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     # 0.24x imply about 67, 81 and 219 mm (HD PENTAX-DA 70mm Limited, D FA★85mm, smc DA★300mm [IF])
     ("pentax-hd-da-70mm-f2.4-limited", 70.0), ("pentax-hd-d-fa-star-85mm-f1.4-ed-sdm-aw", 85.0),
     ("pentax-smc-da-star-300mm-f4-ed-if-sdm", 300.0),
-    # viltrox-samyang-lenses.yaml, internal focusing: 0.19 m with 0.15x and 0.35 m with 0.12x imply about 22 and
-    # 33 mm (Samyang AF 24mm F1.8 FE and AF 35mm F2.8 FE)
-    ("samyang-af-24mm-f1.8-fe", 24.0), ("samyang-af-35mm-f2.8-fe", 35.0),
+    # viltrox-samyang-lenses.yaml, internal focusing: 0.35 m with 0.12x implies about 33 mm (Samyang AF 35mm F2.8 FE)
+    ("samyang-af-35mm-f2.8-fe", 35.0),
 }
 
 
