@@ -74,6 +74,7 @@ class Record:
     __names__: frozenset[str] = frozenset()
     _record_order: tuple[str, ...] = ()
     _record_defaults: dict[str, Any] = {}  # noqa: RUF012 - each class's own, set once when it is created
+    _record_all_compared = True
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
@@ -93,6 +94,7 @@ class Record:
         cls.__names__ = frozenset(spec.name for spec in declared)
         cls._record_order = tuple(spec.name for spec in declared)
         cls._record_defaults = {spec.name: spec.default for spec in declared if spec.default is not _MISSING}
+        cls._record_all_compared = all(spec.compare for spec in declared)
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         order = self._record_order
@@ -125,6 +127,8 @@ class Record:
         if other.__class__ is not self.__class__:
             return NotImplemented
         assert isinstance(other, Record)
+        if self._record_all_compared:  # the values dict holds exactly the fields: one comparison in C
+            return self.__dict__ == other.__dict__
         return self._compared() == other._compared()
 
     def __hash__(self) -> int:
