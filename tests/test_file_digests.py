@@ -17,6 +17,7 @@ import time
 from pathlib import Path
 
 import pytest
+from conftest import point_xdg_at
 
 from camtool.core import cache
 from camtool.presets import load_db, loader, paths
@@ -24,9 +25,7 @@ from camtool.presets import load_db, loader, paths
 
 @pytest.fixture()
 def cache_home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    for name in ("XDG_CACHE_HOME", "XDG_CONFIG_HOME", "XDG_DATA_HOME"):
-        monkeypatch.setenv(name, str(tmp_path / name.lower()))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+    point_xdg_at(tmp_path, monkeypatch)
     monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
     monkeypatch.setattr(loader, "_file_digests", {})
     return tmp_path

@@ -17,6 +17,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from conftest import point_xdg_at
 
 from camtool.presets import load_db, loader, paths, shipped
 
@@ -32,9 +33,7 @@ def test_the_shipped_records_are_a_fresh_parse_of_the_shipped_files() -> None:
 
 @pytest.fixture()
 def cache_home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    for name in ("XDG_CACHE_HOME", "XDG_CONFIG_HOME", "XDG_DATA_HOME"):
-        monkeypatch.setenv(name, str(tmp_path / name.lower()))
-    monkeypatch.setenv("XDG_CONFIG_DIRS", str(tmp_path / "etc"))
+    point_xdg_at(tmp_path, monkeypatch)
     monkeypatch.delenv("CAMTOOL_NO_CACHE", raising=False)
     return tmp_path
 
