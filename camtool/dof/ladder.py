@@ -761,6 +761,8 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
 
     def flatten(v: Any) -> Any:
         """One value per scene, flat (a view where it can be); a number stays a number (nothing to copy or index)."""
+        if type(v) is np.ndarray and v.ndim and v.shape == shape and v.dtype == np.float64:
+            return v.reshape(-1)  # read, never written
         return float(v) if np.ndim(v) == 0 else np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
 
     flat = [flatten(v) for v in inputs]
