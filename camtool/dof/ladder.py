@@ -819,18 +819,23 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
         names.fill(_label(models[base[0]], base[1]))  # np.full of an object is 30 times slower
         estimate = np.array(np.broadcast_to(totals[base[0]], (count,)), dtype=float)
 
+    pending: list[tuple[bool, Any]] = []  # cheaper rows whose far limit may be ∞ where the hyperfocal rung's is not
+
     def put(index: int, add: bool, rows: Any) -> None:
         """Run rung ``index`` over ``rows`` and put its limits (H too unless it is cheaper), name and estimate in place.
 
         A cheaper rung's own far limit can reach ∞ a little before the hyperfocal rung's H: where the
-        hyperfocal rung ran over every scene, those rows keep its answer.
+        hyperfocal rung ran over every scene, those rows keep its answer; else they run it afterwards.
         """
         part = list(run(index, add, rows))
-        if index < h_index and base is not None and base[:2] == (h_index, add):
-            back = np.isinf(part[1])
-            if back.any():
-                keep = ~back
-                rows, part = rows[keep], [value[keep] for value in part]
+        if index < h_index:
+            if base is not None and base[:2] == (h_index, add):
+                back = np.isinf(part[1])
+                if back.any():
+                    keep = ~back
+                    rows, part = rows[keep], [value[keep] for value in part]
+            else:
+                pending.append((add, rows))
         for i, value in enumerate(part):
             if i != hf or index >= h_index:
                 fields[i][rows] = value
@@ -838,21 +843,22 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
         total = totals[index]
         estimate[rows] = total if np.ndim(total) == 0 else total[rows]
 
+    def rows_of(index: int, add: bool) -> Any:
+        return np.nonzero(codes == (index if applied is None else 2 * index + add))[0]
+
     for index, add, size in groups:
         if (index, add, size) != base:
-            put(index, add, np.nonzero(codes == (index if applied is None else 2 * index + add))[0])
+            put(index, add, rows_of(index, add))
     if hyper is not None:
-        cheaper = np.nonzero(chosen < h_index)[0]
         if not (hands_h and base is not None and base[0] == h_index):  # else the H handed is in place already
+            cheaper = np.nonzero(chosen < h_index)[0]
             fields[hf][cheaper] = hyper[cheaper]
-        # a cheaper rung's own far limit can reach ∞ a little before the hyperfocal rung's H: that rung then runs
-        again = cheaper[np.isinf(fields[1][cheaper])]
-        for add in (False, True):
-            rows = again if applied is None else again[applied[again] == add]
-            if rows.size:
-                put(h_index, add, rows)
-            if applied is None:
-                break
+        if base is not None and base[0] < h_index:
+            pending.append((base[1], rows_of(base[0], base[1])))
+        for add, rows in pending:  # a cheaper rung's far limit at ∞ in front of H: the hyperfocal rung runs there
+            again = rows[np.isinf(fields[1][rows])]
+            if again.size:
+                put(h_index, add, again)
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
 
