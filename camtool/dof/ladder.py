@@ -652,8 +652,8 @@ def _auto_in_blocks(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, 
     try:
         for start in range(0, count, _BLOCK):
             part = slice(start, start + _BLOCK)
-            result = depth_of_field("auto", *(v if np.ndim(v) == 0 else v[part] for v in flat), plane, lens,
-                                    tolerance=tolerance)
+            f, n, c, s = (v if np.ndim(v) == 0 else v[part] for v in flat)
+            result = depth_of_field("auto", f, n, c, s, plane, lens, tolerance=tolerance)
             for out, value in zip(fields, result.limits):
                 out[part] = value
             names[part] = result.model
