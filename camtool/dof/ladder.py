@@ -546,19 +546,19 @@ def depth_of_field(
     ValueError: unknown model 'bogus'; choose one of approx, thin, thick, paraxial, raytrace, wave, auto
     """
     lens = lens or NO_LENS
-    if (model == "auto" and not (type(distance_mm) is float and type(f_number) is float
-                                 and type(focal_length_mm) is float and type(coc_mm) is float)
-            and not diffraction and criterion is None and lens.prescription is None
-            and any(getattr(v, "size", 1) > _BLOCK for v in (focal_length_mm, f_number, coc_mm, distance_mm))):
-        in_blocks = _auto_in_blocks(focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, tolerance)
-        if in_blocks is not None:
-            return in_blocks
     if model != "auto":
         if model not in rungs.by_name():
             raise ValueError(f"unknown model {model!r}; choose one of {', '.join((*rungs.names(), 'auto'))}")
         unavailable = _unavailable(model, lens)
         if unavailable is not None:
             raise unavailable
+    elif (not (type(distance_mm) is float and type(f_number) is float  # a single scene asks no more
+               and type(focal_length_mm) is float and type(coc_mm) is float)
+          and not diffraction and criterion is None and lens.prescription is None
+          and any(getattr(v, "size", 1) > _BLOCK for v in (focal_length_mm, f_number, coc_mm, distance_mm))):
+        in_blocks = _auto_in_blocks(focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, tolerance)
+        if in_blocks is not None:
+            return in_blocks
     f = prescription_focal_length(lens, focal_length_mm)
     from camtool.dof.closed import check_inputs
 
@@ -619,7 +619,8 @@ def depth_of_field(
 
 
 _BLOCK = 16384
-"""``auto`` over more scenes than this (closed-form rungs only) runs a block of them at a time (:func:`_auto_in_blocks`)."""
+"""``auto`` over more scenes than this in one input (closed-form rungs only) runs a block of them at a time
+(:func:`_auto_in_blocks`)."""
 
 
 def _auto_in_blocks(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, tolerance: float) -> ModelResult | None:
