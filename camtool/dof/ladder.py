@@ -630,8 +630,8 @@ def _auto_in_blocks(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, 
     the closed-form rungs work scene by scene), so a block gives the numbers
     the whole arrays would; but a block's arrays stay in the processor's
     cache and the allocator reuses their memory, where arrays of every
-    scene at once are fetched from memory and page-faulted in on every step
-    (at 200,000 scenes that cost more than the arithmetic). None when the
+    scene at once are page-faulted in again on every step (at 200,000
+    scenes about 40 % of the time: benchmarks/README.md). None when the
     inputs do not broadcast, or when a block raises: the whole arrays then
     run at once, so the error names the scene and the check a single call
     over them names.
@@ -749,8 +749,8 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     vectorised call with the scenes' (u, v) and, for the hyperfocal rung, the
     H the choice took, and the results go back in place; ``model`` is then
     an array of names, one per scene. The largest group whose rung can run
-    on any scene (:data:`_ANY_SCENE`), or a rung every scene chose, runs
-    over all the scenes instead: its results are the arrays the others'
+    on any scene (:data:`_ANY_SCENE`), when it holds at least :data:`_SHARE`
+    of them, or a rung every scene chose, runs over all the scenes instead: its results are the arrays the others'
     rows are written into, so its own scenes are neither gathered nor
     scattered. Every scene's numbers are those its rung gives it alone.
     """
