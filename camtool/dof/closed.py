@@ -134,7 +134,7 @@ def thin_hyperfocal_mm(focal_length_mm: Any, f_number: Any, coc_mm: Any, distanc
 
 def thin_dof(
     focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any, distance_from: str = "sensor",
-    focus: LensPlaneDistances | None = None,
+    focus: LensPlaneDistances | None = None, hyperfocal: Any = None,
 ) -> DofLimits:
     """Exact thin-lens depth of field in mm.
 
@@ -161,6 +161,9 @@ def thin_dof(
         From the sensor: (u, v) of ``distance_mm`` already converted by
         :func:`camtool.geometry.thinlens.lens_distances` (hiatus 0) and
         checked, for a caller that has them; None converts here.
+    hyperfocal : float, array or None
+        :func:`thin_hyperfocal_mm` of these f, N, c and plane, for a caller
+        that has it; None computes it here.
 
     References
     ----------
@@ -183,13 +186,16 @@ def thin_dof(
     if check_plane(distance_from, DISTANCE_PLANES) == "sensor":
         u, v = lens_distances(f, distance_mm) if focus is None else focus
         offset = v
-        hyperfocal = thin_hyperfocal_mm(f, f_number, coc_mm, "sensor")
+        if hyperfocal is None:
+            hyperfocal = thin_hyperfocal_mm(f, f_number, coc_mm, "sensor")
     else:
         require_positive("distance_mm", distance_mm, allow_inf=True)
         require("distance_mm", distance_mm, distance_mm > f,
                 "more than {limit} from the lens (the focal length; between f and 2f the magnification is above 1)",
                 limit=f)
-        u, offset, hyperfocal = distance_mm, 0.0, h
+        u, offset = distance_mm, 0.0
+        if hyperfocal is None:
+            hyperfocal = h
     with quiet(xp):
         u_minus_f = u - f
         denominator = 1.0 + (h0 - f) / u  # > 0 because u > f; 1 at infinity

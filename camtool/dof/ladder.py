@@ -552,6 +552,13 @@ def depth_of_field(
         unavailable = _unavailable(model, lens)
         if unavailable is not None:
             raise unavailable
+    elif (not (type(distance_mm) is float and type(f_number) is float  # a single scene asks no more
+               and type(focal_length_mm) is float and type(coc_mm) is float)
+          and not diffraction and criterion is None and lens.prescription is None
+          and any(getattr(v, "size", 1) > _BLOCK for v in (focal_length_mm, f_number, coc_mm, distance_mm))):
+        in_blocks = _auto_in_blocks(focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, tolerance)
+        if in_blocks is not None:
+            return in_blocks
     f = prescription_focal_length(lens, focal_length_mm)
     from camtool.dof.closed import check_inputs
 
@@ -609,6 +616,52 @@ def depth_of_field(
     inputs = (f, f_number, coc_mm, distance_mm, usable)
     return _auto_each(effects, available_models(lens), diffraction, tolerance, inputs, airy, distance_from, lens,
                       focus)
+
+
+_BLOCK = 16384
+"""``auto`` over more scenes than this in one input (closed-form rungs only) runs a block of them at a time
+(:func:`_auto_in_blocks`)."""
+
+
+def _auto_in_blocks(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, tolerance: float) -> ModelResult | None:
+    """``auto`` without diffraction or a prescription over many scenes, :data:`_BLOCK` scenes at a time.
+
+    Each scene's answer is computed on its own by every step (the choice and
+    the closed-form rungs work scene by scene), so a block gives the numbers
+    the whole arrays would; but a block's arrays stay in the processor's
+    cache and the allocator reuses their memory, where arrays of every
+    scene at once are page-faulted in again on every step (at 200,000
+    scenes about 40 % of the time: benchmarks/README.md). None when the
+    inputs do not broadcast, or when a block raises: the whole arrays then
+    run at once, so the error names the scene and the check a single call
+    over them names.
+    """
+    import numpy as np
+
+    inputs = (f, n, c, s)
+    if any(v is None for v in inputs):
+        return None
+    try:
+        shape = np.broadcast_shapes(*(np.shape(v) for v in inputs))
+    except ValueError:
+        return None
+    count = math.prod(shape)
+    flat = [v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1) for v in inputs]
+    fields = [np.empty(count) for _ in DofLimits._fields]
+    names = np.empty(count, dtype=object)
+    estimate = np.empty(count)
+    try:
+        for start in range(0, count, _BLOCK):
+            part = slice(start, start + _BLOCK)
+            f, n, c, s = (v if np.ndim(v) == 0 else v[part] for v in flat)
+            result = depth_of_field("auto", f, n, c, s, plane, lens, tolerance=tolerance)
+            for out, value in zip(fields, result.limits):
+                out[part] = value
+            names[part] = result.model
+            estimate[part] = result.error_estimate
+    except CamtoolError:
+        return None
+    return ModelResult(DofLimits(*(v.reshape(shape) for v in fields)), names.reshape(shape), estimate.reshape(shape))
 
 
 Plan = tuple[tuple[str, ...], str, frozenset[str], tuple[tuple[str, tuple[int, ...]], ...], tuple[float, ...]]
@@ -676,14 +729,30 @@ def _hyperfocal_rung_of(lens: LensData) -> str:
     return "paraxial" if "paraxial" in models else "thin"
 
 
+_ANY_SCENE = frozenset({"approx", "thin"})
+"""Rungs that check nothing beyond what the dispatcher's focus conversion has checked: ``auto`` over arrays may run
+one over every scene, the rows other rungs answer included (no error, no warning there), and write those rows over."""
+
+_SHARE = 0.5
+"""The least share of the scenes for which a rung of :data:`_ANY_SCENE` runs over every scene rather than its own."""
+
+_TAKES_H = frozenset({"thin", "thick"})
+"""Rungs whose hyperfocal distance is :func:`_hyperfocal_only`'s closed form: ``auto`` hands them the H it has."""
+
+
 def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tolerance: float,
                inputs: tuple[Any, ...], airy: Any, plane: str, lens: LensData,
                focus: rungs.Focus | None = None) -> ModelResult:
     """``auto`` over arrays: each scene gets its own cheapest sufficient rung, as a single call would.
 
-    The scenes are grouped by the rung chosen, each group runs in one
-    vectorised call, and the results go back in place; ``model`` is then an
-    array of names, one per scene.
+    The scenes are grouped by the rung chosen; each group runs in one
+    vectorised call with the scenes' (u, v) and, for the hyperfocal rung, the
+    H the choice took, and the results go back in place; ``model`` is then
+    an array of names, one per scene. The largest group whose rung can run
+    on any scene (:data:`_ANY_SCENE`), when it holds at least :data:`_SHARE`
+    of them, or a rung every scene chose, runs over all the scenes instead: its results are the arrays the others'
+    rows are written into, so its own scenes are neither gathered nor
+    scattered. Every scene's numbers are those its rung gives it alone.
     """
     import numpy as np
 
@@ -693,18 +762,22 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
 
     def flatten(v: Any) -> Any:
         """One value per scene, flat (a view where it can be); a number stays a number (nothing to copy or index)."""
+        if type(v) is np.ndarray and v.ndim and v.shape == shape and v.dtype == np.float64:
+            return v.reshape(-1)  # read, never written
         return float(v) if np.ndim(v) == 0 else np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
 
     flat = [flatten(v) for v in inputs]
     each = Effects(*(flatten(v) for v in effects))
     count = math.prod(shape)
-    applied = np.full(count, False) if not diffraction else np.broadcast_to(each.diffraction > tolerance, (count,))
+    # each rung's estimate (what it leaves out): over every scene, or one number where every term is a number
+    applied = None
+    totals = [left_out(each, name, True) for name in models]
+    if diffraction:  # the add-on runs where diffraction alone exceeds the tolerance; elsewhere it is left out
+        applied = np.broadcast_to(each.diffraction > tolerance, (count,))
+        unapplied = np.where(applied, 0.0, each.diffraction)
+        totals = [total + unapplied for total in totals]
     chosen = np.full(count, len(models) - 1)
-    totals = []  # each rung's estimate over every scene (what it leaves out)
-    for index in range(len(models)):
-        totals.append(np.broadcast_to(left_out(each, models[index], True)
-                                      + np.where(applied | (not diffraction), 0.0, each.diffraction), (count,)))
-    for index in reversed(range(len(models))):
+    for index in reversed(range(len(models) - 1)):
         chosen = np.where(totals[index] <= tolerance, index, chosen)
     rung_h = _hyperfocal_rung_of(lens)
     h_index = models.index(rung_h) if rung_h in models else -1
@@ -712,45 +785,97 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     if h_index > 0:
         # a rung cheaper than the hyperfocal rung only in front of that rung's H (its closed form): from H on, it runs
         f, n, c, s, usable = flat[:5]
-        hyper = np.broadcast_to(_hyperfocal_only(rung_h, _plan(lens)[4], f, n, np.where(applied, usable, c), plane),
+        hyper = np.broadcast_to(_hyperfocal_only(rung_h, _plan(lens)[4], f, n,
+                                                 c if applied is None else np.where(applied, usable, c), plane),
                                 (count,))
-        chosen = np.where((chosen < h_index) & (np.broadcast_to(s, (count,)) >= hyper), h_index, chosen)
-    fields = [np.empty(count) for _ in DofLimits._fields]
-    names = np.empty(count, dtype=object)
-    estimate = np.empty(count)
+        chosen = np.where((chosen < h_index) & (s >= hyper), h_index, chosen)
+    hands_h = hyper is not None and rung_h in _TAKES_H
+    hf = DofLimits._fields.index("hyperfocal_mm")
 
-    def run_rows(name: str, add: bool, rows: Any) -> DofLimits:
-        """The rung ``name`` over the scenes ``rows``, in one vectorised call."""
-        f, n, c, s, usable, *uv = (v if isinstance(v, float) else v[rows] for v in flat)
-        part_focus = None if focus is None else rungs.Focus(
-            FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm)
-        return _run(name, add, f, n, c, s, plane, lens, usable, part_focus)
+    def run(index: int, add: bool, rows: Any) -> DofLimits:
+        """The rung ``index`` over the scenes ``rows`` (None: every scene), in one vectorised call."""
+        f, n, c, s, usable, *uv = (v if rows is None or isinstance(v, float) else v[rows] for v in flat)
+        part_focus = None
+        if focus is not None:
+            h = hyper if hands_h and index == h_index else None
+            part_focus = rungs.Focus(FocusGeometry(uv[0], uv[1], None, None, None), focus.hiatus_mm,
+                                     h if h is None or rows is None else h[rows])
+        return _run(models[index], add, f, n, c, s, plane, lens, usable, part_focus)
+
+    # (rung, add-on, scenes) of every rung chosen; the largest that may run over every scene does
+    width = 1 if applied is None else 2
+    codes = chosen if applied is None else 2 * chosen + applied
+    sizes = np.bincount(codes, minlength=width * len(models))
+    groups = [(int(k) // width, bool(k % width), int(size)) for k, size in enumerate(sizes) if size]
+    whole = [group for group in groups
+             if group[2] == count or (models[group[0]] in _ANY_SCENE and group[2] >= _SHARE * count)]
+    base = max(whole, key=lambda group: group[2]) if whole else None
+    if base is None:
+        fields = [np.empty(count) for _ in DofLimits._fields]
+        names = np.empty(count, dtype=object)
+        estimate = np.empty(count)
+    else:
+        fields = _writable(run(base[0], base[1], None), count)
+        names = np.empty(count, dtype=object)
+        names.fill(_label(models[base[0]], base[1]))  # np.full of an object is 30 times slower
+        estimate = np.array(np.broadcast_to(totals[base[0]], (count,)), dtype=float)
+
+    pending: list[tuple[bool, Any]] = []  # cheaper rows whose far limit may be ∞ where the hyperfocal rung's is not
 
     def put(index: int, add: bool, rows: Any) -> None:
-        """Run rung ``index`` over ``rows`` and put its limits, name and estimate in place."""
-        for out, value in zip(fields, run_rows(models[index], add, rows)):
-            out[rows] = value
-        names[rows] = _label(models[index], add)
-        estimate[rows] = totals[index][rows]
+        """Run rung ``index`` over ``rows`` and put its limits (H too unless it is cheaper), name and estimate in place.
 
-    for index in range(len(models)):
-        for add in (False, True):
-            rows = np.nonzero((chosen == index) & (applied == add))[0]
-            if rows.size == count:  # one rung for every scene: views, not copies
-                put(index, add, slice(None))
-            elif rows.size:
-                put(index, add, rows)
+        A cheaper rung's own far limit can reach ∞ a little before the hyperfocal rung's H: where the
+        hyperfocal rung ran over every scene, those rows keep its answer; else they run it afterwards.
+        """
+        part = list(run(index, add, rows))
+        if index < h_index:
+            if base is not None and base[:2] == (h_index, add):
+                back = np.isinf(part[1])
+                if back.any():
+                    keep = ~back
+                    rows, part = rows[keep], [value[keep] for value in part]
+            else:
+                pending.append((add, rows))
+        for i, value in enumerate(part):
+            if i != hf or index >= h_index:
+                fields[i][rows] = value
+        names[rows] = _label(models[index], add)
+        total = totals[index]
+        estimate[rows] = total if np.ndim(total) == 0 else total[rows]
+
+    def rows_of(index: int, add: bool) -> Any:
+        return np.nonzero(codes == (index if applied is None else 2 * index + add))[0]
+
+    for index, add, size in groups:
+        if (index, add, size) != base:
+            put(index, add, rows_of(index, add))
     if hyper is not None:
-        cheaper = np.nonzero(chosen < h_index)[0]
-        fields[DofLimits._fields.index("hyperfocal_mm")][cheaper] = hyper[cheaper]
-        # a cheaper rung's own far limit can reach ∞ a little before the hyperfocal rung's H: that rung then runs
-        again = cheaper[np.isinf(fields[1][cheaper])]
-        for add in (False, True):
-            rows = again[applied[again] == add]
-            if rows.size:
-                put(h_index, add, rows)
+        if not (hands_h and base is not None and base[0] == h_index):  # else the H handed is in place already
+            cheaper = np.nonzero(chosen < h_index)[0]
+            fields[hf][cheaper] = hyper[cheaper]
+        if base is not None and base[0] < h_index:
+            pending.append((base[1], rows_of(base[0], base[1])))
+        for add, rows in pending:  # a cheaper rung's far limit at ∞ in front of H: the hyperfocal rung runs there
+            again = rows[np.isinf(fields[1][rows])]
+            if again.size:
+                put(h_index, add, again)
     limits = DofLimits(*(field.reshape(shape) for field in fields))
     return ModelResult(limits, names.reshape(shape), estimate.reshape(shape))
+
+
+def _writable(values: Any, count: int) -> list[Any]:
+    """``values`` as separate, writable arrays of ``count`` entries each (copied only where they are not)."""
+    import numpy as np
+
+    out: list[Any] = []
+    for value in values:
+        array = np.asarray(value, dtype=float)
+        if (array.shape != (count,) or not array.flags.writeable or array.base is not None
+                or any(array is other for other in out)):
+            array = np.array(np.broadcast_to(array, (count,)))
+        out.append(array)
+    return out
 
 
 def compare_models(

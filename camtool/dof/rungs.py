@@ -98,10 +98,15 @@ class Rung(NamedTuple):
 
 
 class Focus(NamedTuple):
-    """The focus distance converted once by the dispatcher: the geometry, with the hiatus it used (mm)."""
+    """The focus distance converted once by the dispatcher: the geometry, with the hiatus it used (mm).
+
+    ``hyperfocal_mm``, when set, is the hyperfocal distance in the focus plane of the rung the focus is handed to,
+    by that rung's own closed form (``auto`` over arrays has it before the rung runs); None: the rung computes it.
+    """
 
     geometry: FocusGeometry
     hiatus_mm: float
+    hyperfocal_mm: Any = None
 
 
 def _distances(focus: Focus | None, plane: str, hiatus_mm: float) -> LensPlaneDistances | None:
@@ -120,7 +125,7 @@ def _approx(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: F
 
 
 def _thin(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
-    return thin_dof(f, n, c, s, plane, _distances(focus, plane, 0.0))
+    return thin_dof(f, n, c, s, plane, _distances(focus, plane, 0.0), None if focus is None else focus.hyperfocal_mm)
 
 
 def _thick(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:
@@ -128,7 +133,7 @@ def _thick(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Fo
 
     p, delta = lens.thick_parameters()  # type: ignore[misc]
     return thick_dof(f, n, c, s, pupil_magnification=p, hiatus_mm=delta, distance_from=plane,
-                     focus=_distances(focus, plane, delta))
+                     focus=_distances(focus, plane, delta), hyperfocal=None if focus is None else focus.hyperfocal_mm)
 
 
 def _paraxial(f: Any, n: Any, c: Any, s: Any, plane: str, lens: LensData, focus: Focus | None = None) -> DofLimits:

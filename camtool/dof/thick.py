@@ -163,6 +163,7 @@ def thick_dof(
     hiatus_mm: Any = 0.0,
     distance_from: str = "sensor",
     focus: LensPlaneDistances | None = None,
+    hyperfocal: Any = None,
 ) -> DofLimits:
     """Depth of field of a thick lens with pupil magnification, in mm (the ``thick`` model).
 
@@ -201,6 +202,9 @@ def thick_dof(
         From the sensor: (u, v) of ``distance_mm`` already converted by
         :func:`camtool.geometry.thinlens.lens_distances` with this hiatus and
         checked, for a caller that has them; None converts here.
+    hyperfocal : float, array or None
+        :func:`thick_hyperfocal_mm` of these f, N, c, P, δ and plane, for a
+        caller that has it; None computes it here.
 
     Returns
     -------
@@ -250,7 +254,8 @@ def thick_dof(
         # near from E: x·f²/(f² + k), with numerator and denominator divided by w (finite at u = ∞)
         near_pupil = f2 * (1.0 + f / (p * w)) / (f2 / w + nc)
         near = to_pupil + near_pupil  # not focus − front: that cancels badly far away
-        hyperfocal = thick_hyperfocal_mm(f, f_number, coc_mm, p, hiatus_mm, distance_from)
+        if hyperfocal is None:
+            hyperfocal = thick_hyperfocal_mm(f, f_number, coc_mm, p, hiatus_mm, distance_from)
         beyond = distance_mm >= hyperfocal
         gap = f2 - k
         usable = gap > 0
