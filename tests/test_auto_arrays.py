@@ -4,8 +4,8 @@ The same rung, the same limits to the last bit and the same error estimate, over
 (lens data of every kind, both distance planes, diffraction, several tolerances, focus distances
 from close up to beyond the hyperfocal distance and infinity, arrays broadcast against numbers and
 2-D); and the same again when the scenes run a block at a time (camtool.dof.ladder._BLOCK), errors
-included. With diffraction asked for, the rung and the limits agree but not every estimate (the
-strict xfail below says how).
+included, and with diffraction asked for (a scene at or beyond the hyperfocal distance that does
+not add diffraction reports its share as left out, and each sum is added in one order).
 """
 
 from __future__ import annotations
@@ -75,16 +75,8 @@ def test_each_scene_of_an_array_gets_its_single_answer(name: str, plane: str) ->
 
 @pytest.mark.parametrize("plane", ["sensor", "lens"])
 @pytest.mark.parametrize("name", list(LENSES))
-def test_with_diffraction_each_scene_gets_its_single_rung_and_limits(name: str, plane: str) -> None:
-    compare(name, plane, True, False)
-
-
-@pytest.mark.xfail(strict=True, reason="with diffraction asked for, the two paths disagree on the estimate: a single "
-                   "scene at or beyond H that does not add diffraction reports the hyperfocal rung's geometric "
-                   "effects without the diffraction share left out (the array path includes it), and elsewhere the "
-                   "two add the same shares in another order (the last bit)")
-def test_with_diffraction_each_scene_gets_its_single_estimate() -> None:
-    compare("none", "sensor", True, True)
+def test_with_diffraction_each_scene_gets_its_single_answer(name: str, plane: str) -> None:
+    compare(name, plane, True, True)
 
 
 @pytest.mark.parametrize("plane", ["sensor", "lens"])

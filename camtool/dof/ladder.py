@@ -602,7 +602,7 @@ def depth_of_field(
             if cheap is None or cheap[1] == _INF:
                 # at or beyond the hyperfocal distance: its rung, whose far limit starts being infinite at H
                 at_h = _run(rung_h, applied, f, f_number, coc_mm, distance_mm, distance_from, lens, usable, focus)
-                if applied:
+                if diffraction:  # diffraction asked for: its share is in the estimate unless it was added
                     return ModelResult(at_h, _label(rung_h, applied), left_out(effects, rung_h, applied))
                 total = 0.0
                 for i in dict(sums)[rung_h]:
@@ -774,8 +774,8 @@ def _auto_each(effects: Effects, models: tuple[str, ...], diffraction: bool, tol
     totals = [left_out(each, name, True) for name in models]
     if diffraction:  # the add-on runs where diffraction alone exceeds the tolerance; elsewhere it is left out
         applied = np.broadcast_to(each.diffraction > tolerance, (count,))
-        unapplied = np.where(applied, 0.0, each.diffraction)
-        totals = [total + unapplied for total in totals]
+        # each scene's sum in left_out's order (diffraction first where it is left out), as a single call adds it
+        totals = [np.where(applied, total, left_out(each, name, False)) for name, total in zip(models, totals)]
     chosen = np.full(count, len(models) - 1)
     for index in reversed(range(len(models) - 1)):
         chosen = np.where(totals[index] <= tolerance, index, chosen)
