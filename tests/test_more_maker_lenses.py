@@ -76,8 +76,9 @@ CITED = [
     ("panasonic-lumix-s-35mm-f1.8", 35, 240, 0.22, (1.8, None), 0.22),
     # minFocusDistance 0.3, maxMagnification 0.17
     ("panasonic-lumix-s-40mm-f2", 40, 300, 0.17, (2, None), 0.17),
-    # minFocusDistance 0.44, maxMagnification 0.15
-    ("panasonic-lumix-s-pro-50mm-f1.4", 50, 440, 0.15, (1.4, None), 0.15),
+    # minFocusDistance 0.44, maxMagnification 0.15; Les Numériques: Ouverture minimale f/16, Rapport de reproduction
+    # 0.15 x
+    ("panasonic-lumix-s-pro-50mm-f1.4", 50, 440, 0.15, (1.4, 16), 0.15),
     # minFocusDistance 0.45, maxMagnification 0.14
     ("panasonic-lumix-s-50mm-f1.8", 50, 450, 0.14, (1.8, None), 0.14),
     # minFocusDistance 0.8, maxMagnification 0.13
@@ -221,28 +222,33 @@ CONFIRMED = {
 }
 
 # approximate entries of which a page confirms some figures, not all: the site named in `source`, the closest focus
-# (mm at each focal length) it prints, and the figure its notes must still name as unconfirmed. The Leica DG
-# Summilux 15mm (i-kyon1521.com: 最短撮影距離: 20cm), the Vario-Elmarit 12-35mm (The Phoblographer: 0.15m on the
-# wide end and 0.25 on the longer end; nothing at 17 mm), the M.Zuiko 300mm (ayton.id.au: close focus of only
-# 1.4m), the Lumix S PRO 24-70mm (Le Monde de la Photo: 37 cm, quelle que soit la focale)
+# (mm at each focal length) and the maximum magnification it prints (None where it prints none), and the figure the
+# entry's notes must still name as unconfirmed. The Leica DG Summilux 15mm (i-kyon1521.com: 最短撮影距離: 20cm), the
+# Vario-Elmarit 12-35mm (The Phoblographer: 0.15m on the wide end and 0.25 on the longer end; nothing at 17 mm), the
+# M.Zuiko 300mm (ayton.id.au: close focus of only 1.4m), the Lumix S PRO 24-70mm (Le Monde de la Photo: 37 cm,
+# quelle que soit la focale), the Lumix S PRO 50mm (Les Numériques: Rapport de reproduction 0.15 x)
 PARTLY_CONFIRMED = {
-    "panasonic-leica-dg-summilux-15mm-f1.7": ("i-kyon1521.com", {15: 200}, "maximum magnification 0.1x"),
-    "panasonic-leica-dg-vario-elmarit-12-35mm-f2.8": ("thephoblographer.com/2022/12/14", {12: 150, 35: 250},
+    "panasonic-leica-dg-summilux-15mm-f1.7": ("i-kyon1521.com", {15: 200}, None, "maximum magnification 0.1x"),
+    "panasonic-leica-dg-vario-elmarit-12-35mm-f2.8": ("thephoblographer.com/2022/12/14", {12: 150, 35: 250}, None,
                                                       "the 17 mm row"),
-    "om-m-zuiko-300mm-f4-is-pro": ("ayton.id.au", {300: 1400}, "maximum magnification 0.24x"),
-    "panasonic-lumix-s-pro-24-70mm-f2.8": ("lemondedelaphoto.com", {24: 370, 70: 370}, "maximum magnification"),
+    "om-m-zuiko-300mm-f4-is-pro": ("ayton.id.au", {300: 1400}, None, "maximum magnification 0.24x"),
+    "panasonic-lumix-s-pro-24-70mm-f2.8": ("lemondedelaphoto.com", {24: 370, 70: 370}, None, "maximum magnification"),
+    "panasonic-lumix-s-pro-50mm-f1.4": ("lesnumeriques.com", {}, 0.15, "closest focus 0.44 m"),
 }
 
 
-@pytest.mark.parametrize(("lens_id", "page", "focus", "open_figure"),
+@pytest.mark.parametrize(("lens_id", "page", "focus", "magnification", "open_figure"),
                          [(k, *v) for k, v in sorted(PARTLY_CONFIRMED.items())])
-def test_a_partly_confirmed_entry_names_its_page_and_what_is_still_open(lens_id, page, focus, open_figure):
+def test_a_partly_confirmed_entry_names_its_page_and_what_is_still_open(lens_id, page, focus, magnification,
+                                                                        open_figure):
     record = record_of(RECORDS, lens_id)
     assert page in record["source"]
     rows = {r["focal_length_mm"]: r["min_focus_mm"] for r in record.get("close_focus", [])} or {
         record["focal_length_mm"]: record["min_focus_mm"]}
     for focal, distance in focus.items():
         assert rows[focal] == distance, (lens_id, focal)
+    if magnification is not None:
+        assert record["max_magnification"] == magnification
     assert record["approximate"] is True
     assert open_figure in " ".join(record["notes"].split()), lens_id
 
