@@ -313,3 +313,17 @@ def test_dof_refuses_closer_than_the_published_closest_focus():
     result = run("dof", "--lens", "panasonic-leica-dg-nocticron-42.5mm-f1.2", "-N", "1.2", "-s", "0.4m")
     assert result.exit_code == 2
     assert "0.5 m" in result.output
+
+
+def test_the_25_50mm_places_no_magnification_at_its_long_end_since_unit_focusing_would_exceed_it():
+    # Panasonic's table puts 0.21x at 50 mm and 0.31 m; a 50 mm lens focused as a unit at 0.31 m from the sensor
+    # (D = f (2 + m + 1/m), the root below 1) would reach about 0.25x, more than the published maximum, so the lens
+    # focuses internally and the row carries no magnification: the model is capped at 0.21x there.
+    k = 310.0 / 50.0 - 2.0
+    unit = (k - math.sqrt(k * k - 4.0)) / 2.0
+    assert unit == pytest.approx(0.2534, abs=5e-4) and unit > 0.21
+    record = record_of(RECORDS, "panasonic-leica-dg-vario-summilux-25-50mm-f1.7")
+    assert all("max_magnification" not in row for row in record["close_focus"])
+    lens = load_db().lens("panasonic-leica-dg-vario-summilux-25-50mm-f1.7")
+    m, _ = internal_focus_at_distance(focus_model(lens, 50.0), 310.0)
+    assert m == pytest.approx(0.21, rel=1e-6)
