@@ -71,7 +71,7 @@ CITED = [
     # minFocusDistance 0.18, maxMagnification 0.2
     ("panasonic-lumix-s-18mm-f1.8", 18, 180, 0.2, (1.8, None), 0.2),
     # minFocusDistance 0.24, maxMagnification 0.15
-    ("panasonic-lumix-s-24mm-f1.8", 24, 240, 0.15, (1.8, None), 0.15),
+    ("panasonic-lumix-s-24mm-f1.8", 24, 240, 0.15, (1.8, 22), 0.15),
     # minFocusDistance 0.24, maxMagnification 0.22
     ("panasonic-lumix-s-35mm-f1.8", 35, 240, 0.22, (1.8, None), 0.22),
     # minFocusDistance 0.3, maxMagnification 0.17
@@ -208,8 +208,8 @@ def test_ids_and_aliases_are_unique_within_the_file():
 # the entries whose figures a second page confirms, and the site that page is on: the Leica DG Macro-Elmarit 45mm
 # (Panasonic's operating instructions), the Nocticron 42.5mm and the Vario-Elmarit 8-18mm (Wikipedia's data of the
 # lens), the Lumix G 42.5mm F1.7 (FotografiDigitali), the Vario-Summilux 25-50mm (Panasonic's table as The
-# Phoblographer prints it), the Lumix S 100mm Macro (Miss Numerique), the APO-Summicron-SL 28 (Leica Society
-# International) and 50 (Macfilos, Fstoppers)
+# Phoblographer prints it), the Lumix S 100mm Macro (Miss Numerique), the Lumix S 24mm F1.8 (Expeditions in
+# Light), the APO-Summicron-SL 28 (Leica Society International) and 50 (Macfilos, Fstoppers)
 CONFIRMED = {
     "panasonic-leica-dg-macro-elmarit-45mm-f2.8": "emanuals.org",
     "panasonic-leica-dg-nocticron-42.5mm-f1.2": "en.wikipedia.org/wiki/Nocticron",
@@ -217,6 +217,7 @@ CONFIRMED = {
     "panasonic-lumix-g-42.5mm-f1.7": "fotografidigitali.it/articoli/4434",
     "panasonic-leica-dg-vario-summilux-25-50mm-f1.7": "thephoblographer.com/2021/07/07",
     "panasonic-lumix-s-100mm-f2.8-macro": "missnumerique.com",
+    "panasonic-lumix-s-24mm-f1.8": "expeditionsinlight.com",
     "leica-apo-summicron-sl-28mm-f2-asph": "leicasocietyinternational.org",
     "leica-apo-summicron-sl-50mm-f2-asph": "fstoppers.com",
 }
