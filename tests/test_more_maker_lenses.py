@@ -71,13 +71,14 @@ CITED = [
     # minFocusDistance 0.18, maxMagnification 0.2
     ("panasonic-lumix-s-18mm-f1.8", 18, 180, 0.2, (1.8, None), 0.2),
     # minFocusDistance 0.24, maxMagnification 0.15
-    ("panasonic-lumix-s-24mm-f1.8", 24, 240, 0.15, (1.8, None), 0.15),
+    ("panasonic-lumix-s-24mm-f1.8", 24, 240, 0.15, (1.8, 22), 0.15),
     # minFocusDistance 0.24, maxMagnification 0.22
     ("panasonic-lumix-s-35mm-f1.8", 35, 240, 0.22, (1.8, None), 0.22),
     # minFocusDistance 0.3, maxMagnification 0.17
     ("panasonic-lumix-s-40mm-f2", 40, 300, 0.17, (2, None), 0.17),
-    # minFocusDistance 0.44, maxMagnification 0.15
-    ("panasonic-lumix-s-pro-50mm-f1.4", 50, 440, 0.15, (1.4, None), 0.15),
+    # minFocusDistance 0.44, maxMagnification 0.15; Les Numériques: Ouverture minimale f/16, Rapport de reproduction
+    # 0.15 x
+    ("panasonic-lumix-s-pro-50mm-f1.4", 50, 440, 0.15, (1.4, 16), 0.15),
     # minFocusDistance 0.45, maxMagnification 0.14
     ("panasonic-lumix-s-50mm-f1.8", 50, 450, 0.14, (1.8, None), 0.14),
     # minFocusDistance 0.8, maxMagnification 0.13
@@ -100,16 +101,16 @@ CITED = [
     ("panasonic-leica-dg-summilux-9mm-f1.7", 9, 95, 0.25, (1.7, None), 0.25),
     # minFocusDistance 0.2, maxMagnification 0.1
     ("panasonic-leica-dg-summilux-12mm-f1.4", 12, 200, 0.1, (1.4, None), 0.1),
-    # minFocusDistance 0.2, maxMagnification 0.1
-    ("panasonic-leica-dg-summilux-15mm-f1.7", 15, 200, 0.1, (1.7, None), 0.1),
+    # minFocusDistance 0.2, maxMagnification 0.1; i-kyon1521.com: 絞り値: F1.7~F16, 最短撮影距離: 20cm
+    ("panasonic-leica-dg-summilux-15mm-f1.7", 15, 200, 0.1, (1.7, 16), 0.1),
     # minFocusDistance 0.3, maxMagnification 0.11
     ("panasonic-leica-dg-summilux-25mm-f1.4-ii", 25, 300, 0.11, (1.4, None), 0.11),
     # minFocusDistance 0.2, maxMagnification 0.13
     ("panasonic-lumix-g-20mm-f1.7-ii", 20, 200, 0.13, (1.7, None), 0.13),
     # minFocusDistance 0.25, maxMagnification 0.14
     ("panasonic-lumix-g-25mm-f1.7", 25, 250, 0.14, (1.7, None), 0.14),
-    # minFocusDistance 0.31, maxMagnification 0.2
-    ("panasonic-lumix-g-42.5mm-f1.7", 42.5, 310, 0.2, (1.7, None), 0.2),
+    # minFocusDistance 0.31, maxMagnification 0.2; FotografiDigitali: 31cm, 0.2x (0.4x equivalenti), f/22
+    ("panasonic-lumix-g-42.5mm-f1.7", 42.5, 310, 0.2, (1.7, 22), 0.2),
     # minFocusDistance 0.18, maxMagnification 0.1
     ("panasonic-lumix-g-14mm-f2.5-ii", 14, 180, 0.1, (2.5, None), 0.1),
     # 0.5 m, 0.1x; aperture 1.2 / 16
@@ -118,9 +119,9 @@ CITED = [
     ("panasonic-leica-dg-macro-elmarit-45mm-f2.8", 45, 150, 1, (2.8, 22), 1),
     # minFocusDistance 0.105, maxMagnification 1 (35 mm equivalent 2.0)
     ("panasonic-lumix-g-macro-30mm-f2.8", 30, 105, 1, (2.8, None), 1),
-    # minFocusDistance 0.23, maxMagnification 0.12
-    ("panasonic-leica-dg-vario-elmarit-8-18mm-f2.8-4", 8, 230, None, (2.8, None), 0.12),
-    ("panasonic-leica-dg-vario-elmarit-8-18mm-f2.8-4", 18, 230, None, (4, None), 0.12),
+    # minFocusDistance 0.23, maxMagnification 0.12; Wikipedia: aperture 2.8-4.0 / 22, close-dist 0.23 m, max-mag 0.12
+    ("panasonic-leica-dg-vario-elmarit-8-18mm-f2.8-4", 8, 230, None, (2.8, 22), 0.12),
+    ("panasonic-leica-dg-vario-elmarit-8-18mm-f2.8-4", 18, 230, None, (4, 22), 0.12),
     # minFocusDistance 0.28, maxMagnification 0.14
     ("panasonic-leica-dg-vario-summilux-10-25mm-f1.7", 10, 280, None, (1.7, None), 0.14),
     ("panasonic-leica-dg-vario-summilux-10-25mm-f1.7", 25, 280, None, (1.7, None), 0.14),
@@ -143,9 +144,10 @@ CITED = [
     # 0.3 m at the wide end, 0.5 m at the long end, maxMagnification 0.25
     ("panasonic-lumix-g-vario-14-140mm-f3.5-5.6-ii", 14, 300, None, (3.5, None), 0.25),
     ("panasonic-lumix-g-vario-14-140mm-f3.5-5.6-ii", 140, 500, None, (5.6, None), 0.25),
-    # 0.28 m at the wide end, 0.31 m at the long end, maxMagnification 0.21
-    ("panasonic-leica-dg-vario-summilux-25-50mm-f1.7", 25, 280, None, (1.7, None), 0.21),
-    ("panasonic-leica-dg-vario-summilux-25-50mm-f1.7", 50, 310, None, (1.7, None), 0.21),
+    # 0.28 m at the wide end, 0.31 m at the long end, maxMagnification 0.21; The Phoblographer, Panasonic's table:
+    # Minimum Aperture F16, 0.28m (at focal length 25mm) / 0.31m (at focal length 50mm), 0.21x
+    ("panasonic-leica-dg-vario-summilux-25-50mm-f1.7", 25, 280, None, (1.7, 16), 0.21),
+    ("panasonic-leica-dg-vario-summilux-25-50mm-f1.7", 50, 310, None, (1.7, 16), 0.21),
     # minFocusDistance 0.85, maxMagnification 0.1
     ("panasonic-leica-dg-vario-elmarit-35-100mm-f2.8", 35, 850, None, (2.8, None), 0.1),
     ("panasonic-leica-dg-vario-elmarit-35-100mm-f2.8", 100, 850, None, (2.8, None), 0.1),
@@ -204,15 +206,52 @@ def test_ids_and_aliases_are_unique_within_the_file():
 
 
 # the entries whose figures a second page confirms, and the site that page is on: the Leica DG Macro-Elmarit 45mm
-# (Panasonic's operating instructions), the Nocticron 42.5mm (Wikipedia's data of the lens), the Lumix S 100mm
-# Macro (Miss Numerique), the APO-Summicron-SL 28 (Leica Society International) and 50 (Macfilos, Fstoppers)
+# (Panasonic's operating instructions), the Nocticron 42.5mm and the Vario-Elmarit 8-18mm (Wikipedia's data of the
+# lens), the Lumix G 42.5mm F1.7 (FotografiDigitali), the Vario-Summilux 25-50mm (Panasonic's table as The
+# Phoblographer prints it), the Lumix S 100mm Macro (Miss Numerique), the Lumix S 24mm F1.8 (Expeditions in
+# Light), the APO-Summicron-SL 28 (Leica Society International) and 50 (Macfilos, Fstoppers)
 CONFIRMED = {
     "panasonic-leica-dg-macro-elmarit-45mm-f2.8": "emanuals.org",
     "panasonic-leica-dg-nocticron-42.5mm-f1.2": "en.wikipedia.org/wiki/Nocticron",
+    "panasonic-leica-dg-vario-elmarit-8-18mm-f2.8-4": "en.wikipedia.org/wiki/Panasonic_Leica_DG_Vario-Elmarit_8-18_mm",
+    "panasonic-lumix-g-42.5mm-f1.7": "fotografidigitali.it/articoli/4434",
+    "panasonic-leica-dg-vario-summilux-25-50mm-f1.7": "thephoblographer.com/2021/07/07",
     "panasonic-lumix-s-100mm-f2.8-macro": "missnumerique.com",
+    "panasonic-lumix-s-24mm-f1.8": "expeditionsinlight.com",
     "leica-apo-summicron-sl-28mm-f2-asph": "leicasocietyinternational.org",
     "leica-apo-summicron-sl-50mm-f2-asph": "fstoppers.com",
 }
+
+# approximate entries of which a page confirms some figures, not all: the site named in `source`, the closest focus
+# (mm at each focal length) and the maximum magnification it prints (None where it prints none), and the figure the
+# entry's notes must still name as unconfirmed. The Leica DG Summilux 15mm (i-kyon1521.com: 最短撮影距離: 20cm), the
+# Vario-Elmarit 12-35mm (The Phoblographer: 0.15m on the wide end and 0.25 on the longer end; nothing at 17 mm), the
+# M.Zuiko 300mm (ayton.id.au: close focus of only 1.4m), the Lumix S PRO 24-70mm (Le Monde de la Photo: 37 cm,
+# quelle que soit la focale), the Lumix S PRO 50mm (Les Numériques: Rapport de reproduction 0.15 x)
+PARTLY_CONFIRMED = {
+    "panasonic-leica-dg-summilux-15mm-f1.7": ("i-kyon1521.com", {15: 200}, None, "maximum magnification 0.1x"),
+    "panasonic-leica-dg-vario-elmarit-12-35mm-f2.8": ("thephoblographer.com/2022/12/14", {12: 150, 35: 250}, None,
+                                                      "the 17 mm row"),
+    "om-m-zuiko-300mm-f4-is-pro": ("ayton.id.au", {300: 1400}, None, "maximum magnification 0.24x"),
+    "panasonic-lumix-s-pro-24-70mm-f2.8": ("lemondedelaphoto.com", {24: 370, 70: 370}, None, "maximum magnification"),
+    "panasonic-lumix-s-pro-50mm-f1.4": ("lesnumeriques.com", {}, 0.15, "closest focus 0.44 m"),
+}
+
+
+@pytest.mark.parametrize(("lens_id", "page", "focus", "magnification", "open_figure"),
+                         [(k, *v) for k, v in sorted(PARTLY_CONFIRMED.items())])
+def test_a_partly_confirmed_entry_names_its_page_and_what_is_still_open(lens_id, page, focus, magnification,
+                                                                        open_figure):
+    record = record_of(RECORDS, lens_id)
+    assert page in record["source"]
+    rows = {r["focal_length_mm"]: r["min_focus_mm"] for r in record.get("close_focus", [])} or {
+        record["focal_length_mm"]: record["min_focus_mm"]}
+    for focal, distance in focus.items():
+        assert rows[focal] == distance, (lens_id, focal)
+    if magnification is not None:
+        assert record["max_magnification"] == magnification
+    assert record["approximate"] is True
+    assert open_figure in " ".join(record["notes"].split()), lens_id
 
 
 def test_a_figure_from_one_dataset_is_approximate_and_a_confirmed_one_is_not():
@@ -275,3 +314,17 @@ def test_dof_refuses_closer_than_the_published_closest_focus():
     result = run("dof", "--lens", "panasonic-leica-dg-nocticron-42.5mm-f1.2", "-N", "1.2", "-s", "0.4m")
     assert result.exit_code == 2
     assert "0.5 m" in result.output
+
+
+def test_the_25_50mm_places_no_magnification_at_its_long_end_since_unit_focusing_would_exceed_it():
+    # Panasonic's table puts 0.21x at 50 mm and 0.31 m; a 50 mm lens focused as a unit at 0.31 m from the sensor
+    # (D = f (2 + m + 1/m), the root below 1) would reach about 0.25x, more than the published maximum, so the lens
+    # focuses internally and the row carries no magnification: the model is capped at 0.21x there.
+    k = 310.0 / 50.0 - 2.0
+    unit = (k - math.sqrt(k * k - 4.0)) / 2.0
+    assert unit == pytest.approx(0.2534, abs=5e-4) and unit > 0.21
+    record = record_of(RECORDS, "panasonic-leica-dg-vario-summilux-25-50mm-f1.7")
+    assert all("max_magnification" not in row for row in record["close_focus"])
+    lens = load_db().lens("panasonic-leica-dg-vario-summilux-25-50mm-f1.7")
+    m, _ = internal_focus_at_distance(focus_model(lens, 50.0), 310.0)
+    assert m == pytest.approx(0.21, rel=1e-6)

@@ -179,17 +179,18 @@ LENS_FINDER = {
 # Closest focus (mm, at each focal length given) printed by a page or a second source, each named in the entry's
 # `source`: xov.jp (SEL50F14Z 45cm, SEL55F18Z 50cm), Le Monde de la Photo (the Zeiss 35 mm f/1,4 and f/2,8: 30 and
 # 35 cm), videoaktiv.tv (16 Zentimetern), Photo Review (30 cm at 20mm, 25 cm at 70mm), the lens finder's comments
-# (最短撮影距離0.2m, 約9.5cm), chatgpt4000.com (FE50mm F1.2 GM: 0.4m)
+# (最短撮影距離0.2m, 約9.5cm), chatgpt4000.com (FE50mm F1.2 GM: 0.4m), Sony's support article 00020695 (the SEL16F28's
+# inscription 0.24m/0.8ft), Le Monde de la Photo's test of the Zeiss E 24 mm (16 cm seulement)
 CLOSEST_FOCUS_SECOND_SOURCE = {
-    "sony-fe-50mm-f1.2-gm": {50: 400},
+    "sony-fe-50mm-f1.2-gm": {50: 400}, "sony-e-16mm-f2.8": {16: 240}, "sony-e-24mm-f1.8-za": {24: 160},
     "sony-fe-35mm-f1.4-za": {35: 300}, "sony-fe-35mm-f2.8-za": {35: 350},
     "sony-fe-50mm-f1.4-za": {50: 450}, "sony-fe-55mm-f1.8-za": {55: 500}, "sony-fe-50mm-f2.8-macro": {50: 160},
     "sony-fe-20-70mm-f4-g": {20: 300, 70: 250}, "sony-e-20mm-f2.8": {20: 200}, "sony-e-30mm-f3.5-macro": {30: 95},
 }
 # A magnification a page prints: photonique.org, 0.5x across the entire zoom range; ino.lomo.jp, SEL2070G 0.39倍;
-# chatgpt4000.com, FE50mm F1.2 GM 0.17倍
+# chatgpt4000.com, FE50mm F1.2 GM 0.17倍; Focus Numérique, FE 50 mm f/2,8 Macro: le rapport macro 1:1
 MAGNIFICATION_SECOND_SOURCE = {"sony-fe-70-200mm-f4-macro-g-oss-ii": 0.5, "sony-fe-20-70mm-f4-g": 0.39,
-                               "sony-fe-50mm-f1.2-gm": 0.17}
+                               "sony-fe-50mm-f1.2-gm": 0.17, "sony-fe-50mm-f2.8-macro": 1}
 
 # Sony's manual-focus closest focus (mm), closer than the autofocus one the entry keeps (isamu's notes: MF時)
 MANUAL_FOCUS = {
@@ -232,6 +233,20 @@ def test_second_sources_agree_and_only_doubly_sourced_entries_are_confirmed():
         assert record.get("approximate", False) is not confirmed, lens_id
         if not confirmed:
             assert "from one dataset only" in " ".join(record["notes"].split()), lens_id
+
+
+# the page each second closest-focus figure above is quoted from, named in the entry's `source`
+SECOND_SOURCE_PAGE = {"sony-e-16mm-f2.8": "sony.com/electronics/support/articles/00020695",
+                      "sony-e-24mm-f1.8-za": "lemondedelaphoto.com/Prise-en-mains,6217.html",
+                      "sony-fe-50mm-f1.2-gm": "chatgpt4000.com", "sony-fe-50mm-f2.8-macro": "videoaktiv.tv"}
+# ... and each second magnification's page
+SECOND_MAGNIFICATION_PAGE = {"sony-fe-50mm-f2.8-macro": "focus-numerique.com/test-3656",
+                             "sony-fe-50mm-f1.2-gm": "chatgpt4000.com"}
+
+
+@pytest.mark.parametrize(("lens_id", "page"), sorted(SECOND_SOURCE_PAGE.items()) + sorted(SECOND_MAGNIFICATION_PAGE.items()))
+def test_the_second_source_is_named(lens_id, page):
+    assert page in record_of(RECORDS, lens_id)["source"]
 
 
 @pytest.mark.parametrize(("lens_id", "manual"), sorted(MANUAL_FOCUS.items()))
