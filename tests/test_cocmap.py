@@ -88,6 +88,20 @@ def test_synthetic_ramp_map_and_summary_against_the_analytic_coc(tmp_path) -> No
     assert row["near_limit_mm"] <= row["sharp_near_mm"] <= row["sharp_far_mm"] <= row["far_limit_mm"]
 
 
+@pytest.mark.parametrize("p", [0.5, 2.0])
+def test_pupil_magnification_typed_moves_the_limits_as_the_thick_rung_does(tmp_path, p: float) -> None:
+    # --pupil-mag reaches the physical map: the summary's limits are the thick rung's, from the entrance pupil,
+    # at x_f = (u − f) + f/P (the deep command-line fuzz found the option raising a TypeError here)
+    depth = _exr(tmp_path / "ramp.exr", {"Z": _ramp()})
+    result = run("cocmap", depth, "-o", str(tmp_path / "coc.npy"), "-f", "50", "-N", "2.8", "-s", "3m", "--sensor",
+                 "36x24", "--coc", "0.03", "--pupil-mag", repr(p), "--format", "json")
+    assert result.exit_code == 0, result.output
+    row = json.loads(result.stdout)[0]
+    x_f = pupil_focus_mm(focus_mm=3000.0, focal_length_mm=50.0, pupil_magnification=p)
+    limits = thick_dof(50.0, 2.8, 0.03, x_f, pupil_magnification=p, distance_from="entrance_pupil")
+    assert (row["near_limit_mm"], row["far_limit_mm"]) == pytest.approx((limits.near_mm, limits.far_mm), rel=1e-12)
+
+
 # --- Blender's Defocus node, as documented ------------------------------------------------------------------------
 
 def test_blender_f_stop_128_is_perfect_focus_and_half_doubles_the_radius() -> None:

@@ -66,7 +66,7 @@ def cocmap(ctx: click.Context, depth, output, mode, distance, f_number, focal_le
 
     chosen = resolve_sensor(ctx, sensor, crop, preset_files)
     cocs, _ = resolve_coc(ctx, list(coc), coc_rule, chosen, pixel_pitch)
-    p, _, _ = pupil_and_hiatus(ctx, pupil_mag[0] if pupil_mag else None, None)
+    p, _, _ = pupil_and_hiatus(ctx, pupil_mag, None)
     lens = ctx.meta.get(LENS)
     apertures = f_numbers(f_number, False)
     f = single(ctx, focal_length, lens.focal_min_mm if lens is not None and lens.focal_min_mm == lens.focal_max_mm
