@@ -330,6 +330,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("pentax-smc-da-star-300mm-f4-ed-if-sdm", 300.0),
     # viltrox-samyang-lenses.yaml, internal focusing: 0.35 m with 0.12x implies about 33 mm (Samyang AF 35mm F2.8 FE)
     ("samyang-af-35mm-f2.8-fe", 35.0),
+    # more-current-lenses.yaml, internal focusing: 0.37 m with 0.17x implies about 46 mm (NIKKOR Z 50mm f/1.4)
+    ("nikon-z-50mm-f1.4", 50.0),
 }
 
 
