@@ -40,9 +40,6 @@ CITED = [
     # minFocusDistance 0.25, maxMagnification 0.1 at the long end, 0.05 at the wide end (Wide端0.05倍)
     ("om-m-zuiko-9-18mm-f4-5.6-ii", 9, 250, 0.05, (4, None), 0.1),
     ("om-m-zuiko-9-18mm-f4-5.6-ii", 18, 250, 0.1, (5.6, None), 0.1),
-    # minFocusDistance 0.12, maxMagnification 0.25
-    ("om-m-zuiko-12-45mm-f4-pro", 12, 120, None, (4, None), 0.25),
-    ("om-m-zuiko-12-45mm-f4-pro", 45, 120, None, (4, None), 0.25),
     # minFocusDistance 0.5, maxMagnification 0.22
     ("om-m-zuiko-14-150mm-f4-5.6-ii", 14, 500, None, (4, None), 0.22),
     ("om-m-zuiko-14-150mm-f4-5.6-ii", 150, 500, None, (5.6, None), 0.22),
