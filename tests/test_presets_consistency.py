@@ -231,7 +231,7 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-ef-70-200mm-f2.8l-is-iii-usm", 200.0), ("canon-ef-s-18-55mm-f3.5-5.6-is-stm", 55.0),
     ("nikon-z-24-70mm-f4-s", 70.0), ("nikon-z-70-200mm-f2.8-vr-s", 200.0), ("fujifilm-xf18-55mm-f2.8-4-r-lm-ois", 55.0),
     ("olympus-m-zuiko-12-40mm-f2.8-pro", 40.0), ("tamron-28-75mm-f2.8-di-iii-rxd", 75.0),
-    ("canon-rf-24-105mm-f4l-is-usm", 105.0), ("nikon-z-24-70mm-f2.8-s", 70.0),
+    ("nikon-z-24-70mm-f2.8-s", 70.0),
     ("nikon-z-180-600mm-f5.6-6.3-vr", 600.0),
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 600.0),
     ("canon-rf-24-105mm-f2.8l-is-usm-z", 105.0), ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50.0),
@@ -511,6 +511,11 @@ CITED_CLOSE_FOCUS = [
     # isamu/lens-database sony/e/fe-zoom.js (Sony Japan's page): 最短撮影距離0.4m(ワイド端)/望遠端0.82m, 0.3;
     # LensVisualizer: 0.40 m at 70 mm and 0.82 m at 200 mm, 0.30x (on no row).
     ("sony-fe-70-200mm-f2.8-gm-oss-ii", 70, 400, None), ("sony-fe-70-200mm-f2.8-gm-oss-ii", 200, 820, None),
+    # polynomial/camera's transcriptions of Canon Japan's pages: 最短撮影距離 0.45m, 0.24倍 (on no row); 0.7m,
+    # 0.23倍（200mm時）; 0.35m, 0.5倍.
+    ("canon-rf-24-105mm-f4l-is-usm", 24, 450, None), ("canon-rf-24-105mm-f4l-is-usm", 105, 450, None),
+    ("canon-rf-70-200mm-f2.8l-is-usm", 70, 700, None), ("canon-rf-70-200mm-f2.8l-is-usm", 200, 700, 0.23),
+    ("canon-rf-85mm-f2-macro-is-stm", 85, 350, 0.5),
     # LensVisualizer (FUJIFILM's specifications): 0.30 m from the sensor plane, 0.15x.
     ("fujifilm-xf33mm-f1.4-r-lm-wr", 33, 300, 0.15),
     # LensVisualizer (FUJIFILM's published figures) and photosanpo.com: 0.50 m from the focal plane; 0.14x.
@@ -637,7 +642,24 @@ def test_thin_lens_magnification_known_values():
 CITED_LARGEST_MAGNIFICATION = [
     # isamu/lens-database sony/e/fe-zoom.js (Sony Japan's page): maxMagnification 0.3; LensVisualizer: 0.30x.
     ("sony-fe-70-200mm-f2.8-gm-oss-ii", 0.3),
+    # polynomial/camera's transcription of Canon Japan's page: 最大撮影倍率 0.24倍.
+    ("canon-rf-24-105mm-f4l-is-usm", 0.24),
 ]
+
+
+# (lens, smallest aperture) as the cited transcription of the maker's page prints it (最小絞り).
+CITED_SMALLEST_APERTURE = [
+    ("canon-rf-24-105mm-f4l-is-usm", 22), ("canon-rf-70-200mm-f2.8l-is-usm", 32),
+    ("canon-rf-85mm-f2-macro-is-stm", 29),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "smallest"), CITED_SMALLEST_APERTURE)
+def test_smallest_aperture_against_the_cited_pages(lens_id, smallest):
+    record = next(r for r in lens_records() if r["id"] == lens_id)
+    assert not record.get("approximate"), lens_id
+    assert record["f_number_max"] == smallest
+    assert load_db().lens(lens_id).f_number_max == smallest
 
 
 @pytest.mark.parametrize(("lens_id", "largest"), CITED_LARGEST_MAGNIFICATION)
