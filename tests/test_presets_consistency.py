@@ -516,6 +516,10 @@ CITED_CLOSE_FOCUS = [
     ("canon-rf-24-105mm-f4l-is-usm", 24, 450, None), ("canon-rf-24-105mm-f4l-is-usm", 105, 450, None),
     ("canon-rf-70-200mm-f2.8l-is-usm", 70, 700, None), ("canon-rf-70-200mm-f2.8l-is-usm", 200, 700, 0.23),
     ("canon-rf-85mm-f2-macro-is-stm", 85, 350, 0.5),
+    # LensVisualizer (Sony's figures) and isamu/lens-database sony/e/fe-prime.js: 0.24 m, 0.17x.
+    ("sony-fe-24mm-f1.4-gm", 24, 240, 0.17),
+    # LensVisualizer (Fujifilm's specification): 0.50 m, 0.17x.
+    ("fujifilm-gf63mm-f2.8-r-wr", 63, 500, 0.17),
     # LensVisualizer (FUJIFILM's specifications): 0.30 m from the sensor plane, 0.15x.
     ("fujifilm-xf33mm-f1.4-r-lm-wr", 33, 300, 0.15),
     # LensVisualizer (FUJIFILM's published figures) and photosanpo.com: 0.50 m from the focal plane; 0.14x.
@@ -651,6 +655,8 @@ CITED_LARGEST_MAGNIFICATION = [
 CITED_SMALLEST_APERTURE = [
     ("canon-rf-24-105mm-f4l-is-usm", 22), ("canon-rf-70-200mm-f2.8l-is-usm", 32),
     ("canon-rf-85mm-f2-macro-is-stm", 29),
+    # sonyalphalab.com's basic specs: aperture range f/1.4 - f/16.
+    ("sony-fe-24mm-f1.4-gm", 16),
 ]
 
 
