@@ -518,8 +518,8 @@ CITED_CLOSE_FOCUS = [
     ("canon-rf-85mm-f2-macro-is-stm", 85, 350, 0.5),
     # LensVisualizer (Sony's figures) and isamu/lens-database sony/e/fe-prime.js: 0.24 m, 0.17x.
     ("sony-fe-24mm-f1.4-gm", 24, 240, 0.17),
-    # LensVisualizer (Fujifilm's specification): 0.50 m, 0.17x.
-    ("fujifilm-gf63mm-f2.8-r-wr", 63, 500, 0.17),
+    # LensVisualizer (Fujifilm's specifications): GF63mm 0.50 m and 0.17x; GF110mm MFD = 0.9 m, 0.16x.
+    ("fujifilm-gf63mm-f2.8-r-wr", 63, 500, 0.17), ("fujifilm-gf110mm-f2-r-lm-wr", 110, 900, 0.16),
     # LensVisualizer (FUJIFILM's specifications): 0.30 m from the sensor plane, 0.15x.
     ("fujifilm-xf33mm-f1.4-r-lm-wr", 33, 300, 0.15),
     # LensVisualizer (FUJIFILM's published figures) and photosanpo.com: 0.50 m from the focal plane; 0.14x.
