@@ -88,7 +88,8 @@ CITED = [
     # fujifilm/x/xc.js: 0.13, 0.24
     ("fujifilm-xc15-45mm-f3.5-5.6-ois-pz", 15, 130, None, (3.5, None), 0.24),
     ("fujifilm-xc15-45mm-f3.5-5.6-ois-pz", 45, 130, None, (5.6, None), 0.24),
-    # fujifilm/x/xc.js: 1.1, 0.2; seriouscompacts.com: 1.1 m for .20x
+    # fujifilm/x/xc.js: 1.1, 0.2; seriouscompacts.com: 1.1 m for .20x; LensVisualizer (Fujifilm's specifications):
+    # 1.1 m is the retail minimum focus distance, the retail 0.2x close-up magnification
     ("fujifilm-xc50-230mm-f4.5-6.7-ois-ii", 50, 1100, None, (4.5, None), 0.2),
     ("fujifilm-xc50-230mm-f4.5-6.7-ois-ii", 230, 1100, None, (6.7, None), 0.2),
     # fujifilm/x/xc.js: 0.2, 0.25
@@ -125,7 +126,7 @@ CITED = [
 # transcribing the maker's pages); every other entry has a figure that only one source gives, and is approximate
 CONFIRMED = {"nikon-z-24-70mm-f2.8-s-ii", "nikon-z-70-200mm-f2.8-vr-s-ii", "fujifilm-xf60mm-f2.4-r-macro",
              "fujifilm-xf50mm-f2-r-wr", "fujifilm-xf30mm-f2.8-r-lm-wr-macro", "fujifilm-xf23mm-f2.8-r-wr",
-             "fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois"}
+             "fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", "fujifilm-xc50-230mm-f4.5-6.7-ois-ii"}
 
 
 def test_every_entry_is_checked_against_its_sources():
