@@ -69,13 +69,16 @@ CITED = [
     ("nikon-z-85mm-f1.2-s", 85, 850, 0.11, (1.2, None), 0.11),
     # fujifilm/x/prime.js: 0.267, 0.5; LensVisualizer: 0.5x at 26.7 cm; Admiring Light and kstphotography: 1:2 (0.5)
     ("fujifilm-xf60mm-f2.4-r-macro", 60, 267, 0.5, (2.4, None), 0.5),
-    # fujifilm/x/prime.js: 0.39, 0.15; danielm.photo.blog: 39cm
+    # fujifilm/x/prime.js: 0.39, 0.15; danielm.photo.blog: 39cm; LensVisualizer (Fujifilm's specification page):
+    # 0.39 m minimum focus, and 0.15x maximum magnification
     ("fujifilm-xf50mm-f2-r-wr", 50, 390, 0.15, (2, None), 0.15),
-    # fujifilm/x/prime.js: 0.1, 1
+    # fujifilm/x/prime.js: 0.1, 1; LensVisualizer (Fujifilm's specifications): 1.0x maximum magnification and a
+    # 0.10 m minimum focus distance measured from the focal plane
     ("fujifilm-xf30mm-f2.8-r-lm-wr-macro", 30, 100, 1.0, (2.8, None), 1.0),
     # fujifilm/x/prime.js: 2.75, 0.2
     ("fujifilm-xf500mm-f5.6-r-lm-ois-wr", 500, 2750, 0.2, (5.6, None), 0.2),
-    # fujifilm/x/prime.js: 0.2, 0.15
+    # fujifilm/x/prime.js: 0.2, 0.15; LensVisualizer (Fujifilm's published figures): 0.20 m minimum focus from the
+    # focal plane, 0.15x maximum magnification
     ("fujifilm-xf23mm-f2.8-r-wr", 23, 200, 0.15, (2.8, None), 0.15),
     # LensVisualizer (Fujifilm's page): 1.75 m, 0.19x at the telephoto end; fujifilm/x/zoom.js: 1.75
     ("fujifilm-xf100-400mm-f4.5-5.6-r-lm-ois-wr", 100, 1750, None, (4.5, None), 0.19),
@@ -85,7 +88,8 @@ CITED = [
     # fujifilm/x/xc.js: 0.13, 0.24
     ("fujifilm-xc15-45mm-f3.5-5.6-ois-pz", 15, 130, None, (3.5, None), 0.24),
     ("fujifilm-xc15-45mm-f3.5-5.6-ois-pz", 45, 130, None, (5.6, None), 0.24),
-    # fujifilm/x/xc.js: 1.1, 0.2; seriouscompacts.com: 1.1 m for .20x
+    # fujifilm/x/xc.js: 1.1, 0.2; seriouscompacts.com: 1.1 m for .20x; LensVisualizer (Fujifilm's specifications):
+    # 1.1 m is the retail minimum focus distance, the retail 0.2x close-up magnification
     ("fujifilm-xc50-230mm-f4.5-6.7-ois-ii", 50, 1100, None, (4.5, None), 0.2),
     ("fujifilm-xc50-230mm-f4.5-6.7-ois-ii", 230, 1100, None, (6.7, None), 0.2),
     # fujifilm/x/xc.js: 0.2, 0.25
@@ -105,9 +109,10 @@ CITED = [
     # LensVisualizer (Fujifilm's pages): 0.6 m, 0.2x at the tele end; fujifilm/x/zoom.js: 0.6
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 18, 600, None, (4, None), 0.2),
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120, 600, 0.2, (4, None), 0.2),
-    # fujifilm/x/zoom.js: 1.1; seriouscompacts.com: 1.1m for .18x
+    # fujifilm/x/zoom.js: 1.1; seriouscompacts.com: 1.1m for .18x; LensVisualizer (FUJIFILM's marketed
+    # specification): Minimum focus distance 1.1 m, Maximum magnification 0.18x at tele
     ("fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", 55, 1100, None, (3.5, None), 0.18),
-    ("fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", 200, 1100, None, (4.8, None), 0.18),
+    ("fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", 200, 1100, 0.18, (4.8, None), 0.18),
     # LensVisualizer (Fujifilm's specifications): 0.45 m, 0.14x; fujifilm/g/index.js: 0.45
     ("fujifilm-gf45mm-f2.8-r-wr", 45, 450, 0.14, (2.8, None), 0.14),
     # LensVisualizer (Fujifilm's page): 0.35 m, 0.28x at the telephoto end; fujifilm/g/index.js: 0.35
@@ -119,7 +124,9 @@ CITED = [
 
 # the entries every figure of which two sources give (a page printing the maker's specification, or two datasets
 # transcribing the maker's pages); every other entry has a figure that only one source gives, and is approximate
-CONFIRMED = {"nikon-z-24-70mm-f2.8-s-ii", "nikon-z-70-200mm-f2.8-vr-s-ii", "fujifilm-xf60mm-f2.4-r-macro"}
+CONFIRMED = {"nikon-z-24-70mm-f2.8-s-ii", "nikon-z-70-200mm-f2.8-vr-s-ii", "fujifilm-xf60mm-f2.4-r-macro",
+             "fujifilm-xf50mm-f2-r-wr", "fujifilm-xf30mm-f2.8-r-lm-wr-macro", "fujifilm-xf23mm-f2.8-r-wr",
+             "fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", "fujifilm-xc50-230mm-f4.5-6.7-ois-ii"}
 
 
 def test_every_entry_is_checked_against_its_sources():

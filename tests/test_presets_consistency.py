@@ -16,7 +16,9 @@ import yaml
 from conftest import point_xdg_at, presets_home
 from test_phones_2026 import PHONES_2026
 
+from camtool.geometry.closeup import internal_focus_at_distance
 from camtool.presets import load_db, paths
+from camtool.presets.focusing import focus_model
 from camtool.presets.loader import read_file
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
@@ -229,8 +231,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-ef-70-200mm-f2.8l-is-iii-usm", 200.0), ("canon-ef-s-18-55mm-f3.5-5.6-is-stm", 55.0),
     ("nikon-z-24-70mm-f4-s", 70.0), ("nikon-z-70-200mm-f2.8-vr-s", 200.0), ("fujifilm-xf18-55mm-f2.8-4-r-lm-ois", 55.0),
     ("olympus-m-zuiko-12-40mm-f2.8-pro", 40.0), ("tamron-28-75mm-f2.8-di-iii-rxd", 75.0),
-    ("canon-rf-24-105mm-f4l-is-usm", 105.0), ("nikon-z-24-70mm-f2.8-s", 70.0),
-    ("sony-fe-70-200mm-f2.8-gm-oss-ii", 200.0), ("nikon-z-180-600mm-f5.6-6.3-vr", 600.0),
+    ("nikon-z-24-70mm-f2.8-s", 70.0),
+    ("nikon-z-180-600mm-f5.6-6.3-vr", 600.0),
     ("sony-fe-200-600mm-f5.6-6.3-g-oss", 600.0),
     ("canon-rf-24-105mm-f2.8l-is-usm-z", 105.0), ("sigma-18-50mm-f2.8-dc-dn-contemporary", 50.0),
     ("sony-fe-28-70mm-f2-gm", 70.0), ("tamron-70-180mm-f2.8-di-iii-vxd", 180.0),
@@ -324,6 +326,8 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("fujifilm-xf18-120mm-f4-lm-pz-wr", 120.0),
     ("fujifilm-gf100-200mm-f5.6-r-lm-ois-wr", 100.0), ("fujifilm-gf35-70mm-f4.5-5.6-wr", 70.0),
     ("fujifilm-gf500mm-f5.6-r-lm-ois-wr", 500.0),
+    # 1.1 m with 0.18x at the long end implies about 142 mm there (XF55-200mm, internal focusing)
+    ("fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", 200.0),
     # medium-format-pentax-leica-lenses.yaml, internal focusing: 0.7 m with 0.12x, 0.85 m with 0.12x and 1.4 m with
     # 0.24x imply about 67, 81 and 219 mm (HD PENTAX-DA 70mm Limited, D FA★85mm, smc DA★300mm [IF])
     ("pentax-hd-da-70mm-f2.4-limited", 70.0), ("pentax-hd-d-fa-star-85mm-f1.4-ed-sdm-aw", 85.0),
@@ -506,6 +510,22 @@ CITED_CLOSE_FOCUS = [
     ("nikon-z-dx-50-250mm-f4.5-6.3-vr", 50, 500, None), ("nikon-z-dx-50-250mm-f4.5-6.3-vr", 250, 1000, None),
     # Fujifilm's 'XF16mm' story: 15 cm from the sensor; 1:0.21.
     ("fujifilm-xf16mm-f1.4-r-wr", 16, 150, 0.21),
+    # isamu/lens-database sony/e/fe-zoom.js (Sony Japan's page): 最短撮影距離0.4m(ワイド端)/望遠端0.82m, 0.3;
+    # LensVisualizer: 0.40 m at 70 mm and 0.82 m at 200 mm, 0.30x (on no row).
+    ("sony-fe-70-200mm-f2.8-gm-oss-ii", 70, 400, None), ("sony-fe-70-200mm-f2.8-gm-oss-ii", 200, 820, None),
+    # polynomial/camera's transcriptions of Canon Japan's pages: 最短撮影距離 0.45m, 0.24倍 (on no row); 0.7m,
+    # 0.23倍（200mm時）; 0.35m, 0.5倍.
+    ("canon-rf-24-105mm-f4l-is-usm", 24, 450, None), ("canon-rf-24-105mm-f4l-is-usm", 105, 450, None),
+    ("canon-rf-70-200mm-f2.8l-is-usm", 70, 700, None), ("canon-rf-70-200mm-f2.8l-is-usm", 200, 700, 0.23),
+    ("canon-rf-85mm-f2-macro-is-stm", 85, 350, 0.5),
+    # LensVisualizer (Sony's figures) and isamu/lens-database sony/e/fe-prime.js: 0.24 m, 0.17x.
+    ("sony-fe-24mm-f1.4-gm", 24, 240, 0.17),
+    # LensVisualizer (Fujifilm's specifications): GF63mm 0.50 m and 0.17x; GF110mm MFD = 0.9 m, 0.16x.
+    ("fujifilm-gf63mm-f2.8-r-wr", 63, 500, 0.17), ("fujifilm-gf110mm-f2-r-lm-wr", 110, 900, 0.16),
+    # LensVisualizer (FUJIFILM's specifications): 0.30 m from the sensor plane, 0.15x.
+    ("fujifilm-xf33mm-f1.4-r-lm-wr", 33, 300, 0.15),
+    # LensVisualizer (FUJIFILM's published figures) and photosanpo.com: 0.50 m from the focal plane; 0.14x.
+    ("fujifilm-xf56mm-f1.2-r-wr", 56, 500, 0.14),
 ]
 
 
@@ -568,6 +588,8 @@ CITED_F_NUMBER_MAX = [
     # Photography Life (RF 24mm F1.8 Macro): f/22; sonyalphalab.com (FE 20mm G: f/22, FE 24mm GM: f/16).
     ("nikon-z-26mm-f2.8", 16), ("nikon-z-135mm-f1.8-s-plena", 16), ("nikon-z-28-135mm-f4-pz", 22),
     ("canon-rf-24mm-f1.8-macro-is-stm", 22), ("sony-fe-20mm-f1.8-g", 22), ("sony-fe-24mm-f1.4-gm", 16),
+    # polynomial/camera's transcriptions of Canon Japan's pages: 最小絞り 22, 32 and 29.
+    ("canon-rf-24-105mm-f4l-is-usm", 22), ("canon-rf-70-200mm-f2.8l-is-usm", 32), ("canon-rf-85mm-f2-macro-is-stm", 29),
 ]
 
 
@@ -621,3 +643,25 @@ def test_thin_lens_magnification_known_values():
     assert thin_lens_magnification(50, 200) == pytest.approx(1.0)
     assert thin_lens_magnification(50, 2500) == pytest.approx(0.020842, rel=1e-4)
     assert thin_lens_magnification(100, 300) is None
+
+
+# (lens, largest magnification) where the cited sources give the zoom's maximum without placing it at a focal
+# length, so no close_focus row above carries it: the entry's max_magnification is that figure.
+CITED_LARGEST_MAGNIFICATION = [
+    # isamu/lens-database sony/e/fe-zoom.js (Sony Japan's page): maxMagnification 0.3; LensVisualizer: 0.30x.
+    ("sony-fe-70-200mm-f2.8-gm-oss-ii", 0.3),
+    # polynomial/camera's transcription of Canon Japan's page: 最大撮影倍率 0.24倍.
+    ("canon-rf-24-105mm-f4l-is-usm", 0.24),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "largest"), CITED_LARGEST_MAGNIFICATION)
+def test_largest_magnification_against_the_cited_pages(lens_id, largest):
+    record = next(r for r in lens_records() if r["id"] == lens_id)
+    assert not record.get("approximate"), lens_id
+    assert record["max_magnification"] == largest
+    assert all("max_magnification" not in row for row in record["close_focus"])
+    lens = load_db().lens(lens_id)
+    for focal in (lens.focal_min_mm, lens.focal_max_mm):
+        model = focus_model(lens, focal)
+        assert internal_focus_at_distance(model, model.min_focus_mm)[0] <= largest * (1 + 1e-9)
