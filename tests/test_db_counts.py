@@ -96,3 +96,15 @@ def test_lens_db_readme_counts_the_kinds_of_body():
     compacts = sum(1 for c in cameras if c.get("category") not in ("phone", "cine") and c.get("mount") == "fixed lens")
     assert tuple(map(int, match.groups())) == (len(cameras), len(cameras) - phones - cine - compacts, compacts, phones,
                                                cine)
+
+
+def test_lens_db_readme_counts_the_smallest_apertures():
+    text = " ".join((DB / "README.md").read_text(encoding="utf-8").split())
+    match = re.search(r"The smallest aperture \(`f_number_max`\) is given for (\d+) lens entries.*?\((\d+) entries carry "
+                      r"\"f_number_max not found\"", text)
+    assert match, "lens_db/README.md no longer counts the smallest apertures"
+    lenses = [lens for path in DB.glob("*.yaml")
+              for lens in (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("lenses") or []]
+    given = sum(1 for lens in lenses if lens.get("f_number_max"))
+    missing = sum(1 for lens in lenses if "f_number_max not found" in " ".join(str(lens.get("notes", "")).split()))
+    assert (int(match.group(1)), int(match.group(2))) == (given, missing)
