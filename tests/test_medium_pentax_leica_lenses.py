@@ -39,15 +39,17 @@ CITED = [
     ("pentax-hd-da-21mm-f3.2-al-limited", 21, 200, 0.17, (3.2, 22), 0.17),
     # HD D FA 21mm Limited: 0.18, 0.26
     ("pentax-hd-d-fa-21mm-f2.4-ed-limited-dc-wr", 21, 180, 0.26, (2.4, None), 0.26),
-    # HD FA 31mm Limited: 0.3, 0.16
+    # HD FA 31mm Limited: 0.3, 0.16; blue-san.com (smc FA 31, the HD keeping its optical design): 最短撮影距離 30cm
+    # (撮影倍率0.16倍)
     ("pentax-hd-fa-31mm-f1.8-limited", 31, 300, 0.16, (1.8, None), 0.16),
     # HD FA 35mm F2: 0.3, 0.17
     ("pentax-hd-fa-35mm-f2", 35, 300, 0.17, (2, None), 0.17),
-    # smc DA 35mm F2.4: 0.3, 0.17
+    # smc DA 35mm F2.4: 0.3, 0.17; erphotoreview.com: a minimum focus distance of 0.3m, a magnification of about 0.17x
     ("pentax-smc-da-35mm-f2.4-al", 35, 300, 0.17, (2.4, None), 0.17),
     # HD DA 40mm Limited: 0.4, 0.13
     ("pentax-hd-da-40mm-f2.8-limited", 40, 400, 0.13, (2.8, None), 0.13),
-    # HD FA 43mm Limited: 0.45, 0.12
+    # HD FA 43mm Limited: 0.45, 0.12; edcylw.amebaownd.com (smc FA 43, the HD changing coatings and blades per
+    # ephotozine): 最短撮影距離 0.45m, 最大撮影倍率 0.12倍
     ("pentax-hd-fa-43mm-f1.9-limited", 43, 450, 0.12, (1.9, None), 0.12),
     # HD D FA★50mm: 0.4, 0.18
     ("pentax-hd-d-fa-star-50mm-f1.4-sdm-aw", 50, 400, 0.18, (1.4, None), 0.18),
@@ -57,16 +59,20 @@ CITED = [
     ("pentax-smc-da-50mm-f1.8", 50, 450, 0.15, (1.8, 22), 0.15),
     # HD DA 70mm Limited: 0.7, 0.12
     ("pentax-hd-da-70mm-f2.4-limited", 70, 700, 0.12, (2.4, None), 0.12),
-    # HD FA 77mm Limited: 0.7, 0.14
+    # HD FA 77mm Limited: 0.7, 0.14; mor-s-photo (smc FA 77 catalogue values, the HD its successor with HD coating):
+    # 最短撮影距離 0.7m, 最大撮影倍率 0.14倍; Wikipedia (kiwix copy): 0.70 metres, 0.14; blue-san.com: 0.7m, 0.14倍
     ("pentax-hd-fa-77mm-f1.8-limited", 77, 700, 0.14, (1.8, None), 0.14),
     # HD D FA★85mm: 0.85, 0.12
     ("pentax-hd-d-fa-star-85mm-f1.4-ed-sdm-aw", 85, 850, 0.12, (1.4, None), 0.12),
     # smc DA★300mm: 1.4, 0.24
     ("pentax-smc-da-star-300mm-f4-ed-if-sdm", 300, 1400, 0.24, (4, None), 0.24),
-    # HD DA 35mm Macro Limited: 0.139, 1 (等倍)
-    ("pentax-hd-da-35mm-f2.8-macro-limited", 35, 139, 1, (2.8, None), 1),
-    # smc D FA MACRO 50mm: 0.195, 1; mor-s-photo (catalogue values): 0.195m, 1.00
-    ("pentax-smc-d-fa-macro-50mm-f2.8", 50, 195, 1, (2.8, None), 1),
+    # HD DA 35mm Macro Limited: 0.139, 1 (等倍); photozone (the smc lens, which northcoastphotographer says the HD
+    # updates in coatings and blades only): min. focus distance 0.139 m (max. magnification ratio 1:1); Ricoh's store
+    # page (ricohimagingstore.com/zanmai/macrolens.html): 最小絞り F22, 最短撮影距離 0.139m, 最大撮影倍率 1.00倍
+    ("pentax-hd-da-35mm-f2.8-macro-limited", 35, 139, 1, (2.8, 22), 1),
+    # smc D FA MACRO 50mm: 0.195, 1; mor-s-photo (catalogue values): 0.195m, 1.00; Ricoh's store page: 最小絞り F32,
+    # 0.195m, 1.00倍
+    ("pentax-smc-d-fa-macro-50mm-f2.8", 50, 195, 1, (2.8, 32), 1),
     # HD D FA MACRO 100mm AW: 0.303, 1
     ("pentax-hd-d-fa-macro-100mm-f2.8-ed-aw", 100, 303, 1, (2.8, None), 1),
     # HD DA★11-18mm: 0.3, 0.1
@@ -87,7 +93,7 @@ CITED = [
     # smc DA 18-135mm WR: 0.4, 0.24
     ("pentax-smc-da-18-135mm-f3.5-5.6-ed-al-if-dc-wr", 18, 400, None, (3.5, None), 0.24),
     ("pentax-smc-da-18-135mm-f3.5-5.6-ed-al-if-dc-wr", 135, 400, None, (5.6, None), 0.24),
-    # HD DA 20-40mm Limited: 0.28, 0.2; fStop [2.8, 4]
+    # HD DA 20-40mm Limited: 0.28, 0.2; fStop [2.8, 4]; pentaxforums: the minimum focusing distance of 28cm
     ("pentax-hd-da-20-40mm-f2.8-4-ed-limited-dc-wr", 20, 280, None, (2.8, None), 0.2),
     ("pentax-hd-da-20-40mm-f2.8-4-ed-limited-dc-wr", 40, 280, None, (4, None), 0.2),
     # HD D FA 24-70mm: 0.38, 0.2
@@ -140,6 +146,11 @@ CONFIRMED = {
     "pentax-hd-fa-50mm-f1.4": "lens-db.com",
     "pentax-smc-da-50mm-f1.8": "wikimili.com",
     "pentax-smc-d-fa-macro-50mm-f2.8": "mor-s-photo.blogspot.com",
+    "pentax-smc-da-35mm-f2.4-al": "erphotoreview.com",
+    "pentax-hd-fa-77mm-f1.8-limited": "pentaxklub.com",
+    "pentax-hd-da-35mm-f2.8-macro-limited": "ricohimagingstore.com",
+    "pentax-hd-fa-31mm-f1.8-limited": "blue-san.com",
+    "pentax-hd-fa-43mm-f1.9-limited": "edcylw.amebaownd.com",
     "leica-summilux-m-35mm-f1.4-asph-close-focus": "digitalkamera.de",
     "leica-summilux-m-50mm-f1.4-asph-close-focus": "amateurphotographer.com",
     "leica-apo-summicron-m-75mm-f2-asph": "leicasocietyinternational.org",
