@@ -73,7 +73,7 @@ def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
     poisoned = json.dumps(new_spans).encode() + b"\n" + b"".join(blobs)
     # the sections' recorded digests stay the build's: the poisoned sections do not have them
     files = {**index, "sensors.yaml": [index["sensors.yaml"][0], len(body), len(poisoned), index["sensors.yaml"][3]]}
-    monkeypatch.setattr(loader, "_shipped_index", {"index": files, "body": body + poisoned})
+    monkeypatch.setattr(loader, "_shipped_index", {"index": files, "body": body[0:len(body)] + poisoned})
 
 
 def _aps_c(sections) -> dict:
@@ -87,14 +87,28 @@ def _aps_c(sections) -> dict:
     lambda s: _aps_c(s).update(extra=1),
     lambda s: s.update(sensor={"0": 1}),
     lambda s: s.update({"sensor#keys": s["sensor#keys"][:-1]}),
+    lambda s: s.update({"sensor#spans": [s["sensor#spans"][0]] * len(s["sensor#spans"])}),
+    lambda s: s.update({"sensor#spans": s["sensor#spans"][:-1]}),
 ], ids=["a negative width", "a width as text", "another preset's keys", "an unknown key", "not a list",
-        "keys shorter"])
+        "keys shorter", "every span the first record's", "spans shorter"])
 def test_a_shipped_record_that_is_not_its_file_is_never_used(change, cache_home: Path,
                                                               monkeypatch: pytest.MonkeyPatch) -> None:
     expected = load_db(use_cache=False, lensfun=False).sensor("aps-c")
     _poison(monkeypatch, change)
     got = load_db(lensfun=False).sensor("aps-c")
     assert (got.width_mm, got.height_mm) == (expected.width_mm, expected.height_mm) == (23.6, 15.6)
+
+
+def test_a_lookup_parses_only_the_record_it_finds(cache_home: Path) -> None:
+    # the shipped records section is checked against its digest whole, then only the one record's span is parsed
+    fresh = load_db(use_cache=False, lensfun=False)
+    database = load_db(lensfun=False)
+    assert database.lens("nikon-z-50mm-f1.8-s") == fresh.lens("nikon-z-50mm-f1.8-s")
+    path = next(p for p in database._files if p.endswith(os.sep + "lenses.yaml"))
+    cached = database._files[path]._cached
+    assert cached is not None and cached.digests is not None
+    assert "lens" not in cached._parsed and cached._blobs["lens"] is not None
+    assert len(cached._checked) == 1  # one record, not the file's 168
 
 
 def test_a_first_command_parses_no_yaml(tmp_path: Path) -> None:
@@ -198,9 +212,27 @@ def test_a_listing_without_its_digest_is_not_used(cache_home: Path, monkeypatch:
     blob = body[start:start + length].replace(b'"36 \\u00d7 24 mm"', b'"99 \\u00d7 24 mm"').replace(
         "36 × 24 mm".encode(), "99 × 24 mm".encode())
     assert blob != body[start:start + length]
-    monkeypatch.setattr(loader, "_shipped_index", {"index": index, "body": body + blob,
+    monkeypatch.setattr(loader, "_shipped_index", {"index": index, "body": body[0:len(body)] + blob,
                                                    "listing": [len(body), len(blob), digest]})
     database = load_db(lensfun=False)
     assert database.shipped_listing("sensor") is None
     rows = list_presets(database=database, kind="sensor")
     assert next(r.summary for r in rows if r.id == "full-frame") == "36 × 24 mm"
+
+
+def test_the_shipped_records_file_is_read_by_span_and_only_when_regular(tmp_path: Path) -> None:
+    data = b'{"files":{}}\n' + bytes(range(256)) * 8
+    regular = tmp_path / "records.json"
+    regular.write_bytes(data)
+    spans = loader._open_spans(str(regular), 1 << 20)
+    assert spans is not None and len(spans) == len(data)
+    window = loader._Window(spans, 13, len(data) - 13)
+    assert window[0:5] == data[13:18] and window[2040:99999] == data[13 + 2040:]
+    assert loader._Window(spans, 0, len(data)).find(b"\n") == 12 and window.find(b"\xff\x00\x01") == 255
+    regular.write_bytes(data[:100])  # shorter than when opened: a span past the end comes back short
+    assert window[0:200] == data[13:100]
+    assert loader._open_spans(str(regular), 50) is None  # larger than the limit
+    assert loader._open_spans(str(tmp_path), 1 << 20) is None  # a directory
+    assert loader._open_spans(str(tmp_path / "missing.json"), 1 << 20) is None
+    os.mkfifo(tmp_path / "fifo")
+    assert loader._open_spans(str(tmp_path / "fifo"), 1 << 20) is None  # opened without blocking, refused

@@ -14,9 +14,8 @@ same id, aliases and all.
 
 from __future__ import annotations
 
-import functools
 import os
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 from camtool.presets import paths
@@ -40,12 +39,12 @@ from camtool.presets.schema import (
 class _Entry:
     """A record with the file and tier it came from; the record itself is read only when needed."""
 
-    __slots__ = ("_load", "_record", "keys", "path", "tier")
+    __slots__ = ("_at", "_record", "keys", "path", "tier")
 
     def __init__(self, record: dict[str, Any] | None, path: str, tier: str, keys: list[str] | None = None,
-                 load: Callable[[], dict[str, Any]] | None = None) -> None:
+                 at: tuple[FileData, str, int] | None = None) -> None:
         self._record = record
-        self._load = load
+        self._at = at  # (file, kind, index) of a record read only when needed
         self.keys: list[str] = keys if keys is not None else record["_keys"]  # type: ignore[index]
         self.path = path
         self.tier = tier
@@ -53,8 +52,9 @@ class _Entry:
     @property
     def record(self) -> dict[str, Any]:
         if self._record is None:
-            assert self._load is not None
-            self._record = self._load()
+            assert self._at is not None
+            data, kind, index = self._at
+            self._record = data.record_at(kind, index)
         return self._record
 
     @property
@@ -246,7 +246,7 @@ class Database:
             for path in tier.files:
                 data = self._files[path]
                 for index, record_keys in enumerate(data.keys_of(kind)):
-                    entry = _Entry(None, path, tier.name, record_keys, functools.partial(data.record_at, kind, index))
+                    entry = _Entry(None, path, tier.name, record_keys, (data, kind, index))
                     for position, key in enumerate(record_keys):
                         other = tier_keys.get(key)
                         if other is not None:

@@ -48,7 +48,7 @@ from camtool.presets.schema import (
     suggest,
 )
 
-CACHE_FORMAT = 11
+CACHE_FORMAT = 12
 """Bumped whenever the record layout changes, so old cache files are ignored."""
 
 _CACHE_KIND = f"presets-{CACHE_FORMAT}"
@@ -165,7 +165,7 @@ class FileData:
 class _Cached:
     """A cache entry that passed the envelope checks: its sections, parsed and checked on first use."""
 
-    def __init__(self, body: bytes, sections: dict[str, list[int]], raw: bytes | None, cache_path: str, source: str | None,
+    def __init__(self, body: Any, sections: dict[str, list[int]], raw: bytes | None, cache_path: str, source: str | None,
                  limit: int, digests: dict[str, str] | None = None) -> None:
         self.body = body
         self.sections = sections
@@ -178,10 +178,11 @@ class _Cached:
         self.digests = digests
         self.handed: dict[str, list[list[str]]] = {}
         self._parsed: dict[str, Any] = {}
+        self._blobs: dict[str, bytes | None] = {}
         self._checked: dict[tuple[str, int], dict[str, Any]] = {}
 
     @classmethod
-    def parse(cls, payload: bytes, raw: bytes | None, cache_path: str, source: str | None, limit: int,
+    def parse(cls, payload: Any, raw: bytes | None, cache_path: str, source: str | None, limit: int,
               digests: dict[str, str] | None = None) -> _Cached | None:
         end = payload.find(b"\n")
         if end < 0:
@@ -190,11 +191,11 @@ class _Cached:
             sections = json.loads(payload[:end])
         except (ValueError, RecursionError):
             return None
-        body = payload[end + 1:]
+        body = _Window(payload, end + 1, len(payload) - end - 1)  # a section is sliced only when it is used
         if not isinstance(sections, dict):
             return None
         for name, span in sections.items():
-            kind = name.removesuffix("#keys")
+            kind = name.removesuffix("#keys").removesuffix("#spans")
             if kind not in KINDS or not (isinstance(span, list) and len(span) == 2
                                          and all(type(n) is int for n in span)):
                 return None
@@ -239,21 +240,52 @@ class _Cached:
         return keys
 
     def record(self, kind: str, index: int) -> dict[str, Any] | None:
-        """The ``index``-th record of one kind when it passes :func:`_valid_record` (and matches the keys given out)."""
+        """The ``index``-th record of one kind when it passes :func:`_valid_record` (and matches the keys given out).
+
+        Of the shipped records only that record is parsed, where the kind's
+        ``#spans`` section says it stands, once the records section has the
+        digest the build recorded; a cache entry's records section is parsed
+        whole, so that every record of it is held to its keys.
+        """
         checked = self._checked.get((kind, index))
         if checked is not None:
             return checked
-        records = self._section(kind) if kind in self.sections else []
-        if not isinstance(records, list) or not 0 <= index < len(records):
-            return None
         handed = self.handed.get(kind)
-        if handed is not None and len(handed) != len(records):
-            return None
-        record = records[index]
+        if self.digests is not None and kind not in self._parsed and f"{kind}#spans" in self.sections:
+            spans = self._section(f"{kind}#spans")
+            blob = self._blob(kind)
+            if (blob is None or not isinstance(spans, list) or not 0 <= index < len(spans)
+                    or (handed is not None and len(handed) != len(spans))):
+                return None
+            span = spans[index]
+            if not (isinstance(span, list) and len(span) == 2 and all(type(n) is int and n >= 0 for n in span)
+                    and span[0] + span[1] <= len(blob)):
+                return None
+            try:
+                record = json.loads(blob[span[0]:span[0] + span[1]])
+            except (ValueError, RecursionError):
+                return None
+        else:
+            records = self._section(kind) if kind in self.sections else []
+            if not isinstance(records, list) or not 0 <= index < len(records):
+                return None
+            if handed is not None and len(handed) != len(records):
+                return None
+            record = records[index]
         if not self._valid(kind, record) or (handed is not None and record["_keys"] != handed[index]):
             return None
         self._checked[(kind, index)] = record
         return record
+
+    def _blob(self, kind: str) -> bytes | None:
+        """The bytes of a kind's shipped records section, when it has the digest the build recorded."""
+        if kind not in self._blobs:
+            span = self.sections.get(kind)
+            blob = self.body[span[0]:span[0] + span[1]] if span is not None else None
+            if blob is not None and (self.digests or {}).get(kind) != _source_digest(blob):
+                blob = None
+            self._blobs[kind] = blob
+        return self._blobs[kind]
 
     def _valid(self, kind: str, record: Any) -> bool:
         return isinstance(record, dict) and isinstance(record.get("_keys"), list) if self.digests is not None else \
@@ -403,7 +435,8 @@ SHIPPED_RECORDS = "shipped-records.json"
 Written by ``python -m camtool.presets.shipped`` from a validated parse of
 each file: one JSON line mapping each file's name under ``lens_db/`` to the
 SHA-256 of the bytes it was made from, its span in the rest of the file and
-the SHA-256 of each section of the span (a kind's records, a kind's keys),
+the SHA-256 of each section of the span (a kind's records, a kind's keys,
+where each record stands in the records),
 and the span and SHA-256 of the listing; then each file's records in the
 layout of a cache entry, then the listing (:func:`shipped_listing`). A command reads
 these instead of parsing the YAML or reading the cache, each only for the
@@ -417,22 +450,108 @@ build wrote, finds no match: the cache or a parse answers.
 _shipped_index: dict[str, Any] | None = None
 
 
-def _shipped_records() -> tuple[dict[str, Any], bytes]:
-    """The index line and the body of :data:`SHIPPED_RECORDS` (empty when missing or not the expected shape)."""
+class _Window:
+    """The bytes ``[offset, offset + length)`` of ``base`` (bytes, or another window), sliced on demand.
+
+    A slice is read (or copied) alone, so a lookup that needs two small
+    sections of a file's records never copies the rest; ``find`` reads a
+    chunk at a time.
+    """
+
+    __slots__ = ("base", "length", "offset")
+
+    def __init__(self, base: Any, offset: int, length: int) -> None:
+        self.base, self.offset, self.length = base, offset, length
+
+    def __len__(self) -> int:
+        return self.length
+
+    def __getitem__(self, part: slice) -> bytes:
+        start, stop, _ = part.indices(self.length)
+        return bytes(self.base[self.offset + start:self.offset + max(start, stop)])
+
+    def find(self, sub: bytes, chunk: int = 512) -> int:
+        position = 0
+        while position < self.length:
+            data = self[position:position + chunk + len(sub) - 1]
+            found = data.find(sub)
+            if found >= 0:
+                return position + found
+            position += chunk
+        return -1
+
+
+class _FileSpans:
+    """A regular file read by span (``os.pread``) instead of whole: ``len`` and slices, as bytes have them.
+
+    A span of a file that is shorter than it was when opened comes back
+    short; the digest it is checked against then fails, as for any other
+    change.
+    """
+
+    __slots__ = ("fd", "size")
+
+    def __init__(self, fd: int, size: int) -> None:
+        self.fd, self.size = fd, size
+
+    def __len__(self) -> int:
+        return self.size
+
+    def __getitem__(self, part: slice) -> bytes:
+        start, stop, _ = part.indices(self.size)
+        try:
+            return os.pread(self.fd, max(0, stop - start), start)
+        except OSError:
+            return b""
+
+
+def _open_spans(path: str, limit: int) -> Any:
+    """``path`` as :class:`_FileSpans` (a regular file of at most ``limit`` bytes, opened without blocking, kept
+    open for the process), or its whole bytes where ``os.pread`` is missing; None when it cannot be read."""
+    import stat
+
+    if not hasattr(os, "pread"):
+        try:
+            return read_bytes(path, limit)
+        except FileProblem:
+            return None
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_CLOEXEC", 0) | getattr(os, "O_NONBLOCK", 0))
+    except OSError:
+        return None
+    try:
+        info = os.fstat(fd)
+    except OSError:
+        info = None
+    if info is None or not stat.S_ISREG(info.st_mode) or info.st_size > limit:
+        os.close(fd)
+        return None
+    return _FileSpans(fd, info.st_size)
+
+
+def _shipped_records() -> tuple[dict[str, Any], Any]:
+    """The index line and the body of :data:`SHIPPED_RECORDS` (empty when missing or not the expected shape).
+
+    The body is read a span at a time, when a section is used (a lookup reads
+    the index, the lookup keys of each file and the records of one file:
+    about a fifth of the file, where reading and copying it whole cost about
+    a thousand page faults).
+    """
     global _shipped_index
     if _shipped_index is None:
         _shipped_index = {"index": {}, "body": b""}
-        try:
-            raw = read_bytes(os.path.join(os.path.dirname(os.path.abspath(__file__)), SHIPPED_RECORDS), 64 << 20)
-        except FileProblem:
+        spans = _open_spans(os.path.join(os.path.dirname(os.path.abspath(__file__)), SHIPPED_RECORDS), 64 << 20)
+        if spans is None:
             return {}, b""
-        end = raw.find(b"\n")
+        whole = _Window(spans, 0, len(spans))
+        end = whole.find(b"\n", 1 << 16)
         try:
-            index = json.loads(raw[:end]) if end > 0 else None
+            index = json.loads(whole[:end]) if end > 0 else None
         except (ValueError, RecursionError):
             index = None
         if isinstance(index, dict) and index.get("format") == CACHE_FORMAT and isinstance(index.get("files"), dict):
-            _shipped_index = {"index": index["files"], "body": raw[end + 1:], "listing": index.get("listing")}
+            _shipped_index = {"index": index["files"], "body": _Window(spans, end + 1, len(spans) - end - 1),
+                              "listing": index.get("listing")}
     return _shipped_index["index"], _shipped_index["body"]
 
 
@@ -465,7 +584,7 @@ def _shipped_data(path: str, cached: _Cached, real: str) -> FileData:
     return data
 
 
-def shipped_payload(absolute: str, raw: bytes, digests: Any = None) -> tuple[bytes, dict[str, str]] | None:
+def shipped_payload(absolute: str, raw: bytes, digests: Any = None) -> tuple[Any, dict[str, str]] | None:
     """The shipped records of the file at ``absolute`` and the digest of each section, when it is a shipped file
     holding exactly ``raw`` (else None). ``digests`` (a :class:`camtool.core.cache.FileDigests`) remembers the digest
     of ``raw`` against the file's ``stat``."""
@@ -497,7 +616,7 @@ def _shipped_real_dir() -> str:
     return real
 
 
-def _shipped_entry(real: str, digest: str) -> tuple[bytes, dict[str, str]] | None:
+def _shipped_entry(real: str, digest: str) -> tuple[Any, dict[str, str]] | None:
     """The shipped records of the file whose real path is ``real`` when they were made from bytes of SHA-256
     ``digest``."""
     name = _shipped_name(real)
@@ -511,7 +630,7 @@ def _shipped_entry(real: str, digest: str) -> tuple[bytes, dict[str, str]] | Non
         return None
     if entry[0] != digest:
         return None
-    return body[entry[1]:entry[1] + entry[2]], entry[3]
+    return _Window(body, entry[1], entry[2]), entry[3]
 
 
 _file_digests: dict[tuple[str, str], Any] = {}
@@ -667,15 +786,27 @@ def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str,
 
 
 def entry_payload(records: dict[str, list[dict[str, Any]]]) -> bytes | None:
-    """The records of one file in the layout of a cache entry (None when a value cannot be written as JSON)."""
+    """The records of one file in the layout of a cache entry (None when a value cannot be written as JSON).
+
+    One JSON line naming each section's span, then per kind: its records (a
+    JSON list), their lookup keys (``kind#keys``) and where each record stands
+    in the records section (``kind#spans``, ``[offset, length]``).
+    """
     sections: dict[str, list[int]] = {}
     blobs = []
     offset = 0
     try:
         for kind, kind_records in records.items():
+            # the records section is the kind's JSON list, written item by item to know where each record stands
+            items = [json.dumps(record, separators=(",", ":")).encode("utf-8") for record in kind_records]
+            spans, position = [], 1
+            for item in items:
+                spans.append([position, len(item)])
+                position += len(item) + 1
             keys = [record["_keys"] for record in kind_records]
-            for section, value in ((kind, kind_records), (f"{kind}#keys", keys)):
-                blob = json.dumps(value, separators=(",", ":")).encode("utf-8")
+            for section, blob in ((kind, b"[" + b",".join(items) + b"]"),
+                                  (f"{kind}#keys", json.dumps(keys, separators=(",", ":")).encode("utf-8")),
+                                  (f"{kind}#spans", json.dumps(spans, separators=(",", ":")).encode("utf-8"))):
                 sections[section] = [offset, len(blob)]
                 blobs.append(blob)
                 offset += len(blob)
