@@ -236,3 +236,24 @@ def test_the_shipped_records_file_is_read_by_span_and_only_when_regular(tmp_path
     assert loader._open_spans(str(tmp_path / "missing.json"), 1 << 20) is None
     os.mkfifo(tmp_path / "fifo")
     assert loader._open_spans(str(tmp_path / "fifo"), 1 << 20) is None  # opened without blocking, refused
+
+
+def test_a_shipped_file_behind_a_symbolic_link_is_found_by_its_real_path(tmp_path: Path,
+                                                                          monkeypatch: pytest.MonkeyPatch) -> None:
+    # the shipped directory's files are taken as their own real paths with one lstat; a link is resolved
+    import shutil
+
+    copy = tmp_path / "lens_db"
+    shutil.copytree(paths.shipped_dir(), copy)
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    (copy / "sensors.yaml").rename(outside / "sensors.yaml")
+    (copy / "sensors.yaml").symlink_to(outside / "sensors.yaml")
+    shutil.move(str(copy / "prescriptions"), str(outside / "prescriptions"))
+    (copy / "prescriptions").symlink_to(outside / "prescriptions")
+    monkeypatch.setattr(paths, "shipped_dir", lambda: str(copy))
+    for path in [copy / "sensors.yaml", copy / "cameras.yaml", copy / "prescriptions" / "dgauss100.yaml"]:
+        assert loader._real_path(str(path)) == os.path.realpath(path)
+    raw = (outside / "sensors.yaml").read_bytes()
+    assert loader.shipped_payload(str(copy / "sensors.yaml"), raw) is None  # really a file outside lens_db/
+    assert loader.shipped_payload(str(copy / "cameras.yaml"), (copy / "cameras.yaml").read_bytes()) is not None

@@ -48,7 +48,8 @@ MAX_DEPTH = 64
 MAX_NUMBER_CHARS = 100
 """Longest plain scalar that looks like a number (Python refuses to convert integers of 4300 digits and more)."""
 
-_NUMERIC = re.compile(r"^[-+]?[0-9][0-9_]*(?:\.[0-9_]*)?(?:[eE][-+]?[0-9]+)?$")
+_NUMERIC = r"^[-+]?[0-9][0-9_]*(?:\.[0-9_]*)?(?:[eE][-+]?[0-9]+)?$"
+"""A plain scalar YAML would read as a number (compiled on first use, by re's cache: no start-up cost)."""
 
 
 class FileProblem(FileError):
@@ -312,7 +313,7 @@ def check_yaml(source: str, path: str, max_nodes: int = MAX_NODES, max_depth: in
                 add(count, line)
             elif isinstance(event, yaml.ScalarEvent):
                 frame = stack[-1]
-                if not event.style and len(event.value) > MAX_NUMBER_CHARS and _NUMERIC.match(event.value):
+                if not event.style and len(event.value) > MAX_NUMBER_CHARS and re.match(_NUMERIC, event.value):
                     raise FileProblem(path, f"YAML error: a number of {len(event.value)} characters "
                                             f"(at most {MAX_NUMBER_CHARS})", line)
                 if frame[2] and frame[3] % 2 == 0 and event.value != "<<":

@@ -252,6 +252,9 @@ class Database:
                         if other is not None:
                             raise _clash(kind, entry, position, other)
                         tier_keys[key] = entry
+            if not keys:  # the first tier with presets of the kind: nothing to replace
+                keys = tier_keys
+                continue
             for key, entry in tier_keys.items():
                 old = keys.get(key)
                 # the same (normalized) id: the later tier's preset replaces the earlier, aliases included

@@ -398,7 +398,7 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     digests = _shipped_digests(cache_dir) if cache_dir and use_cache else None
     if digests is not None:
         digest = digests.get(absolute)
-        real = os.path.realpath(absolute)
+        real = _real_path(absolute)
         known = _shipped_entry(real, digest) if digest is not None else None
         if known is not None:  # a shipped file whose bytes have the remembered digest: not read at all
             cached = _Cached.parse(known[0], None, "", None, 0, digests=known[1])
@@ -417,7 +417,7 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
         # the cache's own digest (path and bytes) is needed only if a section fails and the file is parsed
         cached = _Cached.parse(shipped[0], raw, cache_path, None, limit, digests=shipped[1])
         if cached is not None:
-            return _shipped_data(path, cached, os.path.realpath(absolute))
+            return _shipped_data(path, cached, _real_path(absolute))
     source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     payload = cache.read(cache_path, _CACHE_KIND, source, limit)
     if payload is not None:
@@ -590,10 +590,22 @@ def shipped_payload(absolute: str, raw: bytes, digests: Any = None) -> tuple[Any
     of ``raw`` against the file's ``stat``."""
     from camtool.core import cache
 
-    real = os.path.realpath(absolute)
+    real = _real_path(absolute)
     if _shipped_name(real) is None:
         return None
     return _shipped_entry(real, digests.put(absolute, raw) if digests is not None else cache.source_digest(raw))
+
+
+def _real_path(absolute: str) -> str:
+    """``os.path.realpath(absolute)``, found with one ``lstat`` for a file of the shipped directory (or of its
+    ``prescriptions``) that is no symbolic link, where the shipped directory's own real path is known."""
+    directory = _shipped_real_dir()
+    folder = os.path.join(os.path.dirname(absolute), "")
+    if ((folder == directory or (folder == os.path.join(directory, "prescriptions", "")
+                                 and not os.path.islink(folder.rstrip(os.sep))))
+            and not os.path.islink(absolute)):
+        return absolute
+    return os.path.realpath(absolute)
 
 
 def _shipped_name(real: str) -> str | None:
