@@ -1067,9 +1067,23 @@ def chart(kind: ChartKind, *, coc_mm: RealCoC, focal_length_mm: OptionalFocalLen
 
     focal, apertures, distances = _listed(focal_length_mm), _listed(f_number), _listed(distance_mm)
     if kind == "dof":
-        return plan.dof_chart(focal_lengths_mm=focal, f_numbers=apertures or [8.0], coc_mm=coc_mm, model=model,
-                              distance_from=distance_from, diffraction=diffraction, wavelength_nm=wavelength_nm,
-                              from_mm=near_mm, to_mm=far_mm)
+        from camtool.core.errors import InputError
+        from camtool.core.errors import braced as _braced
+
+        ends = {"low": "near_mm", "high": "far_mm"}  # the chart's range, as the plan (and --from/--to) names it
+        try:
+            return plan.dof_chart(focal_lengths_mm=focal, f_numbers=apertures or [8.0], coc_mm=coc_mm, model=model,
+                                  distance_from=distance_from, diffraction=diffraction, wavelength_nm=wavelength_nm,
+                                  from_mm=near_mm, to_mm=far_mm)
+        except DomainError as error:
+            if error.param not in ends:
+                raise
+            raise DomainError(ends[error.param], far_mm if error.param == "high" else near_mm, error.valid,
+                              error.detail, error.limit) from None
+        except InputError as error:
+            if error.param not in ends:
+                raise
+            raise InputError(ends[error.param], _braced(error.render(lambda name: ends.get(name, name)))) from None
     if kind == "blur":
         return plan.blur_chart(f_numbers=apertures or [2.8], focal_lengths_mm=focal, magnification=magnification,
                                subject_size_mm=subject_size_mm, fill=fill, fill_axis=fill_axis,

@@ -481,3 +481,19 @@ def test_a_focus_sheet_without_lenses_is_a_usage_line_naming_what_to_give(tmp_pa
     assert result.exit_code == 2 and result.stderr.count("\n") == 1
     assert "Invalid value" not in result.stderr and "-f (a list) or --lenses" in result.stderr
     assert not (tmp_path / "sheet.svg").exists()
+
+
+def test_the_api_names_a_dof_charts_range_by_its_own_arguments() -> None:
+    # the plan names the range as --from/--to do (low, high); the Python API names near_mm and far_mm
+    # (the API fuzz found "more than low" on chart(kind="dof", near_mm=681805.6, far_mm=64000))
+    import camtool
+    from camtool.core.errors import DomainError, InputError
+
+    with pytest.raises(InputError, match=r"^64000 is outside the valid range: more than near_mm \(681806\)$") as caught:
+        camtool.chart(kind="dof", focal_length_mm=50, coc_mm=0.03, near_mm=681805.59, far_mm=64000.0)
+    assert caught.value.param == "far_mm"
+    with pytest.raises(DomainError, match="far_mm=inf") as caught_inf:
+        camtool.chart(kind="dof", focal_length_mm=50, coc_mm=0.03, near_mm=1000.0, far_mm=math.inf)
+    assert caught_inf.value.param == "far_mm"
+    result = run("chart", "dof", "-f", "50", "-N", "8", "--from", "600m", "--to", "64m", "-o", "x.svg")
+    assert result.exit_code == 2 and "--to" in result.stderr and "--from" in result.stderr
