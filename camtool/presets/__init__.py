@@ -5,7 +5,8 @@
 >>> db.camera("Nikon Z 8").sensor.id
 'full-frame'
 
-Modules: :mod:`~camtool.presets.schema` (keys, checks, dataclasses),
+Modules: :mod:`~camtool.presets.kinds` (the kinds and their value classes),
+:mod:`~camtool.presets.schema` (keys and checks),
 :mod:`~camtool.presets.loader` (one file: safe YAML, line numbers, cache),
 :mod:`~camtool.presets.database` (tiers, index, lookup),
 :mod:`~camtool.presets.paths` (search order) and
@@ -17,7 +18,7 @@ from __future__ import annotations
 
 from camtool.presets.database import Database, load_db, validate_file
 from camtool.presets.errors import PresetFileError, PresetNotFound
-from camtool.presets.schema import (
+from camtool.presets.kinds import (
     KINDS,
     Camera,
     Lens,

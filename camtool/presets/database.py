@@ -20,8 +20,7 @@ from typing import Any
 
 from camtool.presets import paths
 from camtool.presets.errors import PresetFileError, PresetNotFound
-from camtool.presets.loader import FileData, parse_file, read_file
-from camtool.presets.schema import (
+from camtool.presets.kinds import (
     KINDS,
     REFERENCES,
     Camera,
@@ -34,6 +33,7 @@ from camtool.presets.schema import (
     kind_of,
     normalize,
 )
+from camtool.presets.loader import FileData, parse_file, read_file
 
 
 class _Entry:

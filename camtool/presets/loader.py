@@ -38,15 +38,7 @@ from typing import Any
 
 from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
-from camtool.presets.schema import (
-    KINDS,
-    REFERENCES,
-    SECTIONS,
-    check_record,
-    normalize,
-    show,
-    suggest,
-)
+from camtool.presets.kinds import KINDS, REFERENCES, SECTIONS, normalize
 
 CACHE_FORMAT = 12
 """Bumped whenever the record layout changes, so old cache files are ignored."""
@@ -364,6 +356,8 @@ def _valid_record(kind: str, record: Any) -> bool:
                 # an infinite distance is written with its unit spelling (distance: inf), which allows it
                 del source[key]
                 source[key.removesuffix("_mm")] = value
+    from camtool.presets.schema import check_record  # the checks: only a cache entry's records need them again
+
     try:
         fresh, problems = check_record(kind, source)
     except (TypeError, ValueError, ArithmeticError, RecursionError):
@@ -716,6 +710,8 @@ def _value_nodes(node: Any) -> dict[str, Any]:
 
 def _collect(document: Any, node: Any, data: FileData) -> None:
     """Validate the sections of a parsed document into ``data``."""
+    from camtool.presets.schema import show, suggest  # the checks: only parsing a file needs them
+
     if document is None:
         data.problems.append(Problem("the file is empty; expected sections such as sensors: or lenses:"))
         return
@@ -752,6 +748,8 @@ def _collect(document: Any, node: Any, data: FileData) -> None:
 
 
 def _collect_entry(kind: str, entry: dict[Any, Any], node: Any, data: FileData) -> None:
+    from camtool.presets.schema import check_record
+
     key_nodes = _key_nodes(node)
     entry_line = _line(node)
     record, problems = check_record(kind, entry)
