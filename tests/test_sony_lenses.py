@@ -186,7 +186,33 @@ CLOSEST_FOCUS_SECOND_SOURCE = {
     "sony-fe-35mm-f1.4-za": {35: 300}, "sony-fe-35mm-f2.8-za": {35: 350},
     "sony-fe-50mm-f1.4-za": {50: 450}, "sony-fe-55mm-f1.8-za": {55: 500}, "sony-fe-50mm-f2.8-macro": {50: 160},
     "sony-fe-20-70mm-f4-g": {20: 300, 70: 250}, "sony-e-20mm-f2.8": {20: 200}, "sony-e-30mm-f3.5-macro": {30: 95},
+    # the LensVisualizer analyses quoting Sony's specification (LENSVISUALIZER below)
+    "sony-fe-14mm-f1.8-gm": {14: 250}, "sony-fe-24mm-f2.8-g": {24: 240}, "sony-fe-50mm-f1.4-gm": {50: 410},
+    "sony-fe-85mm-f1.4-gm": {85: 850}, "sony-fe-135mm-f1.8-gm": {135: 700}, "sony-e-50mm-f1.8-oss": {50: 390},
+    "sony-fe-12-24mm-f2.8-gm": {12: 280, 24: 280}, "sony-e-18-200mm-f3.5-6.3-oss-le": {18: 500, 200: 500},
 }
+
+# ronbuening/LensVisualizer's lens-design analyses (src/lens-data/sony/<file>.analysis.md at the commit named), each
+# quoting Sony's published closest focus (m) and, where it does, the maximum magnification: a second source beside
+# isamu/lens-database, cited with path and commit in the entry's `source`
+LENSVISUALIZER = [
+    # "Sony's published production specification gives ... 0.25 m minimum focus distance"
+    ("sony-fe-14mm-f1.8-gm", "SonyFE14mmf18GM", "45552be52c68deb88cff1e9ec110386ab6d3ab74", 0.25, None),
+    # "Sony publishes 0.18 m minimum focus in MF and 0.24 m in AF"
+    ("sony-fe-24mm-f2.8-g", "SonyFE24mmf28G", "3c4ecfc621e6b970cc04c94da5780c643a291de5", 0.24, None),
+    # "Sony specifies 0.41 m minimum focus in AF and 0.38 m in MF"
+    ("sony-fe-50mm-f1.4-gm", "SonyFE50mmF14GM", "1d8ae14ed1cb6ac0468d66e414d2946531932533", 0.41, None),
+    # "Sony specifies AF minimum focus 0.85 m, MF minimum focus 0.8 m, and 0.12x maximum magnification"
+    ("sony-fe-85mm-f1.4-gm", "SonyFE85mmF14GM", "84b8ea6e6e4f24ef0b12b62a9179dd405d7e9672", 0.85, 0.12),
+    # "Sony's 0.7 m (0.25x magnification) specification"
+    ("sony-fe-135mm-f1.8-gm", "SonyFE135mmf18GM", "02d22c22869e50fe8cf3482ebd141e3811d1d1f1", 0.7, 0.25),
+    # "Sony markets 0.39 m minimum focus and 0.16x maximum magnification"
+    ("sony-e-50mm-f1.8-oss", "SonyE50mmf18OSS", "59eef61956e8cfe28ef3ec6173443801ef439ce1", 0.39, 0.16),
+    # "Sony's 0.28 m minimum focus distance" (one figure for the zoom)
+    ("sony-fe-12-24mm-f2.8-gm", "SonyFE1224mmf28GM", "23631dc0f77a149cf14f8fa62ff66779dfe16b65", 0.28, None),
+    # "Sony specifies a 0.5 m minimum focus distance for SEL18200LE" ... "Sony specifies 0.27x maximum magnification"
+    ("sony-e-18-200mm-f3.5-6.3-oss-le", "SonyE18200mmf3563OSSLE", "59eef61956e8cfe28ef3ec6173443801ef439ce1", 0.5, 0.27),
+]
 # A magnification a page prints: photonique.org, 0.5x across the entire zoom range; ino.lomo.jp, SEL2070G 0.39倍;
 # chatgpt4000.com, FE50mm F1.2 GM 0.17倍; Focus Numérique, FE 50 mm f/2,8 Macro: le rapport macro 1:1
 MAGNIFICATION_SECOND_SOURCE = {"sony-fe-70-200mm-f4-macro-g-oss-ii": 0.5, "sony-fe-20-70mm-f4-g": 0.39,
@@ -247,6 +273,19 @@ SECOND_MAGNIFICATION_PAGE = {"sony-fe-50mm-f2.8-macro": "focus-numerique.com/tes
 @pytest.mark.parametrize(("lens_id", "page"), sorted(SECOND_SOURCE_PAGE.items()) + sorted(SECOND_MAGNIFICATION_PAGE.items()))
 def test_the_second_source_is_named(lens_id, page):
     assert page in record_of(RECORDS, lens_id)["source"]
+
+
+@pytest.mark.parametrize(("lens_id", "stem", "commit", "closest_m", "magnification"), LENSVISUALIZER,
+                         ids=[row[0] for row in LENSVISUALIZER])
+def test_figures_against_the_lensvisualizer_analyses(lens_id, stem, commit, closest_m, magnification):
+    record = record_of(RECORDS, lens_id)
+    rows = record.get("close_focus") or [{"min_focus_mm": record["min_focus_mm"]}]
+    assert {row["min_focus_mm"] for row in rows} == {round(closest_m * 1000)}
+    assert record["min_focus_mm"] == round(closest_m * 1000)
+    if magnification is not None:
+        assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    source = " ".join(record["source"].split())
+    assert f"ronbuening/LensVisualizer src/lens-data/sony/{stem}.analysis.md at {commit}" in source
 
 
 @pytest.mark.parametrize(("lens_id", "manual"), sorted(MANUAL_FOCUS.items()))
