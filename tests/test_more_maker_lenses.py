@@ -220,20 +220,51 @@ CONFIRMED = {
     "panasonic-lumix-s-24mm-f1.8": "expeditionsinlight.com",
     "leica-apo-summicron-sl-28mm-f2-asph": "leicasocietyinternational.org",
     "leica-apo-summicron-sl-50mm-f2-asph": "fstoppers.com",
+    # the LensVisualizer lens-design analyses quoting Panasonic's figures (LENSVISUALIZER below)
+    "panasonic-lumix-s-pro-24-70mm-f2.8": "PanasonicLumixSPro2470mmf28.analysis.md",
+    "panasonic-lumix-s-pro-70-200mm-f2.8-ois": "PanasonicLumixSPro70200mmf28OIS.analysis.md",
 }
+
+# ronbuening/LensVisualizer src/lens-data/panasonic/<file> at the commit named: Panasonic's closest focus (m, one
+# figure for the zoom) and maximum magnification as each analysis quotes them ("Panasonic specifies a 0.37 m closest
+# focusing distance and approximately 0.25x maximum magnification"; "Panasonic markets ... 0.95 m closest focus,
+# approximately 0.21x maximum magnification")
+LENSVISUALIZER = [
+    ("panasonic-lumix-s-pro-24-70mm-f2.8", "PanasonicLumixSPro2470mmf28.analysis.md",
+     "4e142ee8eff255f820438679aee8906800b33432", 0.37, 0.25),
+    ("panasonic-lumix-s-pro-70-200mm-f2.8-ois", "PanasonicLumixSPro70200mmf28OIS.analysis.md",
+     "68d18c304a871fedf2d37fe5b8df4ac30802d500", 0.95, 0.21),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "name", "commit", "closest_m", "magnification"), LENSVISUALIZER,
+                         ids=[row[0] for row in LENSVISUALIZER])
+def test_figures_against_the_lensvisualizer_analyses(lens_id, name, commit, closest_m, magnification):
+    record = record_of(RECORDS, lens_id)
+    assert {row["min_focus_mm"] for row in record["close_focus"]} == {round(closest_m * 1000)}
+    assert record["min_focus_mm"] == round(closest_m * 1000)
+    assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    source = " ".join(record["source"].split())
+    assert f"ronbuening/LensVisualizer src/lens-data/panasonic/{name} at {commit}" in source
+
+
+def test_the_24_70mm_keeps_its_page_for_the_closest_focus():
+    # Le Monde de la Photo: "La distance minimale de mise au point se situe à 37 cm, quelle que soit la focale"
+    record = record_of(RECORDS, "panasonic-lumix-s-pro-24-70mm-f2.8")
+    assert "lemondedelaphoto.com" in record["source"]
+    assert {row["focal_length_mm"]: row["min_focus_mm"] for row in record["close_focus"]} == {24: 370, 70: 370}
 
 # approximate entries of which a page confirms some figures, not all: the site named in `source`, the closest focus
 # (mm at each focal length) and the maximum magnification it prints (None where it prints none), and the figure the
 # entry's notes must still name as unconfirmed. The Leica DG Summilux 15mm (i-kyon1521.com: 最短撮影距離: 20cm), the
 # Vario-Elmarit 12-35mm (The Phoblographer: 0.15m on the wide end and 0.25 on the longer end; nothing at 17 mm), the
-# M.Zuiko 300mm (ayton.id.au: close focus of only 1.4m), the Lumix S PRO 24-70mm (Le Monde de la Photo: 37 cm,
-# quelle que soit la focale), the Lumix S PRO 50mm (Les Numériques: Rapport de reproduction 0.15 x)
+# M.Zuiko 300mm (ayton.id.au: close focus of only 1.4m), the Lumix S PRO 50mm (Les Numériques: Rapport de
+# reproduction 0.15 x)
 PARTLY_CONFIRMED = {
     "panasonic-leica-dg-summilux-15mm-f1.7": ("i-kyon1521.com", {15: 200}, None, "maximum magnification 0.1x"),
     "panasonic-leica-dg-vario-elmarit-12-35mm-f2.8": ("thephoblographer.com/2022/12/14", {12: 150, 35: 250}, None,
                                                       "the 17 mm row"),
     "om-m-zuiko-300mm-f4-is-pro": ("ayton.id.au", {300: 1400}, None, "maximum magnification 0.24x"),
-    "panasonic-lumix-s-pro-24-70mm-f2.8": ("lemondedelaphoto.com", {24: 370, 70: 370}, None, "maximum magnification"),
     "panasonic-lumix-s-pro-50mm-f1.4": ("lesnumeriques.com", {}, 0.15, "closest focus 0.44 m"),
 }
 
