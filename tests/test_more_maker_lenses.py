@@ -225,6 +225,8 @@ CONFIRMED = {
     "panasonic-lumix-s-pro-70-200mm-f2.8-ois": "PanasonicLumixSPro70200mmf28OIS.analysis.md",
     "panasonic-lumix-s-pro-50mm-f1.4": "PanasonicSPro50mmf14.analysis.md",
     "panasonic-leica-dg-summilux-12mm-f1.4": "PanasonicDGSummilux12mmf14.analysis.md",
+    "panasonic-lumix-g-14mm-f2.5-ii": "PanasonicG14mmf25II.analysis.md",
+    "panasonic-lumix-g-25mm-f1.7": "PanasonicLumixG25mmf17.analysis.md",
 }
 
 # ronbuening/LensVisualizer src/lens-data/panasonic/<file> at the commit named: Panasonic's closest focus (m, one
@@ -243,6 +245,13 @@ LENSVISUALIZER = [
     # magnification"
     ("panasonic-leica-dg-summilux-12mm-f1.4", "PanasonicDGSummilux12mmf14.analysis.md",
      "84580191e3db943b3155bccdeb889dc7de716849", 0.2, 0.1),
+    # "Panasonic's published H-H014A specification gives ... 0.18 m closest focusing distance, and approximately
+    # 0.10x maximum magnification"
+    ("panasonic-lumix-g-14mm-f2.5-ii", "PanasonicG14mmf25II.analysis.md",
+     "db0caf206caf4004d33c6cc4346e3d501579ba3a", 0.18, 0.1),
+    # "The production specification gives ... 0.25 m minimum focus, 0.14x maximum magnification"
+    ("panasonic-lumix-g-25mm-f1.7", "PanasonicLumixG25mmf17.analysis.md",
+     "10f5e4e2eaea63f8cb43943dcdda6ea0f2903232", 0.25, 0.14),
     # "0.24 m (9.5") in Panasonic's specification" (no magnification: the 0.22x stays open, PARTLY_CONFIRMED)
     ("panasonic-lumix-s-35mm-f1.8", "PanasonicS35mmf18.analysis.md",
      "1e0d09a310a3a4297fd3745ca79ed4f7058d2a26", 0.24, None),
