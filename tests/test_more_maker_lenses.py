@@ -227,33 +227,37 @@ CONFIRMED = {
     "panasonic-leica-dg-summilux-12mm-f1.4": "PanasonicDGSummilux12mmf14.analysis.md",
     "panasonic-lumix-g-14mm-f2.5-ii": "PanasonicG14mmf25II.analysis.md",
     "panasonic-lumix-g-25mm-f1.7": "PanasonicLumixG25mmf17.analysis.md",
+    "om-m-zuiko-75mm-f1.8": "OlympusMZuiko75mmf18.analysis.md",
 }
 
-# ronbuening/LensVisualizer src/lens-data/panasonic/<file> at the commit named: Panasonic's closest focus (m, one
+# ronbuening/LensVisualizer src/lens-data/<maker>/<file> at the commit named: the maker's closest focus (m, one
 # figure for the zoom) and maximum magnification as each analysis quotes them ("Panasonic specifies a 0.37 m closest
 # focusing distance and approximately 0.25x maximum magnification"; "Panasonic markets ... 0.95 m closest focus,
 # approximately 0.21x maximum magnification")
 LENSVISUALIZER = [
-    ("panasonic-lumix-s-pro-24-70mm-f2.8", "PanasonicLumixSPro2470mmf28.analysis.md",
+    ("panasonic-lumix-s-pro-24-70mm-f2.8", "panasonic/PanasonicLumixSPro2470mmf28.analysis.md",
      "4e142ee8eff255f820438679aee8906800b33432", 0.37, 0.25),
-    ("panasonic-lumix-s-pro-70-200mm-f2.8-ois", "PanasonicLumixSPro70200mmf28OIS.analysis.md",
+    ("panasonic-lumix-s-pro-70-200mm-f2.8-ois", "panasonic/PanasonicLumixSPro70200mmf28OIS.analysis.md",
      "68d18c304a871fedf2d37fe5b8df4ac30802d500", 0.95, 0.21),
     # "matches the published 0.44 m", "matches the published 0.15x"
-    ("panasonic-lumix-s-pro-50mm-f1.4", "PanasonicSPro50mmf14.analysis.md",
+    ("panasonic-lumix-s-pro-50mm-f1.4", "panasonic/PanasonicSPro50mmf14.analysis.md",
      "1e0d09a310a3a4297fd3745ca79ed4f7058d2a26", 0.44, 0.15),
     # "Panasonic's official specification gives ... 0.20 m closest focusing distance, approximately 0.1x maximum
     # magnification"
-    ("panasonic-leica-dg-summilux-12mm-f1.4", "PanasonicDGSummilux12mmf14.analysis.md",
+    ("panasonic-leica-dg-summilux-12mm-f1.4", "panasonic/PanasonicDGSummilux12mmf14.analysis.md",
      "84580191e3db943b3155bccdeb889dc7de716849", 0.2, 0.1),
     # "Panasonic's published H-H014A specification gives ... 0.18 m closest focusing distance, and approximately
     # 0.10x maximum magnification"
-    ("panasonic-lumix-g-14mm-f2.5-ii", "PanasonicG14mmf25II.analysis.md",
+    ("panasonic-lumix-g-14mm-f2.5-ii", "panasonic/PanasonicG14mmf25II.analysis.md",
      "db0caf206caf4004d33c6cc4346e3d501579ba3a", 0.18, 0.1),
     # "The production specification gives ... 0.25 m minimum focus, 0.14x maximum magnification"
-    ("panasonic-lumix-g-25mm-f1.7", "PanasonicLumixG25mmf17.analysis.md",
+    ("panasonic-lumix-g-25mm-f1.7", "panasonic/PanasonicLumixG25mmf17.analysis.md",
      "10f5e4e2eaea63f8cb43943dcdda6ea0f2903232", 0.25, 0.14),
+    # "The production specification states 0.84 m minimum focus and 0.1x maximum magnification"
+    ("om-m-zuiko-75mm-f1.8", "olympus/OlympusMZuiko75mmf18.analysis.md",
+     "62b8fb8168a021cadd55996b45795ffecba8c808", 0.84, 0.1),
     # "0.24 m (9.5") in Panasonic's specification" (no magnification: the 0.22x stays open, PARTLY_CONFIRMED)
-    ("panasonic-lumix-s-35mm-f1.8", "PanasonicS35mmf18.analysis.md",
+    ("panasonic-lumix-s-35mm-f1.8", "panasonic/PanasonicS35mmf18.analysis.md",
      "1e0d09a310a3a4297fd3745ca79ed4f7058d2a26", 0.24, None),
 ]
 
@@ -268,7 +272,7 @@ def test_figures_against_the_lensvisualizer_analyses(lens_id, name, commit, clos
     if magnification is not None:
         assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
     source = " ".join(record["source"].split())
-    assert f"ronbuening/LensVisualizer src/lens-data/panasonic/{name} at {commit}" in source
+    assert f"ronbuening/LensVisualizer src/lens-data/{name} at {commit}" in source
 
 
 def test_the_s_pro_50mm_keeps_its_page_for_the_magnification_and_smallest_aperture():
