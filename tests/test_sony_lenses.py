@@ -75,9 +75,10 @@ CITED = [
     # SEL1635Z: 0.28 m, 0.19倍
     ("sony-fe-16-35mm-f4-za-oss", 16, 280, None, (4, None), 0.19),
     ("sony-fe-16-35mm-f4-za-oss", 35, 280, None, (4, None), 0.19),
-    # SELP1635G: 0.28 m, 0.23倍
+    # SELP1635G: 0.28 m, 0.23倍; the tele row is the LensVisualizer analysis's (PZ_16_35_PER_END below), the dataset
+    # giving one closest focus for the zoom
     ("sony-fe-pz-16-35mm-f4-g", 16, 280, None, (4, None), 0.23),
-    ("sony-fe-pz-16-35mm-f4-g", 35, 280, None, (4, None), 0.23),
+    ("sony-fe-pz-16-35mm-f4-g", 35, 240, None, (4, None), 0.23),
     # SEL2070G: 0.3 m (AF・ワイド端)/望遠端0.25m, 0.39倍
     ("sony-fe-20-70mm-f4-g", 20, 300, None, (4, 22), 0.39),
     ("sony-fe-20-70mm-f4-g", 70, 250, None, (4, 22), 0.39),
@@ -190,7 +191,7 @@ CLOSEST_FOCUS_SECOND_SOURCE = {
     "sony-fe-14mm-f1.8-gm": {14: 250}, "sony-fe-24mm-f2.8-g": {24: 240}, "sony-fe-50mm-f1.4-gm": {50: 410},
     "sony-fe-85mm-f1.4-gm": {85: 850}, "sony-fe-135mm-f1.8-gm": {135: 700}, "sony-e-50mm-f1.8-oss": {50: 390},
     "sony-fe-12-24mm-f2.8-gm": {12: 280, 24: 280}, "sony-e-18-200mm-f3.5-6.3-oss-le": {18: 500, 200: 500},
-    "sony-fe-85mm-f1.4-gm-ii": {85: 850},
+    "sony-fe-85mm-f1.4-gm-ii": {85: 850}, "sony-fe-16-35mm-f2.8-gm-ii": {16: 220, 35: 220},
 }
 
 # ronbuening/LensVisualizer's lens-design analyses (src/lens-data/sony/<file>.analysis.md at the commit named), each
@@ -215,7 +216,15 @@ LENSVISUALIZER = [
     ("sony-e-18-200mm-f3.5-6.3-oss-le", "SonyE18200mmf3563OSSLE", "59eef61956e8cfe28ef3ec6173443801ef439ce1", 0.5, 0.27),
     # "consistent with Sony's published MFD of 0.85 m (AF) / 0.80 m (MF)"
     ("sony-fe-85mm-f1.4-gm-ii", "SonyFE85mmf14GMII", "28fd36e77e69a1ce097fece706d3a32aa98a7b0c", 0.85, None),
+    # "Sony's production specification gives a shorter minimum focus distance of 0.22 m and a maximum magnification
+    # of 0.32x" (one figure for the zoom)
+    ("sony-fe-16-35mm-f2.8-gm-ii", "SonyFE1635mmf28GMII", "6bacd763baa1b4acedb0fdc5a2b506a137382f94", 0.22, 0.32),
 ]
+
+# The FE PZ 16-35mm F4 G: "minimum focusing distances of 0.28 m at the wide end and 0.24 m at the tele end"
+# (ronbuening/LensVisualizer src/lens-data/sony/SonyFEPZ1635mmf4G.analysis.md at 22b7f670), where isamu/lens-database
+# gives one figure, 0.28 m, for the zoom: the maker's per-end figures as the analysis quotes them
+PZ_16_35_PER_END = {16: 280, 35: 240}
 # ... and the one quoting Sony's magnification but its closest focus only as "a minimum-focus range of approximately
 # 0.40-0.74 m" (not entered as a confirmation: the ends are not named)
 LENSVISUALIZER_MAGNIFICATION = [
@@ -226,7 +235,7 @@ LENSVISUALIZER_MAGNIFICATION = [
 MAGNIFICATION_SECOND_SOURCE = {"sony-fe-70-200mm-f4-macro-g-oss-ii": 0.5, "sony-fe-20-70mm-f4-g": 0.39,
                                "sony-fe-50mm-f1.2-gm": 0.17, "sony-fe-50mm-f2.8-macro": 1,
                                # the LensVisualizer analysis (LENSVISUALIZER below)
-                               "sony-fe-50-150mm-f2-gm": 0.2}
+                               "sony-fe-50-150mm-f2-gm": 0.2, "sony-fe-16-35mm-f2.8-gm-ii": 0.32}
 
 # Sony's manual-focus closest focus (mm), closer than the autofocus one the entry keeps (isamu's notes: MF時)
 MANUAL_FOCUS = {
@@ -296,6 +305,17 @@ def test_figures_against_the_lensvisualizer_analyses(lens_id, stem, commit, clos
         assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
     source = " ".join(record["source"].split())
     assert f"ronbuening/LensVisualizer src/lens-data/sony/{stem}.analysis.md at {commit}" in source
+
+
+def test_pz_16_35_takes_the_per_end_closest_focus_the_analysis_quotes():
+    record = record_of(RECORDS, "sony-fe-pz-16-35mm-f4-g")
+    assert {row["focal_length_mm"]: row["min_focus_mm"] for row in record["close_focus"]} == PZ_16_35_PER_END
+    assert record["min_focus_mm"] == min(PZ_16_35_PER_END.values())
+    source = " ".join(record["source"].split())
+    assert ("ronbuening/LensVisualizer src/lens-data/sony/SonyFEPZ1635mmf4G.analysis.md at "
+            "22b7f67002e217f655ab832364e47f6b6c715e63") in source
+    assert "0.28 m, 0.23倍" in source  # the dataset's one figure, kept in the citation
+    assert record["approximate"] is True and "0.24 m at the tele end" in " ".join(record["notes"].split())
 
 
 @pytest.mark.parametrize(("lens_id", "stem", "commit", "magnification"), LENSVISUALIZER_MAGNIFICATION,
