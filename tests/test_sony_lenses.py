@@ -192,6 +192,7 @@ CLOSEST_FOCUS_SECOND_SOURCE = {
     "sony-fe-85mm-f1.4-gm": {85: 850}, "sony-fe-135mm-f1.8-gm": {135: 700}, "sony-e-50mm-f1.8-oss": {50: 390},
     "sony-fe-12-24mm-f2.8-gm": {12: 280, 24: 280}, "sony-e-18-200mm-f3.5-6.3-oss-le": {18: 500, 200: 500},
     "sony-fe-85mm-f1.4-gm-ii": {85: 850}, "sony-fe-16-35mm-f2.8-gm-ii": {16: 220, 35: 220},
+    "sony-fe-16-35mm-f4-za-oss": {16: 280, 35: 280}, "sony-e-16-70mm-f4-za-oss": {16: 350, 70: 350},
 }
 
 # ronbuening/LensVisualizer's lens-design analyses (src/lens-data/sony/<file>.analysis.md at the commit named), each
@@ -219,6 +220,13 @@ LENSVISUALIZER = [
     # "Sony's production specification gives a shorter minimum focus distance of 0.22 m and a maximum magnification
     # of 0.32x" (one figure for the zoom)
     ("sony-fe-16-35mm-f2.8-gm-ii", "SonyFE1635mmf28GMII", "6bacd763baa1b4acedb0fdc5a2b506a137382f94", 0.22, 0.32),
+    # "Sony specifies a 0.28 m minimum focus distance for the SEL1635Z", "Sony's rounded 0.19x production
+    # specification"
+    ("sony-fe-16-35mm-f4-za-oss", "SonyVarioTessarTFE1635mmf4ZAOSS", "3e2008a7bdba6b24289ce618b2e7f823d228261c",
+     0.28, 0.19),
+    # "Sony's published 0.35 m minimum focus distance", "Sony's rounded 0.23x maximum magnification specification"
+    ("sony-e-16-70mm-f4-za-oss", "SonyVarioTessarTE1670mmf4ZAOSS", "3e2008a7bdba6b24289ce618b2e7f823d228261c",
+     0.35, 0.23),
 ]
 
 # The FE PZ 16-35mm F4 G: "minimum focusing distances of 0.28 m at the wide end and 0.24 m at the tele end"
