@@ -70,9 +70,22 @@ CITED = [
     # 0.24x (Telephoto)
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 150, 2400, None, (5.6, 22), 0.24),
     ("fujifilm-xf150-600mm-f5.6-8-r-lm-ois-wr", 600, 2400, 0.24, (8, 22), 0.24),
-    # 3.5, 32, 32cm, 0.15x
+    # 3.5, 32, 32cm, 0.15x; ronbuening/LensVisualizer's analysis (GF30_ANALYSIS): 0.32 m, 0.15x, no smallest aperture
     ("fujifilm-gf30mm-f3.5-r-wr", 30, 320, 0.15, (3.5, 32), 0.15),
 ]
+
+# the second source for the GF30mm's closest focus and magnification: "the production minimum-focus endpoint at
+# 0.32 m ... Fujifilm's published minimum focus distance", "Fujifilm's rounded 0.15x production specification"
+GF30_ANALYSIS = ("ronbuening/LensVisualizer src/lens-data/fujifilm/FujifilmFujinonGf30mmf35RWR.analysis.md at "
+                 "2fdb614d56ce2f6297545e2279af61a3bafbdc19")
+
+
+def test_gf30_closest_focus_and_magnification_have_a_second_source_and_only_f32_stays_open():
+    record = record_of(RECORDS, "fujifilm-gf30mm-f3.5-r-wr")
+    assert (record["min_focus_mm"], record["max_magnification"]) == (0.32 * 1000, 0.15)
+    assert GF30_ANALYSIS in " ".join(record["source"].split())
+    notes = " ".join(record["notes"].split())
+    assert record["approximate"] is True and "f/32" in notes and "no second source" in notes
 
 
 def test_every_entry_is_checked_against_its_pages():

@@ -155,7 +155,61 @@ CONFIRMED = {
     "leica-summilux-m-50mm-f1.4-asph-close-focus": "amateurphotographer.com",
     "leica-apo-summicron-m-75mm-f2-asph": "leicasocietyinternational.org",
     "leica-summilux-m-28mm-f1.4-asph": "manualmachine.com",
+    # the LensVisualizer lens-design analyses quoting Ricoh's figures (LENSVISUALIZER below)
+    "pentax-hd-da-16-85mm-f3.5-5.6-ed-dc-wr": "HDPentaxDA1685mmF3556EDDCWR.analysis.md",
+    "pentax-hd-d-fa-star-50mm-f1.4-sdm-aw": "PentaxDFA50mmf14SDM.analysis.md",
+    "pentax-hd-d-fa-star-85mm-f1.4-ed-sdm-aw": "PentaxDFA85mmf14.analysis.md",
+    "pentax-hd-d-fa-21mm-f2.4-ed-limited-dc-wr": "PentaxHDDFA21mmf24Limited.analysis.md",
+    "pentax-hd-da-20-40mm-f2.8-4-ed-limited-dc-wr": "HDPentaxDA2040mmF284EDLimitedDCWR.analysis.md",
+    "pentax-hd-d-fa-150-450mm-f4.5-5.6-ed-dc-aw": "HDPentaxDFA150450mmF4556EDDCAW.analysis.md",
+    "pentax-hd-d-fa-28-105mm-f3.5-5.6-ed-dc-wr": "PentaxDFA28105mmF3556EDDCWR.analysis.md",
 }
+
+# ronbuening/LensVisualizer src/lens-data/pentax/<file> at the commit named: Ricoh's closest focus (m; one figure for
+# a zoom) and maximum magnification as each analysis quotes them
+LENSVISUALIZER = [
+    # "Ricoh Imaging separately identifies the production lens as K-mount/APS-C, with a 0.35 m closest focusing
+    # distance, 0.26x maximum reproduction ratio"
+    ("pentax-hd-da-16-85mm-f3.5-5.6-ed-dc-wr", "HDPentaxDA1685mmF3556EDDCWR.analysis.md",
+     "18469d26c0d70088a1793d5313131d4c1c80a066", 0.35, 0.26),
+    # "PENTAX publishes 0.4 m minimum focusing distance and 0.18x maximum reproduction ratio"
+    ("pentax-hd-d-fa-star-50mm-f1.4-sdm-aw", "PentaxDFA50mmf14SDM.analysis.md",
+     "1e0d09a310a3a4297fd3745ca79ed4f7058d2a26", 0.4, 0.18),
+    # "Ricoh's production values are 85 mm, F1.4, ..., 0.85 m minimum focus, and 0.12x maximum magnification"
+    ("pentax-hd-d-fa-star-85mm-f1.4-ed-sdm-aw", "PentaxDFA85mmf14.analysis.md",
+     "68217595d2740c18db63606c1110e23b5a73f5c7", 0.85, 0.12),
+    # "| Manufacturer minimum focus distance | 0.18 m |", "| Manufacturer maximum magnification | 0.26x |"
+    ("pentax-hd-d-fa-21mm-f2.4-ed-limited-dc-wr", "PentaxHDDFA21mmf24Limited.analysis.md",
+     "5df26445c0a30691542125a52dc263eaeb62a6d7", 0.18, 0.26),
+    # "The production lens provides 0.28 m minimum focus and 0.20x maximum reproduction" (the 0.28 m is also
+    # pentaxforums.com's, named in `source`)
+    ("pentax-hd-da-20-40mm-f2.8-4-ed-limited-dc-wr", "HDPentaxDA2040mmF284EDLimitedDCWR.analysis.md",
+     "18469d26c0d70088a1793d5313131d4c1c80a066", 0.28, 0.2),
+    # "RICOH specifies a 2.0 m minimum focusing distance and 0.22x maximum reproduction ratio"
+    ("pentax-hd-d-fa-150-450mm-f4.5-5.6-ed-dc-aw", "HDPentaxDFA150450mmF4556EDDCAW.analysis.md",
+     "18469d26c0d70088a1793d5313131d4c1c80a066", 2.0, 0.22),
+    # "..., 0.5 m minimum focus, 0.22x maximum reproduction, ... are manufacturer facts"
+    ("pentax-hd-d-fa-28-105mm-f3.5-5.6-ed-dc-wr", "PentaxDFA28105mmF3556EDDCWR.analysis.md",
+     "049a4aeb76e2e3561d630f29a1197182ad78f2fd", 0.5, 0.22),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "name", "commit", "closest_m", "magnification"), LENSVISUALIZER,
+                         ids=[row[0] for row in LENSVISUALIZER])
+def test_figures_against_the_lensvisualizer_analyses(lens_id, name, commit, closest_m, magnification):
+    record = record_of(RECORDS, lens_id)
+    rows = record.get("close_focus") or [{"min_focus_mm": record["min_focus_mm"]}]
+    assert {row["min_focus_mm"] for row in rows} == {round(closest_m * 1000)}
+    assert record["min_focus_mm"] == round(closest_m * 1000)
+    assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    source = " ".join(record["source"].split())
+    assert f"ronbuening/LensVisualizer src/lens-data/pentax/{name} at {commit}" in source
+
+
+def test_the_20_40mm_keeps_its_page_for_the_closest_focus():
+    # pentaxforums.com: "the minimum focusing distance of 28cm"
+    record = record_of(RECORDS, "pentax-hd-da-20-40mm-f2.8-4-ed-limited-dc-wr")
+    assert "pentaxforums.com/reviews/hd-pentax-da-20-40mm-limited/focusing.html" in record["source"] + record["notes"]
 
 # the Leica M lenses whose closest focus is closer than the rangefinder couples (live view only), and those at
 # the rangefinder's own closest focus

@@ -220,21 +220,86 @@ CONFIRMED = {
     "panasonic-lumix-s-24mm-f1.8": "expeditionsinlight.com",
     "leica-apo-summicron-sl-28mm-f2-asph": "leicasocietyinternational.org",
     "leica-apo-summicron-sl-50mm-f2-asph": "fstoppers.com",
+    # the LensVisualizer lens-design analyses quoting Panasonic's figures (LENSVISUALIZER below)
+    "panasonic-lumix-s-pro-24-70mm-f2.8": "PanasonicLumixSPro2470mmf28.analysis.md",
+    "panasonic-lumix-s-pro-70-200mm-f2.8-ois": "PanasonicLumixSPro70200mmf28OIS.analysis.md",
+    "panasonic-lumix-s-pro-50mm-f1.4": "PanasonicSPro50mmf14.analysis.md",
+    "panasonic-leica-dg-summilux-12mm-f1.4": "PanasonicDGSummilux12mmf14.analysis.md",
+    "panasonic-lumix-g-14mm-f2.5-ii": "PanasonicG14mmf25II.analysis.md",
+    "panasonic-lumix-g-25mm-f1.7": "PanasonicLumixG25mmf17.analysis.md",
+    "om-m-zuiko-75mm-f1.8": "OlympusMZuiko75mmf18.analysis.md",
 }
+
+# ronbuening/LensVisualizer src/lens-data/<maker>/<file> at the commit named: the maker's closest focus (m, one
+# figure for the zoom) and maximum magnification as each analysis quotes them ("Panasonic specifies a 0.37 m closest
+# focusing distance and approximately 0.25x maximum magnification"; "Panasonic markets ... 0.95 m closest focus,
+# approximately 0.21x maximum magnification")
+LENSVISUALIZER = [
+    ("panasonic-lumix-s-pro-24-70mm-f2.8", "panasonic/PanasonicLumixSPro2470mmf28.analysis.md",
+     "4e142ee8eff255f820438679aee8906800b33432", 0.37, 0.25),
+    ("panasonic-lumix-s-pro-70-200mm-f2.8-ois", "panasonic/PanasonicLumixSPro70200mmf28OIS.analysis.md",
+     "68d18c304a871fedf2d37fe5b8df4ac30802d500", 0.95, 0.21),
+    # "matches the published 0.44 m", "matches the published 0.15x"
+    ("panasonic-lumix-s-pro-50mm-f1.4", "panasonic/PanasonicSPro50mmf14.analysis.md",
+     "1e0d09a310a3a4297fd3745ca79ed4f7058d2a26", 0.44, 0.15),
+    # "Panasonic's official specification gives ... 0.20 m closest focusing distance, approximately 0.1x maximum
+    # magnification"
+    ("panasonic-leica-dg-summilux-12mm-f1.4", "panasonic/PanasonicDGSummilux12mmf14.analysis.md",
+     "84580191e3db943b3155bccdeb889dc7de716849", 0.2, 0.1),
+    # "Panasonic's published H-H014A specification gives ... 0.18 m closest focusing distance, and approximately
+    # 0.10x maximum magnification"
+    ("panasonic-lumix-g-14mm-f2.5-ii", "panasonic/PanasonicG14mmf25II.analysis.md",
+     "db0caf206caf4004d33c6cc4346e3d501579ba3a", 0.18, 0.1),
+    # "The production specification gives ... 0.25 m minimum focus, 0.14x maximum magnification"
+    ("panasonic-lumix-g-25mm-f1.7", "panasonic/PanasonicLumixG25mmf17.analysis.md",
+     "10f5e4e2eaea63f8cb43943dcdda6ea0f2903232", 0.25, 0.14),
+    # "The production specification states 0.84 m minimum focus and 0.1x maximum magnification"
+    ("om-m-zuiko-75mm-f1.8", "olympus/OlympusMZuiko75mmf18.analysis.md",
+     "62b8fb8168a021cadd55996b45795ffecba8c808", 0.84, 0.1),
+    # "0.24 m (9.5") in Panasonic's specification" (no magnification: the 0.22x stays open, PARTLY_CONFIRMED)
+    ("panasonic-lumix-s-35mm-f1.8", "panasonic/PanasonicS35mmf18.analysis.md",
+     "1e0d09a310a3a4297fd3745ca79ed4f7058d2a26", 0.24, None),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "name", "commit", "closest_m", "magnification"), LENSVISUALIZER,
+                         ids=[row[0] for row in LENSVISUALIZER])
+def test_figures_against_the_lensvisualizer_analyses(lens_id, name, commit, closest_m, magnification):
+    record = record_of(RECORDS, lens_id)
+    rows = record.get("close_focus") or [{"min_focus_mm": record["min_focus_mm"]}]
+    assert {row["min_focus_mm"] for row in rows} == {round(closest_m * 1000)}
+    assert record["min_focus_mm"] == round(closest_m * 1000)
+    if magnification is not None:
+        assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    source = " ".join(record["source"].split())
+    assert f"ronbuening/LensVisualizer src/lens-data/{name} at {commit}" in source
+
+
+def test_the_s_pro_50mm_keeps_its_page_for_the_magnification_and_smallest_aperture():
+    # Les Numériques: Rapport de reproduction 0.15 x, f/16
+    record = record_of(RECORDS, "panasonic-lumix-s-pro-50mm-f1.4")
+    assert "lesnumeriques.com" in record["source"]
+    assert (record["max_magnification"], record["f_number_max"]) == (0.15, 16)
+
+
+def test_the_24_70mm_keeps_its_page_for_the_closest_focus():
+    # Le Monde de la Photo: "La distance minimale de mise au point se situe à 37 cm, quelle que soit la focale"
+    record = record_of(RECORDS, "panasonic-lumix-s-pro-24-70mm-f2.8")
+    assert "lemondedelaphoto.com" in record["source"]
+    assert {row["focal_length_mm"]: row["min_focus_mm"] for row in record["close_focus"]} == {24: 370, 70: 370}
 
 # approximate entries of which a page confirms some figures, not all: the site named in `source`, the closest focus
 # (mm at each focal length) and the maximum magnification it prints (None where it prints none), and the figure the
 # entry's notes must still name as unconfirmed. The Leica DG Summilux 15mm (i-kyon1521.com: 最短撮影距離: 20cm), the
 # Vario-Elmarit 12-35mm (The Phoblographer: 0.15m on the wide end and 0.25 on the longer end; nothing at 17 mm), the
-# M.Zuiko 300mm (ayton.id.au: close focus of only 1.4m), the Lumix S PRO 24-70mm (Le Monde de la Photo: 37 cm,
-# quelle que soit la focale), the Lumix S PRO 50mm (Les Numériques: Rapport de reproduction 0.15 x)
+# M.Zuiko 300mm (ayton.id.au: close focus of only 1.4m), the Lumix S 35mm F1.8 (the LensVisualizer analysis: 0.24 m
+# in Panasonic's specification)
 PARTLY_CONFIRMED = {
     "panasonic-leica-dg-summilux-15mm-f1.7": ("i-kyon1521.com", {15: 200}, None, "maximum magnification 0.1x"),
     "panasonic-leica-dg-vario-elmarit-12-35mm-f2.8": ("thephoblographer.com/2022/12/14", {12: 150, 35: 250}, None,
                                                       "the 17 mm row"),
     "om-m-zuiko-300mm-f4-is-pro": ("ayton.id.au", {300: 1400}, None, "maximum magnification 0.24x"),
-    "panasonic-lumix-s-pro-24-70mm-f2.8": ("lemondedelaphoto.com", {24: 370, 70: 370}, None, "maximum magnification"),
-    "panasonic-lumix-s-pro-50mm-f1.4": ("lesnumeriques.com", {}, 0.15, "closest focus 0.44 m"),
+    "panasonic-lumix-s-35mm-f1.8": ("PanasonicS35mmf18.analysis.md", {35: 240}, None, "maximum magnification 0.22x"),
 }
 
 

@@ -75,9 +75,10 @@ CITED = [
     # SEL1635Z: 0.28 m, 0.19倍
     ("sony-fe-16-35mm-f4-za-oss", 16, 280, None, (4, None), 0.19),
     ("sony-fe-16-35mm-f4-za-oss", 35, 280, None, (4, None), 0.19),
-    # SELP1635G: 0.28 m, 0.23倍
+    # SELP1635G: 0.28 m, 0.23倍; the tele row is the LensVisualizer analysis's (PZ_16_35_PER_END below), the dataset
+    # giving one closest focus for the zoom
     ("sony-fe-pz-16-35mm-f4-g", 16, 280, None, (4, None), 0.23),
-    ("sony-fe-pz-16-35mm-f4-g", 35, 280, None, (4, None), 0.23),
+    ("sony-fe-pz-16-35mm-f4-g", 35, 240, None, (4, None), 0.23),
     # SEL2070G: 0.3 m (AF・ワイド端)/望遠端0.25m, 0.39倍
     ("sony-fe-20-70mm-f4-g", 20, 300, None, (4, 22), 0.39),
     ("sony-fe-20-70mm-f4-g", 70, 250, None, (4, 22), 0.39),
@@ -186,11 +187,63 @@ CLOSEST_FOCUS_SECOND_SOURCE = {
     "sony-fe-35mm-f1.4-za": {35: 300}, "sony-fe-35mm-f2.8-za": {35: 350},
     "sony-fe-50mm-f1.4-za": {50: 450}, "sony-fe-55mm-f1.8-za": {55: 500}, "sony-fe-50mm-f2.8-macro": {50: 160},
     "sony-fe-20-70mm-f4-g": {20: 300, 70: 250}, "sony-e-20mm-f2.8": {20: 200}, "sony-e-30mm-f3.5-macro": {30: 95},
+    # the LensVisualizer analyses quoting Sony's specification (LENSVISUALIZER below)
+    "sony-fe-14mm-f1.8-gm": {14: 250}, "sony-fe-24mm-f2.8-g": {24: 240}, "sony-fe-50mm-f1.4-gm": {50: 410},
+    "sony-fe-85mm-f1.4-gm": {85: 850}, "sony-fe-135mm-f1.8-gm": {135: 700}, "sony-e-50mm-f1.8-oss": {50: 390},
+    "sony-fe-12-24mm-f2.8-gm": {12: 280, 24: 280}, "sony-e-18-200mm-f3.5-6.3-oss-le": {18: 500, 200: 500},
+    "sony-fe-85mm-f1.4-gm-ii": {85: 850}, "sony-fe-16-35mm-f2.8-gm-ii": {16: 220, 35: 220},
+    "sony-fe-16-35mm-f4-za-oss": {16: 280, 35: 280}, "sony-e-16-70mm-f4-za-oss": {16: 350, 70: 350},
 }
+
+# ronbuening/LensVisualizer's lens-design analyses (src/lens-data/sony/<file>.analysis.md at the commit named), each
+# quoting Sony's published closest focus (m) and, where it does, the maximum magnification: a second source beside
+# isamu/lens-database, cited with path and commit in the entry's `source`
+LENSVISUALIZER = [
+    # "Sony's published production specification gives ... 0.25 m minimum focus distance"
+    ("sony-fe-14mm-f1.8-gm", "SonyFE14mmf18GM", "45552be52c68deb88cff1e9ec110386ab6d3ab74", 0.25, None),
+    # "Sony publishes 0.18 m minimum focus in MF and 0.24 m in AF"
+    ("sony-fe-24mm-f2.8-g", "SonyFE24mmf28G", "3c4ecfc621e6b970cc04c94da5780c643a291de5", 0.24, None),
+    # "Sony specifies 0.41 m minimum focus in AF and 0.38 m in MF"
+    ("sony-fe-50mm-f1.4-gm", "SonyFE50mmF14GM", "1d8ae14ed1cb6ac0468d66e414d2946531932533", 0.41, None),
+    # "Sony specifies AF minimum focus 0.85 m, MF minimum focus 0.8 m, and 0.12x maximum magnification"
+    ("sony-fe-85mm-f1.4-gm", "SonyFE85mmF14GM", "84b8ea6e6e4f24ef0b12b62a9179dd405d7e9672", 0.85, 0.12),
+    # "Sony's 0.7 m (0.25x magnification) specification"
+    ("sony-fe-135mm-f1.8-gm", "SonyFE135mmf18GM", "02d22c22869e50fe8cf3482ebd141e3811d1d1f1", 0.7, 0.25),
+    # "Sony markets 0.39 m minimum focus and 0.16x maximum magnification"
+    ("sony-e-50mm-f1.8-oss", "SonyE50mmf18OSS", "59eef61956e8cfe28ef3ec6173443801ef439ce1", 0.39, 0.16),
+    # "Sony's 0.28 m minimum focus distance" (one figure for the zoom)
+    ("sony-fe-12-24mm-f2.8-gm", "SonyFE1224mmf28GM", "23631dc0f77a149cf14f8fa62ff66779dfe16b65", 0.28, None),
+    # "Sony specifies a 0.5 m minimum focus distance for SEL18200LE" ... "Sony specifies 0.27x maximum magnification"
+    ("sony-e-18-200mm-f3.5-6.3-oss-le", "SonyE18200mmf3563OSSLE", "59eef61956e8cfe28ef3ec6173443801ef439ce1", 0.5, 0.27),
+    # "consistent with Sony's published MFD of 0.85 m (AF) / 0.80 m (MF)"
+    ("sony-fe-85mm-f1.4-gm-ii", "SonyFE85mmf14GMII", "28fd36e77e69a1ce097fece706d3a32aa98a7b0c", 0.85, None),
+    # "Sony's production specification gives a shorter minimum focus distance of 0.22 m and a maximum magnification
+    # of 0.32x" (one figure for the zoom)
+    ("sony-fe-16-35mm-f2.8-gm-ii", "SonyFE1635mmf28GMII", "6bacd763baa1b4acedb0fdc5a2b506a137382f94", 0.22, 0.32),
+    # "Sony specifies a 0.28 m minimum focus distance for the SEL1635Z", "Sony's rounded 0.19x production
+    # specification"
+    ("sony-fe-16-35mm-f4-za-oss", "SonyVarioTessarTFE1635mmf4ZAOSS", "3e2008a7bdba6b24289ce618b2e7f823d228261c",
+     0.28, 0.19),
+    # "Sony's published 0.35 m minimum focus distance", "Sony's rounded 0.23x maximum magnification specification"
+    ("sony-e-16-70mm-f4-za-oss", "SonyVarioTessarTE1670mmf4ZAOSS", "3e2008a7bdba6b24289ce618b2e7f823d228261c",
+     0.35, 0.23),
+]
+
+# The FE PZ 16-35mm F4 G: "minimum focusing distances of 0.28 m at the wide end and 0.24 m at the tele end"
+# (ronbuening/LensVisualizer src/lens-data/sony/SonyFEPZ1635mmf4G.analysis.md at 22b7f670), where isamu/lens-database
+# gives one figure, 0.28 m, for the zoom: the maker's per-end figures as the analysis quotes them
+PZ_16_35_PER_END = {16: 280, 35: 240}
+# ... and the one quoting Sony's magnification but its closest focus only as "a minimum-focus range of approximately
+# 0.40-0.74 m" (not entered as a confirmation: the ends are not named)
+LENSVISUALIZER_MAGNIFICATION = [
+    ("sony-fe-50-150mm-f2-gm", "SonyFE50150mmF2GM", "3edd4b23f7b60dab6337ec09c0fabf6494f9c989", 0.2),
+]
 # A magnification a page prints: photonique.org, 0.5x across the entire zoom range; ino.lomo.jp, SEL2070G 0.39倍;
 # chatgpt4000.com, FE50mm F1.2 GM 0.17倍; Focus Numérique, FE 50 mm f/2,8 Macro: le rapport macro 1:1
 MAGNIFICATION_SECOND_SOURCE = {"sony-fe-70-200mm-f4-macro-g-oss-ii": 0.5, "sony-fe-20-70mm-f4-g": 0.39,
-                               "sony-fe-50mm-f1.2-gm": 0.17, "sony-fe-50mm-f2.8-macro": 1}
+                               "sony-fe-50mm-f1.2-gm": 0.17, "sony-fe-50mm-f2.8-macro": 1,
+                               # the LensVisualizer analysis (LENSVISUALIZER below)
+                               "sony-fe-50-150mm-f2-gm": 0.2, "sony-fe-16-35mm-f2.8-gm-ii": 0.32}
 
 # Sony's manual-focus closest focus (mm), closer than the autofocus one the entry keeps (isamu's notes: MF時)
 MANUAL_FOCUS = {
@@ -247,6 +300,40 @@ SECOND_MAGNIFICATION_PAGE = {"sony-fe-50mm-f2.8-macro": "focus-numerique.com/tes
 @pytest.mark.parametrize(("lens_id", "page"), sorted(SECOND_SOURCE_PAGE.items()) + sorted(SECOND_MAGNIFICATION_PAGE.items()))
 def test_the_second_source_is_named(lens_id, page):
     assert page in record_of(RECORDS, lens_id)["source"]
+
+
+@pytest.mark.parametrize(("lens_id", "stem", "commit", "closest_m", "magnification"), LENSVISUALIZER,
+                         ids=[row[0] for row in LENSVISUALIZER])
+def test_figures_against_the_lensvisualizer_analyses(lens_id, stem, commit, closest_m, magnification):
+    record = record_of(RECORDS, lens_id)
+    rows = record.get("close_focus") or [{"min_focus_mm": record["min_focus_mm"]}]
+    assert {row["min_focus_mm"] for row in rows} == {round(closest_m * 1000)}
+    assert record["min_focus_mm"] == round(closest_m * 1000)
+    if magnification is not None:
+        assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    source = " ".join(record["source"].split())
+    assert f"ronbuening/LensVisualizer src/lens-data/sony/{stem}.analysis.md at {commit}" in source
+
+
+def test_pz_16_35_takes_the_per_end_closest_focus_the_analysis_quotes():
+    record = record_of(RECORDS, "sony-fe-pz-16-35mm-f4-g")
+    assert {row["focal_length_mm"]: row["min_focus_mm"] for row in record["close_focus"]} == PZ_16_35_PER_END
+    assert record["min_focus_mm"] == min(PZ_16_35_PER_END.values())
+    source = " ".join(record["source"].split())
+    assert ("ronbuening/LensVisualizer src/lens-data/sony/SonyFEPZ1635mmf4G.analysis.md at "
+            "22b7f67002e217f655ab832364e47f6b6c715e63") in source
+    assert "0.28 m, 0.23倍" in source  # the dataset's one figure, kept in the citation
+    assert record["approximate"] is True and "0.24 m at the tele end" in " ".join(record["notes"].split())
+
+
+@pytest.mark.parametrize(("lens_id", "stem", "commit", "magnification"), LENSVISUALIZER_MAGNIFICATION,
+                         ids=[row[0] for row in LENSVISUALIZER_MAGNIFICATION])
+def test_magnification_against_the_lensvisualizer_analyses(lens_id, stem, commit, magnification):
+    record = record_of(RECORDS, lens_id)
+    assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    assert record.get("approximate") is True
+    source = " ".join(record["source"].split())
+    assert f"ronbuening/LensVisualizer src/lens-data/sony/{stem}.analysis.md at {commit}" in source
 
 
 @pytest.mark.parametrize(("lens_id", "manual"), sorted(MANUAL_FOCUS.items()))

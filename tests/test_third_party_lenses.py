@@ -51,8 +51,10 @@ CITED = [
     ("sigma-50mm-f1.2-dg-dn-art", 50, 400, 0.161, (1.2, 16)),
     # Sigma Suisse: 15 mm f/1.4, 38.5 cm
     ("sigma-15mm-f1.4-dg-dn-diagonal-fisheye-art", 15, 385, None, (1.4, None)),
-    # Webnews: f/1.4 to f/16, 28 cm
-    ("sigma-28mm-f1.4-dg-hsm-art", 28, 280, None, (1.4, 16)),
+    # Webnews: f/1.4 to f/16, 28 cm; ronbuening/LensVisualizer src/lens-data/sigma/Sigma28mmf14DGHSMA.analysis.md
+    # at 2dcf6ef8 (LENSVISUALIZER below): "Sigma's specification gives ... a 0.28 m minimum focusing distance, 1:5.4
+    # maximum magnification"
+    ("sigma-28mm-f1.4-dg-hsm-art", 28, 280, 1 / 5.4, (1.4, 16)),
     # No Film School: f/16, 40 cm, 1:5.6
     ("sigma-50mm-f1.4-dg-hsm-art", 50, 400, 1 / 5.6, (1.4, 16)),
     # Dennis Sassmannshausen's review: 0.875 m, F1.8
@@ -163,6 +165,21 @@ FISHEYES = [
     ("sigma-8mm-f3.5-ex-dg-circular-fisheye", "equisolid", 180),  # Wikipedia (ja): Sigma's are equisolid
     ("sigma-8mm-f4-ex-circular-fisheye", "equisolid", 180),  # Wikipedia (ja); Impress: 180° on Four Thirds
 ]
+
+
+# the LensVisualizer lens-design analyses quoted in `source` beside the pages: lens, analysis path, commit
+LENSVISUALIZER = [
+    ("sigma-28mm-f1.4-dg-hsm-art", "src/lens-data/sigma/Sigma28mmf14DGHSMA.analysis.md",
+     "2dcf6ef8b666ae7c04f463d51d84bc023776b169"),
+]
+
+
+@pytest.mark.parametrize(("lens_id", "path", "commit"), LENSVISUALIZER)
+def test_the_lensvisualizer_analysis_is_cited_with_path_and_commit(lens_id, path, commit):
+    record = record_of(RECORDS, lens_id)
+    assert f"ronbuening/LensVisualizer {path} at {commit}" in " ".join(record["source"].split())
+    # a magnification only one source gives keeps the entry approximate, its note naming the figure
+    assert record["approximate"] is True and "1:5.4" in " ".join(record["notes"].split())
 
 
 def test_every_entry_is_checked_against_its_page():
