@@ -606,7 +606,9 @@ def hyperfocal_distance(
 
         preset_lens = preset("lens", lens)
         focal = list(map(float, getattr(focal_length_mm, "ravel", lambda: [focal_length_mm])()))
-        equipment.check_lens(preset_lens, focal_lengths=focal, f_numbers=[], distances_mm=[])
+        apertures = list(map(float, getattr(f_number, "ravel", lambda: [f_number])()))
+        # the lens's own range, as --lens bounds -f and -N on the command line
+        equipment.check_lens(preset_lens, focal_lengths=focal, f_numbers=apertures, distances_mm=[])
     if focal_length_mm is None and data is not None and data.prescription is not None:
         from camtool.dof.ladder import prescription_focal_length
 
@@ -1013,6 +1015,11 @@ def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_m
     from camtool.plans.stack import bracket_stack as plan
 
     preset_lens = preset("lens", lens) if lens is not None else None
+    if preset_lens is not None:  # the lens's own range, as --lens bounds -f and -N on the command line
+        from camtool.plans import equipment
+
+        equipment.check_lens(preset_lens, focal_lengths=[float(focal_length_mm)], f_numbers=[float(f_number)],
+                             distances_mm=[])
     data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
     return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
                 overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,

@@ -19,7 +19,7 @@ import camtool
 from camtool import api
 from camtool.cli import cli
 from camtool.cli.params import AngleType, FNumberType, LengthType, NumberType, Parsed
-from camtool.core.errors import DomainError
+from camtool.core.errors import DomainError, InputError
 
 # API argument -> (command, option parameter name)
 STANDS_FOR = {
@@ -157,3 +157,23 @@ def test_every_squeeze_takes_one_range_option_preset_and_plan() -> None:
             squeeze_factor(value)
         with pytest.raises(DomainError):
             lens_squeeze(None, squeeze=value)
+
+
+@pytest.mark.parametrize(("command", "call", "given"), [
+    (["hyperfocal", "--lens", "nikon-z-24mm-f1.8-s", "-N", "32"],
+     lambda: camtool.hyperfocal_distance(focal_length_mm=24, f_number=32, coc_mm=0.03, lens="nikon-z-24mm-f1.8-s"),
+     "f/32"),
+    (["stack", "--lens", "nikon-z-24mm-f1.8-s", "-f", "1400", "-N", "8", "--near", "1m", "--far", "inf"],
+     lambda: camtool.bracket_stack(1400, 8, 0.03, 1000, float("inf"), lens="nikon-z-24mm-f1.8-s"), "1400 mm"),
+    (["stack", "--lens", "nikon-z-24mm-f1.8-s", "-N", "22", "--near", "1m", "--far", "inf"],
+     lambda: camtool.bracket_stack(24, 22, 0.03, 1000, float("inf"), lens="nikon-z-24mm-f1.8-s"), "f/22"),
+])
+def test_a_lens_preset_bounds_the_api_as_it_bounds_the_command(command, call, given) -> None:
+    # the lens's own focal length and apertures (NIKKOR Z 24mm f/1.8 S: 24 mm, f/1.8 to f/16), whichever way
+    # it is asked; the API fuzz found bracket_stack taking 1400 mm on a 24 mm prime (and dividing by zero)
+    from cli_helpers import run
+
+    result = run(*command)
+    assert result.exit_code == 2 and f"{given} is outside the valid range of --lens nikon-z-24mm-f1.8-s" in result.stderr
+    with pytest.raises(InputError, match=f"{given} is outside the valid range of lens nikon-z-24mm-f1.8-s"):
+        call()
