@@ -109,7 +109,9 @@ def test_scalar_and_array_shares_agree():
 
 
 def _shipped_file() -> dict:
-    return json.loads((Path(auto.__file__).parent / auto.SHIPPED_TABLES).read_text(encoding="utf-8"))
+    document = json.loads((Path(auto.__file__).parent / auto.SHIPPED_TABLES).read_text(encoding="utf-8"))
+    assert all(isinstance(text, str) for text in document["tables"].values())  # each table a JSON text of its own
+    return {**document, "tables": {source: json.loads(text) for source, text in document["tables"].items()}}
 
 
 def test_the_shipped_tables_are_those_of_the_shipped_prescriptions_computed_afresh():
@@ -142,7 +144,7 @@ def _fresh(monkeypatch, tmp_path, shipped: dict) -> None:
 
 
 @pytest.mark.parametrize("poison", ["a negative share", "NaN", "another grid", "other magnifications", "not a table",
-                                    "a string share", "rows missing"])
+                                    "a string share", "rows missing", "a JSON text cut short"])
 def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypatch, tmp_path):
     from camtool.presets import shipped as tables
 
@@ -161,6 +163,8 @@ def test_a_shipped_table_that_fails_a_check_is_computed_afresh(poison, monkeypat
         table = [1, 2, 3]
     elif poison == "a string share":
         table["table"][0][0][1] = "0.1"
+    elif poison == "a JSON text cut short":  # as the file holds each table: a text, parsed when it is used
+        table = json.dumps(table)[:-7]
     else:
         table["table"] = table["table"][:-1]
     _fresh(monkeypatch, tmp_path, {source: table})

@@ -370,7 +370,8 @@ SHIPPED_TABLES = "aberrations.json"
 Written by ``python -m camtool.presets.shipped`` (:mod:`camtool.presets.shipped`); each
 table is keyed by the :func:`_source` digest of the prescription it was
 computed for, so an edited prescription, another grid or another table
-version finds no table there and is computed afresh.
+version finds no table there and is computed afresh. Each table is a JSON
+text of its own, parsed only when its prescription is used.
 """
 
 
@@ -398,7 +399,15 @@ def _shipped_table(source: str, prescription: Any) -> Table | None:
     calibration could not give (another grid, other magnifications, a
     share that is not a finite number ≥ 0) is refused and computed afresh.
     """
-    return _valid_table(_shipped().get(source), prescription)
+    table = _shipped().get(source)
+    if isinstance(table, str):  # each table is a JSON text of its own, parsed when its prescription is used
+        import json
+
+        try:
+            table = json.loads(table)
+        except (ValueError, RecursionError):
+            return None
+    return _valid_table(table, prescription)
 
 
 def _content(prescription: Any) -> str:

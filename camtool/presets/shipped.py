@@ -106,7 +106,9 @@ def tables_document() -> dict[str, Any]:
     for name, prescription in shipped_prescriptions():
         source = auto._source(prescription)
         grid, rows = auto._compute_table(prescription)
-        tables[source] = {"f_numbers": list(grid), "table": [[list(pair) for pair in row] for row in rows]}
+        # each table a JSON text of its own: a command parses the one table of its prescription, not all of them
+        tables[source] = json.dumps({"f_numbers": list(grid), "table": [[list(pair) for pair in row] for row in rows]},
+                                    separators=(",", ":"), allow_nan=False)
         names[source] = name
     return {"version": auto._TABLE_VERSION, "prescriptions": names, "tables": tables}
 
