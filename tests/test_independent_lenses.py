@@ -73,7 +73,7 @@ CITED = [
     ("tamron-50-400mm-f4.5-6.3-di-iii-vc-vxd", 400, 1500, 0.25, (6.3, None), 0.5),
     # A069: wide 0.22 m (1:2 in MF) / tele 0.9 m (Phototrend: ouverture min f/22-f/32)
     ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", 50, 220, 0.5, (4.5, 22), 0.5),
-    ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", 300, 900, None, (6.3, 32), 0.5),
+    ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", 300, 900, 0.323, (6.3, 32), 0.5),  # 1:3.1 (LensVisualizer)
     # A074: wide 0.19 m / tele 0.99 m, 0.36
     ("tamron-28-300mm-f4-7.1-di-iii-vc-vxd", 28, 190, None, (4, None), 0.36),
     ("tamron-28-300mm-f4-7.1-di-iii-vc-vxd", 300, 990, None, (7.1, None), 0.36),
@@ -105,6 +105,8 @@ CONFIRMED = [
     ("tamron-50-400mm-f4.5-6.3-di-iii-vc-vxd", "tele max", 0.25, "Photography Life: 0.25x (1:4) at 400mm"),
     ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", "wide mm", 220, "LensVisualizer: Tamron's MOD 0.22 m at wide"),
     ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", "tele mm", 900, "LensVisualizer: 0.9 m at tele"),
+    ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", "wide max", 0.5,
+        "LensVisualizer: 'with maximum magnifications of 1:2 and 1:3.1 respectively'"),
     ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", "f_number_max", 22, "Phototrend: ouverture min f/22"),
     ("tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd", "f_number_max_tele", 32, "Phototrend: f/32"),
     ("tamron-28-300mm-f4-7.1-di-iii-vc-vxd", "max", 0.36, "The-Digital-Picture: 0.36x maximum magnification"),
@@ -317,3 +319,16 @@ def test_dof_refuses_closer_than_the_published_closest_focus():
     result = run("dof", "--lens", "tamron-a067", "-f", "400", "-N", "8", "-s", "1.2m")
     assert result.exit_code == 2
     assert "1.5 m" in result.output
+
+
+def test_tamron_50_300_takes_tamrons_1_to_3_1_at_300mm():
+    # LensVisualizer's analysis quoting Tamron: 1:2 at 50 mm and 1:3.1 at 300 mm; the 300 mm row holds 1/3.1 to
+    # three places and the model there reaches it, not the 1:2 of the wide end
+    record = record_of(RECORDS, "tamron-50-300mm-f4.5-6.3-di-iii-vc-vxd")
+    source = " ".join(record["source"].split())
+    assert ("ronbuening/LensVisualizer src/lens-data/tamron/TamronA06950300mmf4563.analysis.md at "
+            "571c53e5e6f2d99d40fedc011f78d2c89091914d") in source
+    tele = record["close_focus"][-1]
+    assert tele["focal_length_mm"] == 300 and tele["max_magnification"] == pytest.approx(1 / 3.1, abs=0.0006)
+    model = focus_model(load_db().lens(record["id"]), 300.0)
+    assert internal_focus_at_distance(model, 900.0)[0] == pytest.approx(tele["max_magnification"], rel=1e-6)

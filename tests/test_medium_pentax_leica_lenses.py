@@ -105,7 +105,7 @@ CITED = [
     # HD DA 55-300mm PLM: 0.95, 0.3
     ("pentax-hd-da-55-300mm-f4.5-6.3-ed-plm-wr-re", 55, 950, None, (4.5, None), 0.3),
     ("pentax-hd-da-55-300mm-f4.5-6.3-ed-plm-wr-re", 300, 950, None, (6.3, None), 0.3),
-    # HD D FA★70-200mm: 1.2, 0.13
+    # HD D FA★70-200mm: 1.2, 0.13; the LensVisualizer analysis quotes Ricoh's 1.2 m and 0.13x (LENSVISUALIZER)
     ("pentax-hd-d-fa-star-70-200mm-f2.8-ed-dc-aw", 70, 1200, None, (2.8, None), 0.13),
     ("pentax-hd-d-fa-star-70-200mm-f2.8-ed-dc-aw", 200, 1200, None, (2.8, None), 0.13),
     # HD D FA 150-450mm: 2, 0.22
@@ -163,6 +163,7 @@ CONFIRMED = {
     "pentax-hd-da-20-40mm-f2.8-4-ed-limited-dc-wr": "HDPentaxDA2040mmF284EDLimitedDCWR.analysis.md",
     "pentax-hd-d-fa-150-450mm-f4.5-5.6-ed-dc-aw": "HDPentaxDFA150450mmF4556EDDCAW.analysis.md",
     "pentax-hd-d-fa-28-105mm-f3.5-5.6-ed-dc-wr": "PentaxDFA28105mmF3556EDDCWR.analysis.md",
+    "pentax-hd-d-fa-star-70-200mm-f2.8-ed-dc-aw": "PentaxDFA70200mmF28EDDCWR.analysis.md",
 }
 
 # ronbuening/LensVisualizer src/lens-data/pentax/<file> at the commit named: Ricoh's closest focus (m; one figure for
@@ -191,6 +192,10 @@ LENSVISUALIZER = [
     # "..., 0.5 m minimum focus, 0.22x maximum reproduction, ... are manufacturer facts"
     ("pentax-hd-d-fa-28-105mm-f3.5-5.6-ed-dc-wr", "PentaxDFA28105mmF3556EDDCWR.analysis.md",
      "049a4aeb76e2e3561d630f29a1197182ad78f2fd", 0.5, 0.22),
+    # "solved at the official 1.2 m minimum focus distance, measured from the fixed image plane", "the
+    # manufacturer's rounded 0.13× specification"
+    ("pentax-hd-d-fa-star-70-200mm-f2.8-ed-dc-aw", "PentaxDFA70200mmF28EDDCWR.analysis.md",
+     "049a4aeb76e2e3561d630f29a1197182ad78f2fd", 1.2, 0.13),
 ]
 
 

@@ -60,9 +60,10 @@ CITED = [
     # nikon/z/zoom.js: 0.15, 0.24
     ("nikon-z-dx-16-50mm-f2.8-vr", 16, 150, None, (2.8, None), 0.24),
     ("nikon-z-dx-16-50mm-f2.8-vr", 50, 150, None, (2.8, None), 0.24),
-    # nikon/z/zoom.js: 0.2, 0.33
+    # nikon/z/zoom.js: 0.2, 0.33; LensVisualizer (Nikon's published specifications): 0.2 m at 18 mm, 0.4 m at
+    # 100-140 mm, 0.33x at the telephoto end
     ("nikon-z-dx-18-140mm-f3.5-6.3-vr", 18, 200, None, (3.5, None), 0.33),
-    ("nikon-z-dx-18-140mm-f3.5-6.3-vr", 140, 200, None, (6.3, None), 0.33),
+    ("nikon-z-dx-18-140mm-f3.5-6.3-vr", 140, 400, 0.33, (6.3, None), 0.33),
     # nikon/z/prime.js: 0.16, 0.67 (最大撮影倍率0.67倍)
     ("nikon-z-dx-mc-35mm-f1.7", 35, 160, 0.67, (1.7, None), 0.67),
     # nikon/z/prime.js: 0.85; Photography Life review: 0.11x
@@ -182,6 +183,21 @@ def test_z_24_70_ii_reaches_each_published_magnification_at_its_own_distance():
         model = focus_model(lens, focal)
         assert model.min_focus_mm == distance
         assert internal_focus_at_distance(model, distance)[0] == pytest.approx(published, rel=1e-6)
+
+
+def test_z_dx_18_140_quotes_the_analysis_for_the_telephoto_row():
+    # LensVisualizer's analysis quoting Nikon: 0.4 m at 100-140 mm and 0.33x at the telephoto end, where the dataset
+    # gives the lens one closest focus (0.2 m); the model reaches the 0.33x at 0.4 m and 140 mm
+    record = record_of(RECORDS, "nikon-z-dx-18-140mm-f3.5-6.3-vr")
+    source = " ".join(record["source"].split())
+    assert ("ronbuening/LensVisualizer src/lens-data/nikon/NikonZDX18140mmf3563VR.analysis.md at "
+            "0e0fdb75faa403fcb6ff93c07581459fc687b059") in source
+    assert "0.2 m at 18 mm (wide), increasing to 0.4 m at 100–140 mm (tele)" in source
+    assert "maximum reproduction ratio of 0.33× at the telephoto end" in source
+    assert "minFocusDistance 0.2, maxMagnification 0.33" in source
+    model = focus_model(load_db().lens("nikon-z-dx-18-140mm-f3.5-6.3-vr"), 140.0)
+    assert model.min_focus_mm == 400.0
+    assert internal_focus_at_distance(model, 400.0)[0] == pytest.approx(0.33, rel=1e-6)
 
 
 def test_xf100_400_at_100mm_stays_below_the_telephoto_figure():

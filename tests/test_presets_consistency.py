@@ -334,6 +334,9 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("pentax-smc-da-star-300mm-f4-ed-if-sdm", 300.0),
     # viltrox-samyang-lenses.yaml, internal focusing: 0.35 m with 0.12x implies about 33 mm (Samyang AF 35mm F2.8 FE)
     ("samyang-af-35mm-f2.8-fe", 35.0),
+    # viltrox-samyang-lenses.yaml, internal focusing by one negative inner element: 0.6 m with 0.1x implies about
+    # 50 mm (Viltrox AF 56mm F1.4; its design analysis traces the patent's 0.63 m state to 0.088x)
+    ("viltrox-af-56mm-f1.4", 56.0),
     # more-current-lenses.yaml, internal focusing: 0.37 m with 0.17x implies about 46 mm (NIKKOR Z 50mm f/1.4)
     ("nikon-z-50mm-f1.4", 50.0),
 }

@@ -49,15 +49,15 @@ CITED = [
     ("viltrox-af-13mm-f1.4", 13, 200, None, (1.4, None), None),
     ("viltrox-af-23mm-f1.4", 23, 300, None, (1.4, None), None),
     ("viltrox-af-25mm-f1.7-air", 25, 290, None, (1.7, None), None),
-    ("viltrox-af-27mm-f1.2-pro", 27, 280, None, (1.2, None), None),
+    ("viltrox-af-27mm-f1.2-pro", 27, 280, 0.15, (1.2, None), 0.15),  # the analysis quoting Viltrox
     ("viltrox-af-33mm-f1.4", 33, 400, None, (1.4, None), None),
-    ("viltrox-af-56mm-f1.4", 56, 600, None, (1.4, None), None),
+    ("viltrox-af-56mm-f1.4", 56, 600, 0.1, (1.4, None), 0.1),  # the analysis quoting Viltrox
     ("viltrox-af-56mm-f1.7-air", 56, 550, None, (1.7, None), None),
     ("viltrox-af-75mm-f1.2-pro", 75, 880, None, (1.2, None), None),
     ("samyang-af-14mm-f2.8-fe", 14, 200, None, (2.8, None), None),
     ("samyang-af-18mm-f2.8-fe", 18, 250, None, (2.8, None), None),
     ("samyang-af-24mm-f1.8-fe", 24, 190, 0.21, (1.8, None), 0.21),  # the maker's 0.21x, not the dataset's 0.15x
-    ("samyang-af-24mm-f2.8-fe", 24, 240, None, (2.8, None), None),
+    ("samyang-af-24mm-f2.8-fe", 24, 240, 0.13, (2.8, None), 0.13),  # the analysis quoting Samyang
     ("samyang-af-35mm-f2.8-fe", 35, 350, 0.12, (2.8, None), 0.12),
     ("samyang-af-35mm-f1.4-fe-ii", 35, 280, None, (1.4, None), None),
     ("samyang-af-35mm-f1.8-fe", 35, 290, None, (1.8, None), None),
@@ -128,6 +128,19 @@ ANALYSIS_MAGNIFICATION = {
                                 "near the manufacturer's rounded 0.21× maximum magnification", 0.21),
 }
 
+# a maximum magnification no dataset gives, quoted by a design analysis as the maker's: (file, commit, the words it
+# prints, the figure entered)
+ANALYSIS_QUOTED = {
+    "viltrox-af-27mm-f1.2-pro": ("viltrox/ViltroxAF27mmf12XF.analysis.md", "56c99ef6bf15cc3a3f49902ac4a9b6142b46ed7c",
+                                 "Viltrox's 0.28 m minimum shooting distance and 0.15× maximum magnification", 0.15),
+    "viltrox-af-56mm-f1.4": ("viltrox/ViltroxAF56mmf14E.analysis.md", "56c99ef6bf15cc3a3f49902ac4a9b6142b46ed7c",
+                             "Viltrox markets the production lens with a 0.6 m minimum focus distance and 0.1× maximum "
+                             "magnification", 0.1),
+    "samyang-af-24mm-f2.8-fe": ("samyang/SamyangAF24mmf28FE.analysis.md", "8555a3ed879bb45b038d770ad922cf36f5bfa7a5",
+                                "Samyang specifies a 0.24 m minimum focus distance and 0.13× maximum magnification",
+                                0.13),
+}
+
 # Figures a page confirms, as it prints them: (lens, what, value, page quoted in `source`)
 CONFIRMED = [
     ("viltrox-af-28mm-f4.5-fe", "f_number_max", 4.5, "rustyruin.blog/tag/viltrox"),  # always operating at f4.5
@@ -178,6 +191,18 @@ def source_of(record):
     return " ".join(record["source"].split())
 
 
+@pytest.mark.parametrize("lens_id", sorted(ANALYSIS_QUOTED))
+def test_a_design_analysis_quoting_the_makers_magnification(lens_id):
+    # the magnification no dataset gives, entered as the design analysis quotes the maker's figure, and the
+    # entry still approximate with the notes naming it as the one source's
+    record = record_of(RECORDS, lens_id)
+    path, commit, words, entered = ANALYSIS_QUOTED[lens_id]
+    assert f"{LV}{path} at {commit}" in source_of(record) and words in source_of(record)
+    assert f"{entered:g}× maximum magnification" in words
+    assert record["max_magnification"] == entered and DATASET[lens_id][1] is None
+    assert record["approximate"] is True and f"magnification ({entered:g}x)" in " ".join(record["notes"].split())
+
+
 def test_every_entry_is_checked_against_its_source():
     check_every_entry_cited(RECORDS, CITED)
     ids = {r["id"] for r in RECORDS}
@@ -198,7 +223,7 @@ def test_figures_against_the_cited_source(lens_id, focal, distance, magnificatio
     assert distance == round(expected * 1000)
     # its magnification: the maker's as a design analysis quotes it where the dataset disagrees, else the
     # dataset's, or the maker's as a lens-design file quotes it
-    published = ((ANALYSIS_MAGNIFICATION.get(lens_id) or (None,) * 4)[3]
+    published = ((ANALYSIS_MAGNIFICATION.get(lens_id) or ANALYSIS_QUOTED.get(lens_id) or (None,) * 4)[3]
                  or DATASET.get(lens_id, (None, None))[1] or DESIGN_MAGNIFICATION.get(lens_id))
     assert magnification == published
 
