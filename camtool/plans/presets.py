@@ -74,7 +74,8 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
         if shipped is not None:  # the shipped files alone, as the build listed them (the same rows, not rebuilt)
             from camtool.presets.paths import shipped_dir
 
-            directory, files = shipped_dir(), {}  # a file's path joined once, not once a row
+            directory = shipped_dir()
+            files: dict[str, str] = {}  # a file's path joined once, not once a row
             for preset_id, name, aliases, line, origin in shipped:
                 if not needle or needle in " ".join([preset_id, name, *aliases]).lower():
                     path = files.get(origin) or files.setdefault(origin, os.path.join(directory, *origin.split("/")))
