@@ -36,6 +36,7 @@ import math
 import os
 from typing import Any
 
+from camtool.core import cache
 from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
 from camtool.presets.kinds import KINDS, REFERENCES, SECTIONS, normalize
@@ -144,10 +145,7 @@ class FileData:
         self._handed = cached.handed
         raw = cached.raw
         if raw is None:  # shipped records taken on the file's remembered digest: its bytes were not read
-            try:
-                raw = read_bytes(self.path, MAX_BYTES)
-            except FileProblem as problem:
-                raise PresetFileError(self.path, problem.problem, line=problem.line) from None
+            raw = _read_or_raise(self.path)
         data = _parse_or_raise(self.path, raw)
         self._records = data._records
         if cached.source is not None:  # a shipped section that failed its digest has no cache entry to mend
@@ -204,7 +202,7 @@ class _Cached:
             span = self.sections.get(name)
             if span is not None:
                 blob = self.body[span[0]:span[0] + span[1]]
-                if self.digests is None or self.digests.get(name) == _source_digest(blob):
+                if self.digests is None or self.digests.get(name) == cache.source_digest(blob):
                     try:
                         value = json.loads(blob)
                     except (ValueError, RecursionError):
@@ -274,7 +272,7 @@ class _Cached:
         if kind not in self._blobs:
             span = self.sections.get(kind)
             blob = self.body[span[0]:span[0] + span[1]] if span is not None else None
-            if blob is not None and (self.digests or {}).get(kind) != _source_digest(blob):
+            if blob is not None and (self.digests or {}).get(kind) != cache.source_digest(blob):
                 blob = None
             self._blobs[kind] = blob
         return self._blobs[kind]
@@ -304,12 +302,6 @@ class _Cached:
                 checked = record
             out.append(checked)
         return out
-
-
-def _source_digest(data: bytes) -> str:
-    from camtool.core import cache
-
-    return cache.source_digest(data)
 
 
 def _valid_keys(keys: Any) -> bool:
@@ -385,33 +377,26 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     parsed and its entry written. A file rewritten with the same size and
     modification time is therefore never served stale.
     """
-    from camtool.core import cache
-
-    use_cache = bool(cache_dir) and cache.enabled()
+    if not cache_dir or not cache.enabled():
+        return _parse_or_raise(path, _read_or_raise(path))
     absolute = os.path.abspath(path)
-    digests = _shipped_digests(cache_dir) if cache_dir and use_cache else None
-    if digests is not None:
-        digest = digests.get(absolute)
-        real = _real_path(absolute)
-        known = _shipped_entry(real, digest) if digest is not None else None
-        if known is not None:  # a shipped file whose bytes have the remembered digest: not read at all
-            cached = _Cached.parse(known[0], None, "", None, 0, digests=known[1])
-            if cached is not None:
-                return _shipped_data(path, cached, real)
-    try:
-        raw = read_bytes(path, MAX_BYTES)
-    except FileProblem as problem:
-        raise PresetFileError(path, problem.problem, line=problem.line) from None
-    if not cache_dir or not use_cache:
-        return _parse_or_raise(path, raw)
+    real = _real_path(absolute)
+    digests = _shipped_digests(cache_dir)
+    digest = digests.get(absolute)
+    known = _shipped_entry(real, digest) if digest is not None else None
+    if known is not None:  # a shipped file whose bytes have the remembered digest: not read at all
+        cached = _Cached.parse(known[0], None, "", None, 0, digests=known[1])
+        if cached is not None:
+            return _shipped_data(path, cached, real)
+    raw = _read_or_raise(path)
     cache_path = _cache_path(cache_dir, absolute)
     limit = _cache_limit(len(raw))
-    shipped = shipped_payload(absolute, raw, digests)
+    shipped = _shipped_payload(real, absolute, raw, digests)
     if shipped is not None:
         # the cache's own digest (path and bytes) is needed only if a section fails and the file is parsed
         cached = _Cached.parse(shipped[0], raw, cache_path, None, limit, digests=shipped[1])
         if cached is not None:
-            return _shipped_data(path, cached, _real_path(absolute))
+            return _shipped_data(path, cached, real)
     source = cache.source_digest(os.fsencode(absolute) + b"\0" + raw)
     payload = cache.read(cache_path, _CACHE_KIND, source, limit)
     if payload is not None:
@@ -421,6 +406,14 @@ def read_file(path: str, *, cache_dir: str | None = None) -> FileData:
     data = _parse_or_raise(path, raw)
     _write_cache(cache_path, source, data._records, limit)
     return data
+
+
+def _read_or_raise(path: str) -> bytes:
+    """The bytes of the preset file at ``path`` (through the guarded reader), or :class:`PresetFileError`."""
+    try:
+        return read_bytes(path, MAX_BYTES)
+    except FileProblem as problem:
+        raise PresetFileError(path, problem.problem, line=problem.line) from None
 
 
 SHIPPED_RECORDS = "shipped-records.json"
@@ -564,7 +557,7 @@ def shipped_listing(names: set[str]) -> dict[str, list[list[Any]]] | None:
                 and all(type(n) is int and n >= 0 for n in span[:2]) and span[0] + span[1] <= len(body)):
             blob = body[span[0]:span[0] + span[1]]
             try:
-                rows = json.loads(blob) if _source_digest(blob) == span[2] else None
+                rows = json.loads(blob) if cache.source_digest(blob) == span[2] else None
             except (ValueError, RecursionError):
                 rows = None
             if isinstance(rows, dict) and set(rows) <= set(KINDS) and all(isinstance(v, list) for v in rows.values()):
@@ -582,9 +575,11 @@ def shipped_payload(absolute: str, raw: bytes, digests: Any = None) -> tuple[Any
     """The shipped records of the file at ``absolute`` and the digest of each section, when it is a shipped file
     holding exactly ``raw`` (else None). ``digests`` (a :class:`camtool.core.cache.FileDigests`) remembers the digest
     of ``raw`` against the file's ``stat``."""
-    from camtool.core import cache
+    return _shipped_payload(_real_path(absolute), absolute, raw, digests)
 
-    real = _real_path(absolute)
+
+def _shipped_payload(real: str, absolute: str, raw: bytes, digests: Any) -> tuple[Any, dict[str, str]] | None:
+    """:func:`shipped_payload` of the file whose real path (already found) is ``real``."""
     if _shipped_name(real) is None:
         return None
     return _shipped_entry(real, digests.put(absolute, raw) if digests is not None else cache.source_digest(raw))
@@ -648,7 +643,6 @@ def _shipped_digests(cache_dir: str) -> Any:
     directory = _shipped_real_dir()
     digests = _file_digests.get((cache_dir, directory))
     if digests is None:
-        from camtool.core import cache
         from camtool.presets import paths
 
         files = [os.path.abspath(path) for path in paths.shipped_files()]
@@ -788,8 +782,6 @@ def _write_cache(cache_path: str, source: str, records: dict[str, list[dict[str,
     A lookup then parses only the kinds it needs. An entry that cannot be
     written (or would be too large to be read back) is skipped silently.
     """
-    from camtool.core import cache
-
     payload = entry_payload(records)
     if payload is not None and len(payload) + 1024 <= limit:
         cache.write(cache_path, _CACHE_KIND, source, payload)
