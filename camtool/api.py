@@ -600,15 +600,7 @@ def hyperfocal_distance(
         return HyperfocalDistance(at_h.limits.hyperfocal_mm, at_h.limits.near_mm, at_h.model)
     from camtool.plans.depth import hyperfocal_plan
 
-    preset_lens = None
-    if lens is not None:
-        from camtool.plans import equipment
-
-        preset_lens = preset("lens", lens)
-        focal = list(map(float, getattr(focal_length_mm, "ravel", lambda: [focal_length_mm])()))
-        apertures = list(map(float, getattr(f_number, "ravel", lambda: [f_number])()))
-        # the lens's own range, as --lens bounds -f and -N on the command line
-        equipment.check_lens(preset_lens, focal_lengths=focal, f_numbers=apertures, distances_mm=[])
+    preset_lens = _lens_preset(lens, focal_length_mm, f_number)
     if focal_length_mm is None and data is not None and data.prescription is not None:
         from camtool.dof.ladder import prescription_focal_length
 
@@ -840,6 +832,21 @@ def film_time(film: Text, metered_s: ShutterTime) -> Any:
     return film_time_s(chosen, metered_s)
 
 
+def _lens_preset(lens: str | None, focal_length_mm: Any, f_number: Any) -> Any:
+    """The lens preset ``lens`` names (None for None), its own range holding every focal length and f-number given,
+    as ``--lens`` bounds ``-f`` and ``-N`` on the command line (:func:`camtool.plans.equipment.check_lens`)."""
+    if lens is None:
+        return None
+    from camtool.plans import equipment
+
+    def values(given: Any) -> list[float]:
+        return list(map(float, getattr(given, "ravel", lambda: [given])()))
+
+    found = preset("lens", lens)
+    equipment.check_lens(found, focal_lengths=values(focal_length_mm), f_numbers=values(f_number), distances_mm=[])
+    return found
+
+
 @_checked
 def preset(kind: Annotated[str, _Kind("choice", choices=PRESET_KINDS)], name: Text) -> Any:
     """The preset of ``kind`` called ``name`` (any spelling of its id or aliases), from the shipped database and the
@@ -1014,12 +1021,7 @@ def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_m
     """
     from camtool.plans.stack import bracket_stack as plan
 
-    preset_lens = preset("lens", lens) if lens is not None else None
-    if preset_lens is not None:  # the lens's own range, as --lens bounds -f and -N on the command line
-        from camtool.plans import equipment
-
-        equipment.check_lens(preset_lens, focal_lengths=[float(focal_length_mm)], f_numbers=[float(f_number)],
-                             distances_mm=[])
+    preset_lens = _lens_preset(lens, focal_length_mm, f_number)
     data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
     return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
                 overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,

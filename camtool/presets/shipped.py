@@ -71,7 +71,7 @@ def listing_payload(parsed: dict[str, loader.FileData], directory: str) -> bytes
     database of the shipped files only (:func:`camtool.presets.summary.summary` of each preset built).
     """
     from camtool.presets.database import Database
-    from camtool.presets.schema import KINDS
+    from camtool.presets.kinds import KINDS
     from camtool.presets.summary import summary
 
     database = Database([paths.Tier("shipped", tuple(parsed))], parsed)
