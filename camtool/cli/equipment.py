@@ -37,7 +37,7 @@ def open_presets(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:
     except PresetFileError as error:
         raise _preset_file_error(ctx, error, preset_files) from None
     if preset_files:  # ids and aliases that clash within the user's files: an error even when no preset is used
-        from camtool.presets.schema import KINDS
+        from camtool.presets import KINDS
 
         try:
             for kind in KINDS:

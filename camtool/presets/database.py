@@ -32,6 +32,7 @@ from camtool.presets.kinds import (
     Sensor,
     kind_of,
     normalize,
+    optics_mapping,
 )
 from camtool.presets.loader import FileData, parse_file, read_file
 
@@ -394,7 +395,6 @@ def _build_lens_set(entry: _Entry) -> Lens:
 
 def _build_prescription(db: Database, entry: _Entry) -> Prescription:
     from camtool.optics.prescription import prescription_from_mapping
-    from camtool.presets.schema import optics_mapping
 
     r = entry.record
     # validated when the file was read (schema._check_prescription); building it cannot fail

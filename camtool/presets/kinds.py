@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from typing import Any
 
 from camtool.core.record import Record, field
@@ -143,6 +144,11 @@ class Camera(Record):
     def megapixels(self) -> float | None:
         """Pixel count in millions (None without pixel counts)."""
         return None if not (self.pixels_w and self.pixels_h) else self.pixels_w * self.pixels_h / 1e6
+
+
+def optics_mapping(record: Mapping[str, Any]) -> dict[str, Any]:
+    """The keys of a prescription record that :func:`camtool.optics.prescription.prescription_from_mapping` reads."""
+    return {key: value for key, value in record.items() if not str(key).startswith("_")}
 
 
 class Prescription(Record):

@@ -31,6 +31,7 @@ from camtool.presets.kinds import (  # noqa: F401 - re-exported: the kinds and v
     Sensor,
     kind_of,
     normalize,
+    optics_mapping,
 )
 
 _ID = re.compile(r"^[a-z0-9]+(?:[.-][a-z0-9]+)*$")
@@ -670,11 +671,6 @@ def _check_prescription(record: dict[str, Any]) -> list[tuple[str, str]]:
             return [("surfaces", f"surface {error.surface}, {error.key}: {error.problem}")]
         return [("surfaces" if error.key == "stop" else error.key, error.problem)]
     return []
-
-
-def optics_mapping(record: Mapping[str, Any]) -> dict[str, Any]:
-    """The keys of a prescription record that :func:`camtool.optics.prescription.prescription_from_mapping` reads."""
-    return {key: value for key, value in record.items() if not str(key).startswith("_")}
 
 
 def _check_film(record: dict[str, Any]) -> list[tuple[str, str]]:
