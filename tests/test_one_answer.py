@@ -299,3 +299,18 @@ def test_hyperfocal_by_contrast_on_a_prescription_is_the_wavefronts_h_dof_report
     assert row["far_mm"] is None and row["near_mm"] == pytest.approx(h["near_mm"], rel=1e-9)  # focused at H
     (thin,) = run_json("hyperfocal", *lens, "-N", "8", "--criterion", "mtf:0.3@coc", "--model", "thin")
     assert thin["model"] == "thin"  # a geometric rung named keeps its closed form
+
+
+def test_the_api_s_hyperfocal_distance_takes_arrays_of_any_shape() -> None:
+    # a 2-D array of focal lengths (the API fuzz found it raising a TypeError) gives each scene's own distance,
+    # the float a call for that scene gives
+    import numpy as np
+
+    import camtool
+
+    focal = np.array([[250.0, 50.0], [24.0, 85.0]])
+    many = camtool.hyperfocal_distance(focal, 8, 0.03)
+    assert np.shape(many.hyperfocal_mm) == focal.shape
+    for index in np.ndindex(focal.shape):
+        one = camtool.hyperfocal_distance(float(focal[index]), 8, 0.03)
+        assert many.hyperfocal_mm[index] == one.hyperfocal_mm and many.near_mm[index] == one.near_mm

@@ -198,6 +198,9 @@ field by mtf:0.181@coc at 550 nm (nothing is sharp enough: even in focus the MTF
 
 
 def _values(value: Any) -> list[float]:
+    """Every number of ``value``: a number, a list, or an array of any shape."""
+    if hasattr(value, "ravel"):
+        return [float(v) for v in value.ravel()]
     return [float(v) for v in value] if hasattr(value, "__len__") else [float(value)]
 
 
