@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 from conftest import point_xdg_at
 
-from camtool.presets import load_db, loader, paths, shipped
+from camtool.presets import PresetNotFound, load_db, loader, paths, shipped
 
 
 def test_the_shipped_records_are_a_fresh_parse_of_the_shipped_files() -> None:
@@ -100,14 +100,14 @@ def test_a_shipped_record_that_is_not_its_file_is_never_used(change, cache_home:
 
 
 def test_a_lookup_parses_only_the_record_it_finds(cache_home: Path) -> None:
-    # the shipped records section is checked against its digest whole, then only the one record's span is parsed
+    # only the one record's span is read, checked against the digest the build recorded for it, and parsed
     fresh = load_db(use_cache=False, lensfun=False)
     database = load_db(lensfun=False)
     assert database.lens("nikon-z-50mm-f1.8-s") == fresh.lens("nikon-z-50mm-f1.8-s")
     path = next(p for p in database._files if p.endswith(os.sep + "lenses.yaml"))
     cached = database._files[path]._cached
     assert cached is not None and cached.digests is not None
-    assert "lens" not in cached._parsed and cached._blobs["lens"] is not None
+    assert "lens" not in cached._parsed and "lens#keys" not in cached._parsed  # neither the records nor the keys
     assert len(cached._checked) == 1  # one record, not the file's 168
 
 
@@ -257,3 +257,78 @@ def test_a_shipped_file_behind_a_symbolic_link_is_found_by_its_real_path(tmp_pat
     raw = (outside / "sensors.yaml").read_bytes()
     assert loader.shipped_payload(str(copy / "sensors.yaml"), raw) is None  # really a file outside lens_db/
     assert loader.shipped_payload(str(copy / "cameras.yaml"), (copy / "cameras.yaml").read_bytes()) is not None
+
+
+KINDS = ("sensor", "camera", "lens", "prescription", "scene", "film")
+
+
+def test_the_merged_keys_find_what_every_file_merged_finds(cache_home: Path) -> None:
+    # every id and alias of every kind, found through the build's merged keys, is the preset the merge of every
+    # file's keys finds (the same file and record); a name that is no key is left to the merge
+    fresh = load_db(use_cache=False, lensfun=False)
+    database = load_db(lensfun=False)
+    for kind in KINDS:
+        merged = fresh._merge(kind)
+        index = database._index(kind)
+        assert index._shipped is not None, kind
+        for key, entry in merged.items():
+            found = index._shipped.get(key)
+            assert found is not None and (found.path, found.id) == (entry.path, entry.id), (kind, key)
+        assert index._keys is None  # found without merging
+    assert database._index("lens")._shipped.get("no-such-lens-at-all") is None
+
+
+def test_a_lookup_through_the_merged_keys_reads_one_file(cache_home: Path) -> None:
+    fresh = load_db(use_cache=False, lensfun=False)
+    database = load_db(lensfun=False)
+    assert database.lens("NIKKOR Z 50mm f/1.8 S") == fresh.lens("nikon-z-50mm-f1.8-s")  # by display name: merged
+    assert database._indexes["lens"]._keys is not None
+    database = load_db(lensfun=False)
+    assert database.lens("Nikon Z 50mm F1.8 S") == fresh.lens("nikon-z-50mm-f1.8-s")  # by id, in another spelling
+    assert database._indexes["lens"]._keys is None  # no file's keys merged
+    touched = [path for path, data in database._files.items() if data._cached is not None and data._cached._checked]
+    assert [os.path.basename(p) for p in touched] == ["lenses.yaml"]
+    for data in database._files.values():
+        assert data._cached is None or not any(name.endswith("#keys") for name in data._cached._parsed)
+
+
+def test_the_merged_keys_are_not_used_beside_a_file_with_presets_of_the_kind(cache_home: Path) -> None:
+    config = cache_home / "xdg_config_home" / "camtool"
+    config.mkdir(parents=True)
+    (config / "mine.yaml").write_text("sensors:\n  - id: full-frame\n    name: Full frame\n    width_mm: 35.8\n"
+                                      "    height_mm: 23.9\n", encoding="utf-8")
+    database = load_db(lensfun=False)
+    assert database._index("sensor")._shipped is None
+    assert database.sensor("full-frame").width_mm == 35.8  # the user's preset replaces the shipped one
+    assert database._index("camera")._shipped is not None  # no camera in the user's file: the merged keys answer
+    assert database.camera("nikon-z-8").sensor.width_mm == 35.8  # a shipped camera on the user's sensor
+    with pytest.raises(PresetNotFound, match="unknown sensor 'ff'"):
+        database.sensor("ff")  # aliases and all
+
+
+@pytest.mark.parametrize("change", ["bucket digest", "table digest", "another record", "a file not read",
+                                    "not a pair"])
+def test_merged_keys_that_are_not_the_build_s_are_a_miss(change, cache_home: Path,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    expected = load_db(use_cache=False, lensfun=False).lens("nikon-z-50mm-f1.8-s")
+    key = loader.normalize("nikon-z-50mm-f1.8-s")
+    assert load_db(lensfun=False).lens(key) == expected
+    bucket = loader.key_bucket(key)
+    state = loader._shipped_index
+    assert state is not None
+    table = state["merged"]["lens"]
+    monkeypatch.setitem(state, "merged", {})
+    if change == "bucket digest":
+        spans = [list(span) for span in table]
+        spans[bucket][2] = "0" * 64
+        monkeypatch.setitem(state["merged"], "lens", spans)
+    elif change == "table digest":
+        monkeypatch.setitem(state, "keys", {**state["keys"], "lens": [*state["keys"]["lens"][:2], "0" * 64]})
+    else:
+        value = {"another record": ["lenses.yaml", 0], "a file not read": ["elsewhere.yaml", 3],
+                 "not a pair": ["lenses.yaml"]}[change]
+        monkeypatch.setitem(state["merged"], "lens", table)
+        monkeypatch.setitem(state["merged"], ("lens", bucket), {key: value})
+    database = load_db(lensfun=False)
+    assert database.lens(key) == expected
+    assert database._indexes["lens"]._keys is not None  # answered by merging every file's keys

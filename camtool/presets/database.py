@@ -15,7 +15,7 @@ same id, aliases and all.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 from camtool.presets import paths
@@ -64,12 +64,27 @@ class _Entry:
 
 
 class _Index:
-    """Every lookup key of one kind, and the display names that are unambiguous."""
+    """Every lookup key of one kind, and the display names that are unambiguous.
 
-    def __init__(self, keys: dict[str, _Entry]) -> None:
-        self.keys = keys
+    With the shipped files' merged keys (:class:`_ShippedKeys`) an id or alias
+    is found without merging every file's keys; the merge is made only when a
+    name is not found that way, or every key is wanted.
+    """
+
+    def __init__(self, merge: Callable[[], dict[str, _Entry]], shipped: _ShippedKeys | None = None) -> None:
+        self._merge = merge
+        self._shipped = shipped
+        self._keys: dict[str, _Entry] | None = None
         self._names: dict[str, _Entry | None] | None = None
         self._entries: list[_Entry] | None = None
+
+    @property
+    def keys(self) -> dict[str, _Entry]:
+        """Every lookup key (normalized id or alias) -> its entry."""
+        if self._keys is None:
+            self._keys = self._merge()
+            self._shipped = None
+        return self._keys
 
     @property
     def entries(self) -> list[_Entry]:
@@ -92,7 +107,44 @@ class _Index:
         return self._names
 
     def find(self, key: str) -> _Entry | None:
+        if self._shipped is not None:
+            entry = self._shipped.get(key)
+            if entry is not None:
+                return entry
         return self.keys.get(key) or self.names.get(key)
+
+
+class _ShippedKeys:
+    """One kind's keys merged over the shipped files by the build (:func:`camtool.presets.loader.shipped_key`), an
+    entry made only for a key looked up. A key the merged keys cannot answer for, or whose value is not ``[file,
+    index]`` of a file read naming a record with that key, is a miss (and the database merges every file's keys)."""
+
+    def __init__(self, names: set[str], paths_by_name: dict[str, str], files: dict[str, FileData], kind: str,
+                 tier: str) -> None:
+        self.names, self.paths_by_name, self.files, self.kind, self.tier = names, paths_by_name, files, kind, tier
+        self._made: dict[tuple[str, int], _Entry] = {}
+
+    def get(self, key: str) -> _Entry | None:
+        from camtool.presets.loader import shipped_key
+
+        at = shipped_key(self.names, self.kind, key)
+        if not (isinstance(at, list) and len(at) == 2 and isinstance(at[0], str) and type(at[1]) is int
+                and at[1] >= 0 and at[0] in self.paths_by_name):
+            return None
+        name, index = at
+        entry = self._made.get((name, index))
+        if entry is None:
+            path = self.paths_by_name[name]
+            data = self.files[path]
+            try:
+                record = data.record_at(self.kind, index)
+            except IndexError:
+                return None
+            keys = record.get("_keys")
+            if not isinstance(keys, list) or key not in keys:
+                return None
+            entry = self._made[(name, index)] = _Entry(record, path, self.tier, at=(data, self.kind, index))
+        return entry if key in entry.keys else None
 
 
 class Database:
@@ -192,14 +244,12 @@ class Database:
         """``[id, name, aliases, summary, file]`` of every preset of ``kind``, in :meth:`all`'s order, written by the
         package's build (:mod:`camtool.presets.shipped`), when this database holds exactly the shipped files, each
         read for the bytes the build read; otherwise None (build the presets: :meth:`all`)."""
-        if len(self.tiers) != 1 or self.tiers[0].name != "shipped":
-            return None
-        names = {self._files[path].shipped_name for path in self.tiers[0].files}
-        if None in names or len(names) != len(self.tiers[0].files):
+        names = self._shipped_names()
+        if len(self.tiers) != 1 or names is None:
             return None
         from camtool.presets.loader import shipped_listing
 
-        rows = shipped_listing(names)  # type: ignore[arg-type]
+        rows = shipped_listing(names)
         return None if rows is None else rows.get(kind_of(kind), [])
 
     def find(self, name: str) -> list[Preset]:
@@ -237,8 +287,27 @@ class Database:
     def _index(self, kind: str) -> _Index:
         index = self._indexes.get(kind)
         if index is None:
-            index = self._indexes[kind] = _Index(self._merge(kind))
+            index = self._indexes[kind] = _Index(lambda: self._merge(kind), self._shipped_keys(kind))
         return index
+
+    def _shipped_names(self) -> set[str] | None:
+        """The names under ``lens_db/`` of the first tier's files when it is the shipped tier and each of its files
+        was read for the bytes its shipped records were made from (else None)."""
+        if not self.tiers or self.tiers[0].name != "shipped":
+            return None
+        names = {self._files[path].shipped_name for path in self.tiers[0].files}
+        if None in names or len(names) != len(self.tiers[0].files):
+            return None
+        return names  # type: ignore[return-value]
+
+    def _shipped_keys(self, kind: str) -> _ShippedKeys | None:
+        """The build's merged keys of ``kind`` (:class:`_ShippedKeys`) when the shipped files, as the build read them,
+        are the only files with presets of that kind (else None: the keys of every file are merged)."""
+        names = self._shipped_names()
+        if names is None or any(self._files[path].keys_of(kind) for tier in self.tiers[1:] for path in tier.files):
+            return None
+        paths_by_name = {str(self._files[path].shipped_name): path for path in self.tiers[0].files}
+        return _ShippedKeys(names, paths_by_name, self._files, kind, self.tiers[0].name)
 
     def _merge(self, kind: str) -> dict[str, _Entry]:
         keys: dict[str, _Entry] = {}

@@ -41,7 +41,7 @@ from camtool.core.files import FileProblem, decode, load_yaml, read_bytes
 from camtool.presets.errors import PresetFileError
 from camtool.presets.kinds import KINDS, REFERENCES, SECTIONS, normalize
 
-CACHE_FORMAT = 12
+CACHE_FORMAT = 13
 """Bumped whenever the record layout changes, so old cache files are ignored."""
 
 _CACHE_KIND = f"presets-{CACHE_FORMAT}"
@@ -168,7 +168,6 @@ class _Cached:
         self.digests = digests
         self.handed: dict[str, list[list[str]]] = {}
         self._parsed: dict[str, Any] = {}
-        self._blobs: dict[str, bytes | None] = {}
         self._checked: dict[tuple[str, int], dict[str, Any]] = {}
 
     @classmethod
@@ -232,10 +231,10 @@ class _Cached:
     def record(self, kind: str, index: int) -> dict[str, Any] | None:
         """The ``index``-th record of one kind when it passes :func:`_valid_record` (and matches the keys given out).
 
-        Of the shipped records only that record is parsed, where the kind's
-        ``#spans`` section says it stands, once the records section has the
-        digest the build recorded; a cache entry's records section is parsed
-        whole, so that every record of it is held to its keys.
+        Of the shipped records only that record is read and parsed, where the
+        kind's ``#spans`` section says it stands, when its bytes have the
+        digest the build recorded there; a cache entry's records section is
+        parsed whole, so that every record of it is held to its keys.
         """
         checked = self._checked.get((kind, index))
         if checked is not None:
@@ -243,16 +242,19 @@ class _Cached:
         handed = self.handed.get(kind)
         if self.digests is not None and kind not in self._parsed and f"{kind}#spans" in self.sections:
             spans = self._section(f"{kind}#spans")
-            blob = self._blob(kind)
-            if (blob is None or not isinstance(spans, list) or not 0 <= index < len(spans)
+            section = self.sections.get(kind)
+            if (section is None or not isinstance(spans, list) or not 0 <= index < len(spans)
                     or (handed is not None and len(handed) != len(spans))):
                 return None
             span = spans[index]
-            if not (isinstance(span, list) and len(span) == 2 and all(type(n) is int and n >= 0 for n in span)
-                    and span[0] + span[1] <= len(blob)):
+            if not (isinstance(span, list) and len(span) == 3 and all(type(n) is int and n >= 0 for n in span[:2])
+                    and isinstance(span[2], str) and span[0] + span[1] <= section[1]):
+                return None
+            blob = self.body[section[0] + span[0]:section[0] + span[0] + span[1]]
+            if cache.source_digest(blob) != span[2]:  # the record's own digest, as the build recorded it
                 return None
             try:
-                record = json.loads(blob[span[0]:span[0] + span[1]])
+                record = json.loads(blob)
             except (ValueError, RecursionError):
                 return None
         else:
@@ -266,16 +268,6 @@ class _Cached:
             return None
         self._checked[(kind, index)] = record
         return record
-
-    def _blob(self, kind: str) -> bytes | None:
-        """The bytes of a kind's shipped records section, when it has the digest the build recorded."""
-        if kind not in self._blobs:
-            span = self.sections.get(kind)
-            blob = self.body[span[0]:span[0] + span[1]] if span is not None else None
-            if blob is not None and (self.digests or {}).get(kind) != cache.source_digest(blob):
-                blob = None
-            self._blobs[kind] = blob
-        return self._blobs[kind]
 
     def _valid(self, kind: str, record: Any) -> bool:
         return isinstance(record, dict) and isinstance(record.get("_keys"), list) if self.digests is not None else \
@@ -538,7 +530,7 @@ def _shipped_records() -> tuple[dict[str, Any], Any]:
             index = None
         if isinstance(index, dict) and index.get("format") == CACHE_FORMAT and isinstance(index.get("files"), dict):
             _shipped_index = {"index": index["files"], "body": _Window(spans, end + 1, len(spans) - end - 1),
-                              "listing": index.get("listing")}
+                              "listing": index.get("listing"), "keys": index.get("keys")}
     return _shipped_index["index"], _shipped_index["body"]
 
 
@@ -563,6 +555,56 @@ def shipped_listing(names: set[str]) -> dict[str, list[list[Any]]] | None:
             if isinstance(rows, dict) and set(rows) <= set(KINDS) and all(isinstance(v, list) for v in rows.values()):
                 _shipped_index["rows"] = rows
     return _shipped_index["rows"]
+
+
+KEY_BUCKETS = 64
+"""How many buckets each kind's merged shipped keys are written in (a lookup checks and parses one)."""
+
+
+def key_bucket(key: str) -> int:
+    """The bucket of the merged shipped keys that holds ``key`` (the same in every process: no salted hash)."""
+    return sum(key.encode("utf-8", "surrogatepass")) % KEY_BUCKETS
+
+
+def shipped_key(names: set[str], kind: str, key: str) -> Any:
+    """Where the shipped files, merged as one tier, have the preset of ``kind`` whose id or alias is ``key``:
+    ``[file under lens_db/, index among that file's records of the kind]``, or None when not there. False when the
+    merged keys cannot answer: ``names`` are not exactly the files they were made from (see
+    :func:`shipped_listing`), or the bucket or the table of buckets lacks the SHA-256 the build recorded. The value
+    is checked where it is used (:class:`camtool.presets.database.Database`)."""
+    index, body = _shipped_records()
+    if names != set(index) or _shipped_index is None:
+        return False
+    made = _shipped_index.setdefault("merged", {})
+    table = made.get(kind)
+    if table is None:  # read and checked once a process
+        spans = _shipped_index.get("keys")
+        span = spans.get(kind) if isinstance(spans, dict) else None
+        table = made[kind] = _checked_json(body, span)
+        if not (isinstance(table, list) and len(table) == KEY_BUCKETS):
+            table = made[kind] = False
+    if table is False:
+        return False
+    bucket = key_bucket(key)
+    keys = made.get((kind, bucket))
+    if keys is None:
+        keys = made[(kind, bucket)] = _checked_json(body, table[bucket])
+        if not isinstance(keys, dict):
+            keys = made[(kind, bucket)] = False
+    return False if keys is False else keys.get(key)
+
+
+def _checked_json(body: Any, span: Any) -> Any:
+    """The JSON value at ``span`` (``[offset, length, SHA-256]``) of the shipped records' body when it has that
+    digest (else None)."""
+    if not (isinstance(span, list) and len(span) == 3 and isinstance(span[2], str)
+            and all(type(n) is int and n >= 0 for n in span[:2]) and span[0] + span[1] <= len(body)):
+        return None
+    blob = body[span[0]:span[0] + span[1]]
+    try:
+        return json.loads(blob) if cache.source_digest(blob) == span[2] else None
+    except (ValueError, RecursionError):
+        return None
 
 
 def _shipped_data(path: str, cached: _Cached, real: str) -> FileData:
@@ -792,7 +834,8 @@ def entry_payload(records: dict[str, list[dict[str, Any]]]) -> bytes | None:
 
     One JSON line naming each section's span, then per kind: its records (a
     JSON list), their lookup keys (``kind#keys``) and where each record stands
-    in the records section (``kind#spans``, ``[offset, length]``).
+    in the records section and the SHA-256 of its bytes (``kind#spans``,
+    ``[offset, length, digest]``: a shipped record is checked alone).
     """
     sections: dict[str, list[int]] = {}
     blobs = []
@@ -801,9 +844,10 @@ def entry_payload(records: dict[str, list[dict[str, Any]]]) -> bytes | None:
         for kind, kind_records in records.items():
             # the records section is the kind's JSON list, written item by item to know where each record stands
             items = [json.dumps(record, separators=(",", ":")).encode("utf-8") for record in kind_records]
-            spans, position = [], 1
+            spans: list[list[Any]] = []
+            position = 1
             for item in items:
-                spans.append([position, len(item)])
+                spans.append([position, len(item), cache.source_digest(item)])
                 position += len(item) + 1
             keys = [record["_keys"] for record in kind_records]
             for section, blob in ((kind, b"[" + b",".join(items) + b"]"),

@@ -8,10 +8,13 @@ tracing). Both are therefore made once, here, from the shipped files:
 - :data:`camtool.presets.loader.SHIPPED_RECORDS`, beside the loader: one JSON
   line (the record layout's format number and, for each file of
   ``lens_db/``, the SHA-256 of its bytes, its span and the SHA-256 of each
-  section of the span; the span and SHA-256 of the listing), then each file's
-  validated records as a cache entry holds them, then the listing: each
-  shipped preset's id, name, aliases, one-line summary and file, which
-  ``presets list`` shows when no other file is read;
+  section of the span; the span and SHA-256 of the listing and of each kind's
+  merged keys), then each file's validated records as a cache entry holds
+  them, then the listing: each shipped preset's id, name, aliases, one-line
+  summary and file, which ``presets list`` shows when no other file is read;
+  then each kind's lookup keys merged over every shipped file, in buckets
+  by key, and where each bucket stands (a lookup reads one bucket instead of
+  every file's keys);
 - :data:`camtool.dof.auto.SHIPPED_TABLES`, beside :mod:`camtool.dof.auto`: the
   aberration table of each prescription of ``lens_db/prescriptions/``, keyed
   by the content digest a cache entry is bound to.
@@ -58,10 +61,48 @@ def build_records() -> bytes:
         blobs.append(payload)
         offset += len(payload)
     listing = listing_payload(parsed, directory)
+    keys: dict[str, list[object]] = {}
+    tail = [listing]
+    listing_at, offset = offset, offset + len(listing)
+    for kind, buckets in keys_payloads(parsed, directory).items():
+        spans = []
+        for blob in buckets:
+            spans.append([offset, len(blob), source_digest(blob)])
+            tail.append(blob)
+            offset += len(blob)
+        table = json.dumps(spans, separators=(",", ":")).encode("utf-8")
+        keys[kind] = [offset, len(table), source_digest(table)]
+        tail.append(table)
+        offset += len(table)
     document = {"format": loader.CACHE_FORMAT, "files": files,
-                "listing": [offset, len(listing), source_digest(listing)]}
+                "listing": [listing_at, len(listing), source_digest(listing)], "keys": keys}
     index = json.dumps(document, separators=(",", ":"), sort_keys=True)
-    return index.encode("utf-8") + b"\n" + b"".join(blobs) + listing
+    return index.encode("utf-8") + b"\n" + b"".join(blobs) + b"".join(tail)
+
+
+def keys_payloads(parsed: dict[str, loader.FileData], directory: str) -> dict[str, list[bytes]]:
+    """Each kind's lookup keys over every shipped file, merged as the database merges one tier's, in
+    :data:`camtool.presets.loader.KEY_BUCKETS` JSON objects ``{key: [file under lens_db/, index of the record in that
+    file's records of the kind]}``, a key in bucket :func:`camtool.presets.loader.key_bucket`.
+
+    A lookup in a database of the shipped files alone, each read for the bytes the build read, finds its record
+    through its key's bucket instead of merging some twenty files' keys
+    (:meth:`camtool.presets.database.Database._index`).
+    """
+    from camtool.presets.database import Database
+    from camtool.presets.kinds import KINDS
+
+    database = Database([paths.Tier("shipped", tuple(parsed))], parsed)
+    out = {}
+    for kind in KINDS:
+        buckets: list[dict[str, list[object]]] = [{} for _ in range(loader.KEY_BUCKETS)]
+        for key, entry in database._merge(kind).items():
+            assert entry._at is not None  # an entry of the merge: its file, kind and index
+            buckets[loader.key_bucket(key)][key] = [os.path.relpath(entry.path, directory).replace(os.sep, "/"),
+                                                     entry._at[2]]
+        out[kind] = [json.dumps(bucket, separators=(",", ":"), sort_keys=True, ensure_ascii=False).encode("utf-8")
+                     for bucket in buckets]
+    return out
 
 
 def listing_payload(parsed: dict[str, loader.FileData], directory: str) -> bytes:
