@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 import yaml
 from cli_helpers import run_json
+from test_cameras_fifth_pass import PHONES_FIFTH_PASS
 from test_phones_2026 import PHONES_2026
 
 from camtool.presets import load_db
@@ -246,10 +247,12 @@ def test_phone_formats_sized_by_their_type(sensor_id, inch_type):
 
 def test_phone_lenses_file_holds_only_fixed_lenses_named_by_a_camera():
     lenses = list(phone_lens_records().values())
-    # with the flagship phones' modules added since (tests/test_phones_2026.py checks those against their pages)
-    added_since = {f"{phone}-{suffix}" for phone, suffixes in PHONES_2026.items() for suffix in suffixes}
+    # with the flagship phones' modules added since (tests/test_phones_2026.py and tests/test_cameras_fifth_pass.py
+    # check those against their pages)
+    phones_since = {**PHONES_2026, **PHONES_FIFTH_PASS}
+    added_since = {f"{phone}-{suffix}" for phone, suffixes in phones_since.items() for suffix in suffixes}
     assert {lens["id"] for lens in lenses} == {row[0] for row in LENSES} | added_since
-    cameras = {row[1] for row in LENSES} | set(PHONES_2026)
+    cameras = {row[1] for row in LENSES} | set(phones_since)
     for lens in lenses:
         assert lens["mount"] == "fixed lens", lens["id"]
         assert any(lens["id"].startswith(camera) for camera in cameras), lens["id"]

@@ -10,6 +10,7 @@ import math
 
 import pytest
 from cli_helpers import run, run_json
+from test_cameras_fifth_pass import PHONES_FIFTH_PASS
 from test_phones_2026 import PHONES_2026
 
 from camtool.plans.equipment import resolve_equipment
@@ -54,8 +55,8 @@ def test_every_fixed_lens_camera_names_its_lens():
     # with the Leica Q3 43, Ricoh GR IV, Fujifilm GFX100RF, Xiaomi 15 Ultra, iPhone Air, Sony RX1R III and Fujifilm
     # X half (their lenses in phone-lenses.yaml), and the Sony ZV-1 and ZV-1F, Canon PowerShot V1 and Leica D-Lux 8
     # (no lens preset, above), and the eleven compacts of the second comparison (no lens preset either), and the
-    # flagship phones of tests/test_phones_2026.py
-    assert len(cameras) == 40 + len(PHONES_2026)
+    # flagship phones of tests/test_phones_2026.py and tests/test_cameras_fifth_pass.py
+    assert len(cameras) == 40 + len(PHONES_2026) + len(PHONES_FIFTH_PASS)
     named = {camera.id for camera in cameras if camera.lens_id is not None}
     assert named == {camera.id for camera in cameras} - NO_LENS_PRESET
     db = load_db()

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 import yaml
 from conftest import point_xdg_at, presets_home
+from test_cameras_fifth_pass import PHONES_FIFTH_PASS
 from test_phones_2026 import PHONES_2026
 
 from camtool.geometry.closeup import internal_focus_at_distance
@@ -132,8 +133,9 @@ def test_every_phone_has_every_rear_module():
         # phone-lenses.yaml
         "xiaomi-15-ultra": ("main", "ultra-wide", "telephoto", "periscope"),
         "apple-iphone-air": ("main",),
-        # the phones of tests/test_phones_2026.py, each with all its rear modules
+        # the phones of tests/test_phones_2026.py and tests/test_cameras_fifth_pass.py, each with all its rear modules
         **PHONES_2026,
+        **PHONES_FIFTH_PASS,
     }
     # Every shipped phone is listed, so a new phone cannot ship without its modules.
     phones = {camera.id for camera in load_db().all("camera") if camera.category == "phone"}
