@@ -332,3 +332,37 @@ def test_merged_keys_that_are_not_the_build_s_are_a_miss(change, cache_home: Pat
     database = load_db(lensfun=False)
     assert database.lens(key) == expected
     assert database._indexes["lens"]._keys is not None  # answered by merging every file's keys
+
+
+def test_the_shipped_films_are_listed_as_the_build_listed_them_only_for_its_bytes(
+        cache_home: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import camtool.exposure
+    from camtool.exposure import films_path, reciprocity
+    from camtool.plans.presets import list_presets
+
+    database = load_db(lensfun=False)
+    raw = Path(films_path()).read_bytes()
+    assert loader.shipped_films(raw) is not None
+    assert loader.shipped_films(raw + b"\n") is None  # other bytes
+    rows = list_presets(database=database, kind="film")
+    assert rows == _built_rows(database, kind="film") and len(rows) == len(reciprocity.load_films())
+    assert list_presets(database=database, kind="film", search="hp5") == _built_rows(database, kind="film",
+                                                                                      search="hp5")
+    # films.yaml edited: its films are read and listed one by one, with the edit
+    edited = tmp_path / "films.yaml"
+    edited.write_bytes(raw.replace(b"name: Ilford HP5 Plus", b"name: Ilford HP5 Plus (edited)", 1))
+    assert edited.read_bytes() != raw
+    monkeypatch.setattr(camtool.exposure, "films_path", lambda: str(edited))
+    monkeypatch.setattr(reciprocity, "films_path", lambda: str(edited))
+    reciprocity.load_films.cache_clear()
+    try:
+        names = [r.name for r in list_presets(database=database, kind="film")]
+    finally:
+        reciprocity.load_films.cache_clear()
+    assert "Ilford HP5 Plus (edited)" in names
+    # a films listing without the digest the build recorded is not used
+    monkeypatch.setattr(camtool.exposure, "films_path", films_path)
+    state = loader._shipped_index
+    assert state is not None
+    monkeypatch.setitem(state, "films", [*state["films"][:2], "0" * 64])
+    assert loader.shipped_films(raw) is None

@@ -24,6 +24,7 @@ from typing import Any, NamedTuple
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.domain import check
 from camtool.core.errors import CamtoolError, DomainError, require
+from camtool.exposure import films_path
 
 P_RANGE = (1.0, 3.0)
 
@@ -174,7 +175,7 @@ def _film_table() -> dict[str, Any]:
     from camtool.core import cache
 
     try:  # the file beside this module (importlib.resources costs a few ms of start-up to say the same)
-        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "films.yaml"), "rb") as handle:
+        with open(films_path(), "rb") as handle:
             raw = handle.read()
     except OSError:  # a package not on the file system (a zip)
         from importlib.resources import files

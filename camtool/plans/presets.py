@@ -81,6 +81,10 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
                     path = files.get(origin) or files.setdefault(origin, os.path.join(directory, *origin.split("/")))
                     rows.append(PresetRow(each, preset_id, name, line, "shipped", path))
             continue
+        films = _listed_films(database, needle) if each == "film" else None
+        if films is not None:  # the shipped films and the shipped files' films, as the build listed them
+            rows += films
+            continue
         listed: list[tuple[Any, str | None, str | None]] = [(p, p.tier, p.origin) for p in database.all(each)]
         if each == "film":
             films = shipped_films()
@@ -91,6 +95,32 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
                 continue
             rows.append(PresetRow(each, preset.id, preset.name, summary(preset), tier, origin))
     return rows
+
+
+def _listed_films(database: Any, needle: str) -> list[PresetRow] | None:
+    """The film rows of :func:`list_presets` from the build's listings (see :mod:`camtool.presets.shipped`), when the
+    database holds the shipped files alone and ``films.yaml`` has the bytes the build read (else None)."""
+    from camtool.exposure import films_path
+    from camtool.presets.loader import shipped_films
+
+    in_files = database.shipped_listing("film")
+    if in_files is None:
+        return None
+    try:
+        with open(films_path(), "rb") as handle:
+            shipped = shipped_films(handle.read())
+    except OSError:  # a package not on the file system: the films are read one by one
+        return None
+    if shipped is None:
+        return None
+    rows = [PresetRow("film", film_id, name, line, "shipped", FILMS_ORIGIN) for film_id, name, _aliases, line in
+            shipped if not needle or needle in " ".join([film_id, name, *_aliases]).lower()]
+    ids = {film[0] for film in shipped}
+    from camtool.presets.paths import shipped_dir
+
+    return rows + [PresetRow("film", film_id, name, line, "shipped", os.path.join(shipped_dir(), *origin.split("/")))
+                   for film_id, name, aliases, line, origin in in_files
+                   if film_id not in ids and (not needle or needle in " ".join([film_id, name, *aliases]).lower())]
 
 
 def show_preset(*, database: Any, name: str, kind: str | None = None) -> PresetShown:

@@ -530,7 +530,8 @@ def _shipped_records() -> tuple[dict[str, Any], Any]:
             index = None
         if isinstance(index, dict) and index.get("format") == CACHE_FORMAT and isinstance(index.get("files"), dict):
             _shipped_index = {"index": index["files"], "body": _Window(spans, end + 1, len(spans) - end - 1),
-                              "listing": index.get("listing"), "keys": index.get("keys")}
+                              "listing": index.get("listing"), "keys": index.get("keys"),
+                              "films": index.get("films")}
     return _shipped_index["index"], _shipped_index["body"]
 
 
@@ -605,6 +606,20 @@ def _checked_json(body: Any, span: Any) -> Any:
         return json.loads(blob) if cache.source_digest(blob) == span[2] else None
     except (ValueError, RecursionError):
         return None
+
+
+def shipped_films(raw: bytes) -> list[list[Any]] | None:
+    """``[id, name, aliases, summary]`` of each film shipped with its reciprocity data, as the build listed them,
+    when ``raw`` (the bytes of ``camtool/exposure/films.yaml`` now) are the bytes the build read and the listing has
+    the SHA-256 the build recorded (else None: the films are read and listed one by one)."""
+    _shipped_records()
+    if _shipped_index is None:
+        return None
+    films = _checked_json(_shipped_index["body"], _shipped_index.get("films"))
+    if not (isinstance(films, dict) and films.get("source") == cache.source_digest(raw)
+            and isinstance(films.get("rows"), list)):
+        return None
+    return films["rows"]
 
 
 def _shipped_data(path: str, cached: _Cached, real: str) -> FileData:

@@ -14,7 +14,8 @@ tracing). Both are therefore made once, here, from the shipped files:
   summary and file, which ``presets list`` shows when no other file is read;
   then each kind's lookup keys merged over every shipped file, in buckets
   by key, and where each bucket stands (a lookup reads one bucket instead of
-  every file's keys);
+  every file's keys), and the listing of the films shipped with their
+  reciprocity data (``camtool/exposure/films.yaml``), bound to its bytes;
 - :data:`camtool.dof.auto.SHIPPED_TABLES`, beside :mod:`camtool.dof.auto`: the
   aberration table of each prescription of ``lens_db/prescriptions/``, keyed
   by the content digest a cache entry is bound to.
@@ -74,7 +75,9 @@ def build_records() -> bytes:
         keys[kind] = [offset, len(table), source_digest(table)]
         tail.append(table)
         offset += len(table)
-    document = {"format": loader.CACHE_FORMAT, "files": files,
+    films = films_payload()
+    tail.append(films)
+    document = {"format": loader.CACHE_FORMAT, "files": files, "films": [offset, len(films), source_digest(films)],
                 "listing": [listing_at, len(listing), source_digest(listing)], "keys": keys}
     index = json.dumps(document, separators=(",", ":"), sort_keys=True)
     return index.encode("utf-8") + b"\n" + b"".join(blobs) + b"".join(tail)
@@ -103,6 +106,19 @@ def keys_payloads(parsed: dict[str, loader.FileData], directory: str) -> dict[st
         out[kind] = [json.dumps(bucket, separators=(",", ":"), sort_keys=True, ensure_ascii=False).encode("utf-8")
                      for bucket in buckets]
     return out
+
+
+def films_payload() -> bytes:
+    """What ``presets list`` shows of the films shipped with their makers' reciprocity data
+    (``camtool/exposure/films.yaml``), bound to that file's bytes: one JSON object, ``source`` the SHA-256 of the
+    bytes read and ``rows`` each film's ``[id, name, aliases, summary]`` in the order they are listed."""
+    from camtool.exposure import films_path, reciprocity
+    from camtool.presets.summary import summary
+
+    raw = read_bytes(films_path(), loader.MAX_BYTES)
+    rows = [[film.id, film.name, list(film.aliases), summary(film)] for film in reciprocity.load_films().values()]
+    return json.dumps({"source": source_digest(raw), "rows": rows}, separators=(",", ":"),
+                      ensure_ascii=False).encode("utf-8")
 
 
 def listing_payload(parsed: dict[str, loader.FileData], directory: str) -> bytes:

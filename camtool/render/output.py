@@ -17,7 +17,7 @@ from typing import IO, Any
 
 from camtool.render.columnar import ColumnRows, texts
 from camtool.render.columns import Column
-from camtool.render.serial import ERROR, csv_cells, field_line, json_row, printable, unanswered, withheld
+from camtool.render.serial import ERROR, any_unanswered, csv_cells, field_line, json_row, printable, withheld
 
 FORMATS = ("table", "json", "csv")
 _ENCODER = json.JSONEncoder(allow_nan=False, ensure_ascii=False)
@@ -152,7 +152,7 @@ class RowWriter:
     def _withheld(self, rows: Sequence[dict[str, Any]]) -> Sequence[dict[str, Any]]:
         """The rows with every NaN withheld (see :func:`withheld`)."""
         keys = list(self.fields) or self.keys or []
-        if not any(unanswered(row, keys) for row in rows):
+        if not any_unanswered(rows, keys):
             return rows
         # a table names these rows in its footer (render.table: a row with an error has no answer)
         return [withheld(row, keys) for row in rows]

@@ -36,6 +36,11 @@ def unanswered(row: Row, keys: Sequence[str]) -> list[str]:
     return [key for key in keys if isinstance(row.get(key), float) and row[key] != row[key]]
 
 
+def any_unanswered(rows: Sequence[Row], keys: Sequence[str]) -> bool:
+    """Whether any of ``rows`` has a key of ``keys`` :func:`unanswered` (one pass, no list a row)."""
+    return any(isinstance(value, float) and value != value for row in rows for value in map(row.get, keys))
+
+
 def withheld(row: Row, keys: Sequence[str]) -> Row:
     """``row`` with every NaN replaced by null and the row's ``error`` naming them (the row keeps its place).
 

@@ -93,10 +93,12 @@ def _style(column: Column, cell: str, failed: bool) -> str | None:
     return "answer" if column.key in ANSWERS else None
 
 
-def _draw(column: Column, rows: Sequence[dict[str, Any]], units: str, failed: list[bool]) -> _Drawn:
+def _draw(column: Column, rows: Sequence[dict[str, Any]], units: str, failed: list[bool], colour: str | None) -> _Drawn:
     header, cells = _cells(column, rows, units)
     lines = header.split("\n")
-    styles = [_style(column, cell, bad) for cell, bad in zip(cells, failed)]
+    # without colour no style is drawn: none is worked out
+    styles: list[str | None] = ([_style(column, cell, bad) for cell, bad in zip(cells, failed)] if colour
+                                else [None] * len(cells))
     size = max(max((len(cell) for cell in cells), default=0), max(len(line) for line in lines))
     return _Drawn(column, lines, cells, styles, size)
 
@@ -181,7 +183,7 @@ def render_table(
       50   3.000
     """
     failed = [_no_answer(row) for row in rows]
-    drawn = [_draw(column, rows, units, failed) for column in columns]
+    drawn = [_draw(column, rows, units, failed, colour) for column in columns]
     shown, wrapped = _fit(drawn, width)
     vertical = wrapped is None or (bool(wrapped) and len(rows) > WRAP_ROWS)
     notes = _reasons(rows, drawn, failed, shown, vertical) + list(row_notes)
@@ -322,6 +324,11 @@ def _lines(kept: list[_Drawn], count: int, colour: str | None, wrapped: set[str]
             parts.append(cell + " " * pad if d.column.kind == TEXT else " " * pad + cell)
         out.append(GAP.join(parts))
     out.append(RULE * _width([d.size for d in kept]))
+    if not wrapped and not colour:  # plain cells, padded: the same bytes as below, a column at a time
+        padded = [[cell.ljust(d.size) for cell in d.cells] if d.column.kind == TEXT else
+                  [cell.rjust(d.size) for cell in d.cells] for d in kept]
+        out.extend(map(GAP.join, zip(*padded)))
+        return "\n".join(out) + "\n"
     for index in range(count):
         if not wrapped:
             out.append(GAP.join(styled(d.cells[index].ljust(d.size) if d.column.kind == TEXT
