@@ -27,6 +27,11 @@ CONFIRMED = [
     # minimum focus distances of 0.19 m in AF and 0.18 m in MF, with corresponding maximum magnifications of 0.20x and
     # 0.22x"; sonyalphalab.com: f/1.8 - f/22, minimum focus distance 18 cm. The entry takes the manual-focus pair.
     ("sony-fe-20mm-f1.8-g", 20, 180, 0.22, (1.8, 22), "SonyFE20mmf18G.analysis.md"),
+    # ronbuening/LensVisualizer src/lens-data/sony/SonyFE400mmF28GMOSS.analysis.md (Focus Mechanism): "Sony
+    # independently specifies a 2.7 m minimum focus distance and 0.16 maximum magnification for the production lens";
+    # isamu/lens-database sony/e/fe-prime.js: minFocusDistance 2.7, maxMagnification 0.16. The f/22 once entered from
+    # memory is on neither, and is left out.
+    ("sony-fe-400mm-f2.8-gm-oss", 400, 2700, 0.16, (2.8, None), "SonyFE400mmF28GMOSS.analysis.md"),
 ]
 
 
