@@ -32,6 +32,10 @@ CONFIRMED = [
     # isamu/lens-database sony/e/fe-prime.js: minFocusDistance 2.7, maxMagnification 0.16. The f/22 once entered from
     # memory is on neither, and is left out.
     ("sony-fe-400mm-f2.8-gm-oss", 400, 2700, 0.16, (2.8, None), "SonyFE400mmF28GMOSS.analysis.md"),
+    # ronbuening/LensVisualizer src/lens-data/canon/CanonTSE24mmf35LII.analysis.md (Focus Mechanism): "solved against
+    # Canon's 0.21 m closest-focus specification", "consistent with Canon's rounded 0.34x maximum-magnification
+    # specification"; "Canon specifies ±12 mm shift and ±8.5° tilt"
+    ("canon-ts-e-24mm-f3.5l-ii", 24, 210, 0.34, (3.5, None), "CanonTSE24mmf35LII.analysis.md"),
 ]
 
 
@@ -47,6 +51,10 @@ def test_confirmed_figures_against_the_cited_sources(lens_id, focal, distance, m
 @pytest.mark.parametrize("lens_id", [c[0] for c in CONFIRMED])
 def test_the_model_never_magnifies_more_than_the_sources_say(lens_id):
     check_never_magnifies_more(load_db().lens(lens_id))
+
+
+def test_the_ts_e_24mm_ii_keeps_canons_tilt():
+    assert record_of(RECORDS, "canon-ts-e-24mm-f3.5l-ii")["tilt_max_deg"] == 8.5
 
 
 def test_the_fe_20mm_g_reaches_sonys_figure_at_its_manual_focus_distance():
