@@ -36,6 +36,10 @@ CONFIRMED = [
     # Canon's 0.21 m closest-focus specification", "consistent with Canon's rounded 0.34x maximum-magnification
     # specification"; "Canon specifies ±12 mm shift and ±8.5° tilt"
     ("canon-ts-e-24mm-f3.5l-ii", 24, 210, 0.34, (3.5, None), "CanonTSE24mmf35LII.analysis.md"),
+    # ronbuening/LensVisualizer src/lens-data/hasselblad/HasselbladXCD3545.analysis.md (Focus Mechanism), citing
+    # Hasselblad's datasheet: "a minimum object-to-sensor distance of 0.40 m, maximum image scale 1:6.4". The entry had
+    # 1:7 (0.14x) from memory; the datasheet's 1:6.4 (0.156x) replaces it, and the unconfirmed f/32 is left out.
+    ("hasselblad-xcd-45mm-f3.5", 45, 400, 0.156, (3.5, None), "HasselbladXCD3545.analysis.md"),
 ]
 
 
@@ -51,6 +55,22 @@ def test_confirmed_figures_against_the_cited_sources(lens_id, focal, distance, m
 @pytest.mark.parametrize("lens_id", [c[0] for c in CONFIRMED])
 def test_the_model_never_magnifies_more_than_the_sources_say(lens_id):
     check_never_magnifies_more(load_db().lens(lens_id))
+
+
+def test_the_xcd_45_takes_the_datasheets_image_scale():
+    # 1:6.4 is 0.15625; stored to three places. A unit-focusing thin 45 mm lens at 0.40 m reaches about 0.148x
+    # (400/45 = 2 + m + 1/m); the analysis's thick-lens model of the patent, moving as a whole, reaches 1:6.36 there,
+    # the separation of its principal planes shortening the object distance: the datasheet's figure lies above the
+    # thin lens's and within 2 % of the thick one's, and the model meets it
+    record = record_of(RECORDS, "hasselblad-xcd-45mm-f3.5")
+    assert record["max_magnification"] == pytest.approx(1 / 6.4, abs=0.0006)
+    k = 400 / 45 - 2
+    thin = (k - (k * k - 4) ** 0.5) / 2
+    assert thin == pytest.approx(0.1484, abs=0.0005) and thin < record["max_magnification"]
+    assert record["max_magnification"] == pytest.approx(1 / 6.3565, rel=0.02)
+    model = focus_model(load_db().lens("hasselblad-xcd-45mm-f3.5"), 45.0)
+    assert internal_focus_at_distance(model, 400.0)[0] == pytest.approx(0.156, rel=1e-6)
+    assert "1:7" in record["notes"] and "0.35 m" in record["notes"]
 
 
 def test_the_ts_e_24mm_ii_keeps_canons_tilt():
