@@ -40,6 +40,10 @@ CONFIRMED = [
     # Hasselblad's datasheet: "a minimum object-to-sensor distance of 0.40 m, maximum image scale 1:6.4". The entry had
     # 1:7 (0.14x) from memory; the datasheet's 1:6.4 (0.156x) replaces it, and the unconfirmed f/32 is left out.
     ("hasselblad-xcd-45mm-f3.5", 45, 400, 0.156, (3.5, None), "HasselbladXCD3545.analysis.md"),
+    # ronbuening/LensVisualizer src/lens-data/nikon/NikonNikkorPCE19mmf4E.analysis.md, "Manufacturer specifications
+    # (Nikon)": Minimum aperture f/32, Minimum focus distance 0.25 m (from focal plane), Maximum reproduction ratio
+    # 0.18×; "independent tilt (±7.5°) and shift (±12 mm)"
+    ("nikon-pc-19mm-f4e-ed", 19, 250, 0.18, (4, 32), "NikonNikkorPCE19mmf4E.analysis.md"),
 ]
 
 
@@ -73,8 +77,9 @@ def test_the_xcd_45_takes_the_datasheets_image_scale():
     assert "1:7" in record["notes"] and "0.35 m" in record["notes"]
 
 
-def test_the_ts_e_24mm_ii_keeps_canons_tilt():
+def test_the_tilt_shift_lenses_keep_the_makers_tilt():
     assert record_of(RECORDS, "canon-ts-e-24mm-f3.5l-ii")["tilt_max_deg"] == 8.5
+    assert record_of(RECORDS, "nikon-pc-19mm-f4e-ed")["tilt_max_deg"] == 7.5
 
 
 def test_the_fe_20mm_g_reaches_sonys_figure_at_its_manual_focus_distance():
