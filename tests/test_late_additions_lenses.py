@@ -40,6 +40,11 @@ CITED = [
     ("nikon-z-35mm-f1.2-s", 35, 300, 0.2, (1.2, None), 0.2),
     # nikon/z/prime.js: minFocusDistance 0.5; NikonZ58f095SNoct.analysis.md: Nikon Spec Sheet "0.194×", "0.5 m"
     ("nikon-z-58mm-f0.95-s-noct", 58, 500, 0.194, (0.95, None), 0.194),
+    # fujifilm/x/prime.js: minFocusDistance 1.8; FujifilmXF200mmf2R.analysis.md: "Close focus distance | 1.57 m | **1.8
+    # m**", "Min aperture | — (not tabulated) | f/22"; no magnification
+    ("fujifilm-xf200mm-f2-r-lm-ois-wr", 200, 1800, None, (2, 22), None),
+    # fujifilm/g/index.js: minFocusDistance 0.7; FujifilmGF80mmf17R.analysis.md: "Production: 0.7 m"; no magnification
+    ("fujifilm-gf80mm-f1.7-r-wr", 80, 700, None, (1.7, None), None),
 ]
 
 # what each approximate entry's notes must name as open (every entry here has a figure one source alone gives)
@@ -48,6 +53,8 @@ OPEN = {
     "nikon-z-35mm-f1.8-s": ("the maximum magnification is unconfirmed",),
     "nikon-z-35mm-f1.2-s": ("the maximum magnification (0.2x) is the analysis's quotation",),
     "nikon-z-58mm-f0.95-s-noct": ("the maximum magnification (0.194x) is the analysis's quotation",),
+    "fujifilm-xf200mm-f2-r-lm-ois-wr": ("the maximum magnification is unconfirmed", "f/22, is the analysis's quotation"),
+    "fujifilm-gf80mm-f1.7-r-wr": ("the maximum magnification is unconfirmed",),
 }
 
 
@@ -75,9 +82,11 @@ def test_every_entry_is_new_names_its_sources_and_what_is_open():
         assert record["approximate"] is True and notes.startswith("Approximate:"), record["id"]
         for words in OPEN[record["id"]]:
             assert words in notes, (record["id"], words)
-        assert record["mount"] in {"Micro Four Thirds", "Nikon Z"}, record["id"]
+        assert record["mount"] in {"Micro Four Thirds", "Nikon Z", "Fujifilm X", "Fujifilm G"}, record["id"]
     assert set(OPEN) == {r["id"] for r in RECORDS}
     assert record_of(RECORDS, "om-m-zuiko-12-100mm-f4-is-pro")["sensor"] == "four-thirds"
+    assert record_of(RECORDS, "fujifilm-xf200mm-f2-r-lm-ois-wr")["sensor"] == "aps-c"
+    assert record_of(RECORDS, "fujifilm-gf80mm-f1.7-r-wr")["sensor"] == "mf-44x33"
 
 
 @pytest.mark.parametrize("lens_id", [r["id"] for r in RECORDS if "max_magnification" in r])
@@ -100,13 +109,20 @@ def test_the_12_100mm_long_end_is_capped_and_its_wide_end_is_unit_focusing():
     assert focus_model(lens, 100.0).min_focus_mm == 450.0
 
 
-def test_a_prime_without_a_published_magnification_is_unit_focusing_at_its_closest_focus():
-    # the NIKKOR Z 35mm f/1.8 S at 0.25 m: D/f = 50/7 = 2 + m + 1/m gives about 0.20x
-    lens = load_db().lens("nikon-z-35mm-f1.8-s")
-    k = 250.0 / 35.0 - 2.0
+@pytest.mark.parametrize(("lens_id", "focal", "distance", "about"), [
+    # D/f = 2 + m + 1/m: the NIKKOR Z 35mm f/1.8 S at 0.25 m, the XF200mm at 1.8 m, the GF80mm at 0.7 m
+    ("nikon-z-35mm-f1.8-s", 35.0, 250.0, 0.20), ("fujifilm-xf200mm-f2-r-lm-ois-wr", 200.0, 1800.0, 0.146),
+    ("fujifilm-gf80mm-f1.7-r-wr", 80.0, 700.0, 0.152)])
+def test_a_prime_without_a_published_magnification_is_unit_focusing_at_its_closest_focus(lens_id, focal, distance,
+                                                                                          about):
+    record = record_of(RECORDS, lens_id)
+    assert f"about {about:.2f}" in " ".join(record["notes"].split()) or f"about {about:.3f}" in " ".join(
+        record["notes"].split())
+    lens = load_db().lens(lens_id)
+    k = distance / focal - 2.0
     unit = (k - math.sqrt(k * k - 4.0)) / 2.0
-    assert unit == pytest.approx(0.2, abs=0.005)
-    assert internal_focus_at_distance(focus_model(lens, 35.0), 250.0)[0] == pytest.approx(unit, rel=1e-6)
+    assert unit == pytest.approx(about, abs=0.003)
+    assert internal_focus_at_distance(focus_model(lens, focal), distance)[0] == pytest.approx(unit, rel=1e-6)
 
 
 def test_the_published_pairs_reach_more_than_unit_focusing():
