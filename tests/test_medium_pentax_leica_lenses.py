@@ -134,7 +134,8 @@ CITED = [
     # 0.45; note.com: 55Vは0.45m
     ("hasselblad-xcd-55mm-f2.5-v", 55, 450, None, (2.5, None), None),
     ("hasselblad-xcd-80mm-f1.9", 80, 700, None, (1.9, None), None),
-    # the dataset's 0.6 disagrees with note.com's 最短撮影距離 0.67m, the figure entered
+    # the dataset's 0.6 disagrees with note.com's 最短撮影距離 0.67m, the figure entered, which the LensVisualizer
+    # analysis quotes from Hasselblad's product page: "lists a minimum focus distance of 0.67 m (26.4 inches)"
     ("hasselblad-xcd-90mm-f2.5-v", 90, 670, None, (2.5, None), None),
     # 1.0; Kasson: the minimum focusing distance is 1 meter
     ("hasselblad-xcd-135mm-f2.8", 135, 1000, None, (2.8, None), None),
@@ -312,10 +313,14 @@ def test_without_a_published_magnification_the_closest_focus_is_unit_focusing(le
 
 
 def test_the_xcd_90v_takes_the_pages_closest_focus_not_the_datasets():
-    # the dataset records 0.6 m; the only page that gives one, 0.67 m, which the entry holds and its notes flag
+    # the dataset records 0.6 m; a user's note and the LensVisualizer analysis quoting Hasselblad's page give 0.67 m,
+    # which the entry holds; it stays approximate for want of a magnification
     record = record_of(RECORDS, "hasselblad-xcd-90mm-f2.5-v")
     source = " ".join(record["source"].split())
     assert "minFocusDistance 0.6 (m)" in source and "0.67m" in source
+    assert ("HasselbladXCD90mmf25V.analysis.md at 02d22c22869e50fe8cf3482ebd141e3811d1d1f1" in source
+            and "minimum focus distance of 0.67 m" in source)
+    assert "max_magnification not found" in " ".join(record["notes"].split())
     assert record["min_focus_mm"] == 670 and record["approximate"]
     assert "disagrees" in record["notes"]
 

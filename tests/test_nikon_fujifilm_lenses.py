@@ -64,8 +64,9 @@ CITED = [
     # 100-140 mm, 0.33x at the telephoto end
     ("nikon-z-dx-18-140mm-f3.5-6.3-vr", 18, 200, None, (3.5, None), 0.33),
     ("nikon-z-dx-18-140mm-f3.5-6.3-vr", 140, 400, 0.33, (6.3, None), 0.33),
-    # nikon/z/prime.js: 0.16, 0.67 (最大撮影倍率0.67倍)
-    ("nikon-z-dx-mc-35mm-f1.7", 35, 160, 0.67, (1.7, None), 0.67),
+    # nikon/z/prime.js: 0.16, 0.67 (最大撮影倍率0.67倍); hoozuki.net/3679.html quoting Nikon's site: 最短撮影距離 0.16m,
+    # 最大撮影倍率 0.67倍, 最小絞り 撮影距離∞:f/16
+    ("nikon-z-dx-mc-35mm-f1.7", 35, 160, 0.67, (1.7, 16), 0.67),
     # nikon/z/prime.js: 0.85; Photography Life review: 0.11x
     ("nikon-z-85mm-f1.2-s", 85, 850, 0.11, (1.2, None), 0.11),
     # fujifilm/x/prime.js: 0.267, 0.5; LensVisualizer: 0.5x at 26.7 cm; Admiring Light and kstphotography: 1:2 (0.5)
@@ -127,7 +128,8 @@ CITED = [
 # transcribing the maker's pages); every other entry has a figure that only one source gives, and is approximate
 CONFIRMED = {"nikon-z-24-70mm-f2.8-s-ii", "nikon-z-70-200mm-f2.8-vr-s-ii", "fujifilm-xf60mm-f2.4-r-macro",
              "fujifilm-xf50mm-f2-r-wr", "fujifilm-xf30mm-f2.8-r-lm-wr-macro", "fujifilm-xf23mm-f2.8-r-wr",
-             "fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", "fujifilm-xc50-230mm-f4.5-6.7-ois-ii"}
+             "fujifilm-xf55-200mm-f3.5-4.8-r-lm-ois", "fujifilm-xc50-230mm-f4.5-6.7-ois-ii",
+             "nikon-z-dx-mc-35mm-f1.7"}
 
 
 def test_every_entry_is_checked_against_its_sources():
