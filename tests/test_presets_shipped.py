@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 from conftest import point_xdg_at
 
-from camtool.presets import PresetNotFound, load_db, loader, paths, shipped
+from camtool.presets import PresetNotFound, load_db, loader, paths, shipped, shipped_records
 
 
 def test_the_shipped_records_are_a_fresh_parse_of_the_shipped_files() -> None:
@@ -57,7 +57,7 @@ def test_a_first_load_from_the_shipped_records_is_the_parsed_database(cache_home
 
 
 def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
-    index, body = loader._shipped_records()
+    index, body = shipped_records._shipped_records()
     start, length = index["sensors.yaml"][1:3]
     payload = body[start:start + length]
     end = payload.index(b"\n")
@@ -73,7 +73,7 @@ def _poison(monkeypatch: pytest.MonkeyPatch, change) -> None:
     poisoned = json.dumps(new_spans).encode() + b"\n" + b"".join(blobs)
     # the sections' recorded digests stay the build's: the poisoned sections do not have them
     files = {**index, "sensors.yaml": [index["sensors.yaml"][0], len(body), len(poisoned), index["sensors.yaml"][3]]}
-    monkeypatch.setattr(loader, "_shipped_index", {"index": files, "body": body[0:len(body)] + poisoned})
+    monkeypatch.setattr(shipped_records, "_shipped_index", {"index": files, "body": body[0:len(body)] + poisoned})
 
 
 def _aps_c(sections) -> dict:
@@ -207,12 +207,12 @@ def test_the_shipped_listing_is_not_used_for_an_edited_or_an_added_file(cache_ho
 def test_a_listing_without_its_digest_is_not_used(cache_home: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     from camtool.plans.presets import list_presets
 
-    index, body = loader._shipped_records()
-    start, length, digest = loader._shipped_index["listing"]
+    index, body = shipped_records._shipped_records()
+    start, length, digest = shipped_records._shipped_index["listing"]
     blob = body[start:start + length].replace(b'"36 \\u00d7 24 mm"', b'"99 \\u00d7 24 mm"').replace(
         "36 × 24 mm".encode(), "99 × 24 mm".encode())
     assert blob != body[start:start + length]
-    monkeypatch.setattr(loader, "_shipped_index", {"index": index, "body": body[0:len(body)] + blob,
+    monkeypatch.setattr(shipped_records, "_shipped_index", {"index": index, "body": body[0:len(body)] + blob,
                                                    "listing": [len(body), len(blob), digest]})
     database = load_db(lensfun=False)
     assert database.shipped_listing("sensor") is None
@@ -224,18 +224,18 @@ def test_the_shipped_records_file_is_read_by_span_and_only_when_regular(tmp_path
     data = b'{"files":{}}\n' + bytes(range(256)) * 8
     regular = tmp_path / "records.json"
     regular.write_bytes(data)
-    spans = loader._open_spans(str(regular), 1 << 20)
+    spans = shipped_records._open_spans(str(regular), 1 << 20)
     assert spans is not None and len(spans) == len(data)
-    window = loader._Window(spans, 13, len(data) - 13)
+    window = shipped_records.Window(spans, 13, len(data) - 13)
     assert window[0:5] == data[13:18] and window[2040:99999] == data[13 + 2040:]
-    assert loader._Window(spans, 0, len(data)).find(b"\n") == 12 and window.find(b"\xff\x00\x01") == 255
+    assert shipped_records.Window(spans, 0, len(data)).find(b"\n") == 12 and window.find(b"\xff\x00\x01") == 255
     regular.write_bytes(data[:100])  # shorter than when opened: a span past the end comes back short
     assert window[0:200] == data[13:100]
-    assert loader._open_spans(str(regular), 50) is None  # larger than the limit
-    assert loader._open_spans(str(tmp_path), 1 << 20) is None  # a directory
-    assert loader._open_spans(str(tmp_path / "missing.json"), 1 << 20) is None
+    assert shipped_records._open_spans(str(regular), 50) is None  # larger than the limit
+    assert shipped_records._open_spans(str(tmp_path), 1 << 20) is None  # a directory
+    assert shipped_records._open_spans(str(tmp_path / "missing.json"), 1 << 20) is None
     os.mkfifo(tmp_path / "fifo")
-    assert loader._open_spans(str(tmp_path / "fifo"), 1 << 20) is None  # opened without blocking, refused
+    assert shipped_records._open_spans(str(tmp_path / "fifo"), 1 << 20) is None  # opened without blocking, refused
 
 
 def test_a_shipped_file_behind_a_symbolic_link_is_found_by_its_real_path(tmp_path: Path,
@@ -253,7 +253,7 @@ def test_a_shipped_file_behind_a_symbolic_link_is_found_by_its_real_path(tmp_pat
     (copy / "prescriptions").symlink_to(outside / "prescriptions")
     monkeypatch.setattr(paths, "shipped_dir", lambda: str(copy))
     for path in [copy / "sensors.yaml", copy / "cameras.yaml", copy / "prescriptions" / "dgauss100.yaml"]:
-        assert loader._real_path(str(path)) == os.path.realpath(path)
+        assert shipped_records.real_path(str(path)) == os.path.realpath(path)
     raw = (outside / "sensors.yaml").read_bytes()
     assert loader.shipped_payload(str(copy / "sensors.yaml"), raw) is None  # really a file outside lens_db/
     assert loader.shipped_payload(str(copy / "cameras.yaml"), (copy / "cameras.yaml").read_bytes()) is not None
@@ -313,8 +313,8 @@ def test_merged_keys_that_are_not_the_build_s_are_a_miss(change, cache_home: Pat
     expected = load_db(use_cache=False, lensfun=False).lens("nikon-z-50mm-f1.8-s")
     key = loader.normalize("nikon-z-50mm-f1.8-s")
     assert load_db(lensfun=False).lens(key) == expected
-    bucket = loader.key_bucket(key)
-    state = loader._shipped_index
+    bucket = shipped_records.key_bucket(key)
+    state = shipped_records._shipped_index
     assert state is not None
     table = state["merged"]["lens"]
     monkeypatch.setitem(state, "merged", {})
@@ -342,8 +342,8 @@ def test_the_shipped_films_are_listed_as_the_build_listed_them_only_for_its_byte
 
     database = load_db(lensfun=False)
     raw = Path(films_path()).read_bytes()
-    assert loader.shipped_films(raw) is not None
-    assert loader.shipped_films(raw + b"\n") is None  # other bytes
+    assert shipped_records.shipped_films(raw) is not None
+    assert shipped_records.shipped_films(raw + b"\n") is None  # other bytes
     rows = list_presets(database=database, kind="film")
     assert rows == _built_rows(database, kind="film") and len(rows) == len(reciprocity.load_films())
     assert list_presets(database=database, kind="film", search="hp5") == _built_rows(database, kind="film",
@@ -362,7 +362,7 @@ def test_the_shipped_films_are_listed_as_the_build_listed_them_only_for_its_byte
     assert "Ilford HP5 Plus (edited)" in names
     # a films listing without the digest the build recorded is not used
     monkeypatch.setattr(camtool.exposure, "films_path", films_path)
-    state = loader._shipped_index
+    state = shipped_records._shipped_index
     assert state is not None
     monkeypatch.setitem(state, "films", [*state["films"][:2], "0" * 64])
-    assert loader.shipped_films(raw) is None
+    assert shipped_records.shipped_films(raw) is None

@@ -101,7 +101,7 @@ def _listed_films(database: Any, needle: str) -> list[PresetRow] | None:
     """The film rows of :func:`list_presets` from the build's listings (see :mod:`camtool.presets.shipped`), when the
     database holds the shipped files alone and ``films.yaml`` has the bytes the build read (else None)."""
     from camtool.exposure import films_path
-    from camtool.presets.loader import shipped_films
+    from camtool.presets.shipped_records import shipped_films
 
     in_files = database.shipped_listing("film")
     if in_files is None:

@@ -8,6 +8,9 @@
 Modules: :mod:`~camtool.presets.kinds` (the kinds and their value classes),
 :mod:`~camtool.presets.schema` (keys and checks),
 :mod:`~camtool.presets.loader` (one file: safe YAML, line numbers, cache),
+:mod:`~camtool.presets.shipped_records` (the shipped files' records, merged keys and listing, as the build
+:mod:`~camtool.presets.shipped` wrote them),
+:mod:`~camtool.presets.summary` (a listing's line),
 :mod:`~camtool.presets.database` (tiers, index, lookup),
 :mod:`~camtool.presets.paths` (search order) and
 :mod:`~camtool.presets.lensfun` (import of the lensfun database). numpy is

@@ -115,7 +115,7 @@ class _Index:
 
 
 class _ShippedKeys:
-    """One kind's keys merged over the shipped files by the build (:func:`camtool.presets.loader.shipped_key`), an
+    """One kind's keys merged over the shipped files by the build (:func:`camtool.presets.shipped_records.shipped_key`), an
     entry made only for a key looked up. A key the merged keys cannot answer for, or whose value is not ``[file,
     index]`` of a file read naming a record with that key, is a miss (and the database merges every file's keys)."""
 
@@ -125,7 +125,7 @@ class _ShippedKeys:
         self._made: dict[tuple[str, int], _Entry] = {}
 
     def get(self, key: str) -> _Entry | None:
-        from camtool.presets.loader import shipped_key
+        from camtool.presets.shipped_records import shipped_key
 
         at = shipped_key(self.names, self.kind, key)
         if not (isinstance(at, list) and len(at) == 2 and isinstance(at[0], str) and type(at[1]) is int
@@ -247,7 +247,7 @@ class Database:
         names = self._shipped_names()
         if len(self.tiers) != 1 or names is None:
             return None
-        from camtool.presets.loader import shipped_listing
+        from camtool.presets.shipped_records import shipped_listing
 
         rows = shipped_listing(names)
         return None if rows is None else rows.get(kind_of(kind), [])

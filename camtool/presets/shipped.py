@@ -5,7 +5,7 @@ YAML (PyYAML's pure-Python parser: most of such a command's time) and, with
 a prescription, trace rays for its aberration table (numpy and about 20 ms of
 tracing). Both are therefore made once, here, from the shipped files:
 
-- :data:`camtool.presets.loader.SHIPPED_RECORDS`, beside the loader: one JSON
+- :data:`camtool.presets.shipped_records.SHIPPED_RECORDS`, beside its reader: one JSON
   line (the record layout's format number and, for each file of
   ``lens_db/``, the SHA-256 of its bytes, its span and the SHA-256 of each
   section of the span; the span and SHA-256 of the listing and of each kind's
@@ -37,7 +37,7 @@ from typing import Any
 
 from camtool.core.cache import source_digest
 from camtool.core.files import read_bytes
-from camtool.presets import loader, paths
+from camtool.presets import loader, paths, shipped_records
 
 
 def build_records() -> bytes:
@@ -77,7 +77,7 @@ def build_records() -> bytes:
         offset += len(table)
     films = films_payload()
     tail.append(films)
-    document = {"format": loader.CACHE_FORMAT, "files": files, "films": [offset, len(films), source_digest(films)],
+    document = {"format": shipped_records.CACHE_FORMAT, "files": files, "films": [offset, len(films), source_digest(films)],
                 "listing": [listing_at, len(listing), source_digest(listing)], "keys": keys}
     index = json.dumps(document, separators=(",", ":"), sort_keys=True)
     return index.encode("utf-8") + b"\n" + b"".join(blobs) + b"".join(tail)
@@ -85,8 +85,8 @@ def build_records() -> bytes:
 
 def keys_payloads(parsed: dict[str, loader.FileData], directory: str) -> dict[str, list[bytes]]:
     """Each kind's lookup keys over every shipped file, merged as the database merges one tier's, in
-    :data:`camtool.presets.loader.KEY_BUCKETS` JSON objects ``{key: [file under lens_db/, index of the record in that
-    file's records of the kind]}``, a key in bucket :func:`camtool.presets.loader.key_bucket`.
+    :data:`camtool.presets.shipped_records.KEY_BUCKETS` JSON objects ``{key: [file under lens_db/, index of the record in that
+    file's records of the kind]}``, a key in bucket :func:`camtool.presets.shipped_records.key_bucket`.
 
     A lookup in a database of the shipped files alone, each read for the bytes the build read, finds its record
     through its key's bucket instead of merging some twenty files' keys
@@ -98,10 +98,10 @@ def keys_payloads(parsed: dict[str, loader.FileData], directory: str) -> dict[st
     database = Database([paths.Tier("shipped", tuple(parsed))], parsed)
     out = {}
     for kind in KINDS:
-        buckets: list[dict[str, list[object]]] = [{} for _ in range(loader.KEY_BUCKETS)]
+        buckets: list[dict[str, list[object]]] = [{} for _ in range(shipped_records.KEY_BUCKETS)]
         for key, entry in database._merge(kind).items():
             assert entry._at is not None  # an entry of the merge: its file, kind and index
-            buckets[loader.key_bucket(key)][key] = [os.path.relpath(entry.path, directory).replace(os.sep, "/"),
+            buckets[shipped_records.key_bucket(key)][key] = [os.path.relpath(entry.path, directory).replace(os.sep, "/"),
                                                      entry._at[2]]
         out[kind] = [json.dumps(bucket, separators=(",", ":"), sort_keys=True, ensure_ascii=False).encode("utf-8")
                      for bucket in buckets]
@@ -179,7 +179,8 @@ def targets() -> dict[str, str]:
     """Where each shipped file lives: ``{"records": path, "tables": path}``."""
     from camtool.dof import auto
 
-    return {"records": os.path.join(os.path.dirname(os.path.abspath(loader.__file__)), loader.SHIPPED_RECORDS),
+    here = os.path.dirname(os.path.abspath(shipped_records.__file__))
+    return {"records": os.path.join(here, shipped_records.SHIPPED_RECORDS),
             "tables": os.path.join(os.path.dirname(os.path.abspath(auto.__file__)), auto.SHIPPED_TABLES)}
 
 
