@@ -81,7 +81,16 @@ ZHUIGUANG_CP3 = [(15, 2.9, 0.3), (18, 2.9, 0.3), (21, 2.9, 0.24), (25, 2.1, 0.26
 POCKETOP_SIGMA_FF = [(14, 2.0, 0.27), (20, 1.5, 0.28), (24, 1.5, 0.25), (28, 1.5, 0.28), (35, 1.5, 0.3), (40, 1.5, 0.4),
                      (50, 1.5, 0.4), (65, 1.5, 0.65), (85, 1.5, 0.85), (105, 1.5, 1.0), (135, 2.0, 0.88)]
 
+# Cooke Panchro/i Classic FF: PocketOP cooke-panchro-i-classic-ff-<f>mm[-macro]-t<t>, closeFocusM ('min. marked object
+# distance from film plane'), and Zhuiguang cooke-panchro-i-classic-ff-<f>mm[-macro].json, max_aperture (Cooke's page)
+POCKETOP_PANCHRO = {18: 0.3, 21: 0.3, 25: 0.35, 27: 0.35, 32: 0.35, 40: 0.35, 50: 0.4, 65: 0.325, 75: 0.7, 100: 0.6,
+                    135: 0.85, 152: 1.1}
+ZHUIGUANG_PANCHRO_T = {18: 2.2, 21: 2.2, 25: 2.2, 27: 2.2, 32: 2.2, 40: 2.2, 50: 2.2, 65: 2.4, 75: 2.2, 100: 2.6,
+                       135: 2.8, 152: 3.0}
+
 CONFIRMED = {
+    "cooke-panchro-i-classic-ff": (POCKETOP, POCKETOP_COOKE_DZOFILM,
+                                   [(f, ZHUIGUANG_PANCHRO_T[f], m) for f, m in POCKETOP_PANCHRO.items()]),
     "zeiss-supreme-prime": (ZHUIGUANG, ZHUIGUANG_ZEISS_SUPREME, ZHUIGUANG_SUPREME),
     "zeiss-supreme-prime-radiance": (ZHUIGUANG, ZHUIGUANG_ZEISS_SUPREME, ZHUIGUANG_RADIANCE),
     "zeiss-cp3": (ZHUIGUANG, ZHUIGUANG_ZEISS_COMPACT, ZHUIGUANG_CP3),
@@ -103,6 +112,33 @@ def test_a_confirmed_set_holds_the_second_source_s_figures_and_is_not_approximat
 def test_the_radiance_set_agrees_with_the_gear_table_too():
     assert {f: metres for f, _, metres in ZHUIGUANG_RADIANCE} == TABLE_RADIANCE
     assert all(t == 1.5 for _, (t, _) in members("zeiss-supreme-prime-radiance").items())
+
+
+# --- ARRI/ZEISS Master Prime and Ultra Prime: a third transcription ----------------------------------------------
+
+# PocketOP, cine_details_pl_arri.json, arri-master-prime-<f>mm-t1-3 and arri-ultra-prime-<f>mm-t1-9: closeFocusM
+POCKETOP_MASTER = {12: 0.35, 14: 0.35, 16: 0.35, 18: 0.35, 21: 0.35, 25: 0.35, 27: 0.35, 32: 0.35, 35: 0.35, 40: 0.4,
+                   50: 0.5, 65: 0.65, 75: 0.8, 100: 1.0, 135: 0.95, 150: 1.5}
+POCKETOP_ULTRA = {14: 0.22, 16: 0.25, 20: 0.28, 24: 0.3, 28: 0.28, 32: 0.35, 40: 0.38, 50: 0.6, 65: 0.65, 85: 0.9,
+                  100: 0.9, 135: 1.5, 180: 2.6}
+
+
+@pytest.mark.parametrize(("set_id", "third", "differs", "approximate"), [
+    ("arri-zeiss-master-prime", POCKETOP_MASTER, {12: 400.0}, False),  # the gear table and iris: 0.4 m at 12 mm
+    ("arri-zeiss-ultra-prime", POCKETOP_ULTRA, {100: 1000.0}, True),  # both: 1 m at 100 mm; the 10 mm the table's alone
+])
+def test_the_arri_zeiss_sets_hold_the_third_transcription_but_where_the_other_two_agree_otherwise(
+        set_id, third, differs, approximate):
+    got = members(set_id)
+    for focal, metres in third.items():
+        want = differs.get(focal, 1000.0 * metres)
+        assert got[float(focal)][1] == pytest.approx(want, rel=1e-12), focal
+        if focal in differs:
+            assert f"{metres:g} m" in notes_of(CINE[set_id]) and abs(1000.0 * metres - want) > 10
+    record = CINE[set_id]
+    assert record.get("approximate", False) is approximate and POCKETOP_COOKE_DZOFILM in source_of(record)
+    if approximate:
+        assert "Not confirmed: the 10 mm" in notes_of(record) and 10.0 not in {float(f) for f in third}
 
 
 # --- Cooke S4/i: the set's 50 mm and the single entry ---------------------------------------------------------------
@@ -254,7 +290,8 @@ def test_a_pictor_zoom_takes_dzofilm_s_close_focus_and_says_the_table_disagrees(
 
 def test_every_figure_added_here_leaves_room_for_a_real_image():
     """Each closest focus quoted above clears the thin lens's 4f (a figure in the wrong unit would not)."""
-    tables = [POCKETOP_S4I, POCKETOP_S7I, POCKETOP_VESPID, ZHUIGUANG_NANO,
+    tables = [POCKETOP_S4I, POCKETOP_S7I, POCKETOP_VESPID, ZHUIGUANG_NANO, POCKETOP_PANCHRO, POCKETOP_MASTER,
+              POCKETOP_ULTRA,
               {f: m for f, _, m in ZHUIGUANG_SUPREME + ZHUIGUANG_RADIANCE + ZHUIGUANG_CP3 + POCKETOP_SIGMA_FF}]
     for table in tables:
         for focal, metres in table.items():

@@ -127,7 +127,7 @@ DATASET_SETS = {
 
 # Sets a second, independent transcription of the maker's figures confirms in full: no longer approximate (each
 # checked against that second source in tests/test_cine_confirmations.py).
-CONFIRMED_SETS = {"sigma-cine-ff-high-speed", "zeiss-cp3", "zeiss-supreme-prime"}
+CONFIRMED_SETS = {"cooke-panchro-i-classic-ff", "sigma-cine-ff-high-speed", "zeiss-cp3", "zeiss-supreme-prime"}
 
 
 # Canon's own close focus in feet and inches, as the table's notes on the Sumire rows quote it ('Canon table: ...
