@@ -36,7 +36,7 @@ LENSES = {r["id"]: r for r in yaml.safe_load((DB / "lenses.yaml").read_text(enco
 
 POCKETOP = "directimages/PocketOP-Database"
 POCKETOP_COOKE_DZOFILM = "1b553524566aeb593e9da1afbab4f15660f2eef5"  # cine_details_pl_cooke.json, _pl_dzofilm.json
-POCKETOP_SIGMA = "104c66a255e5a44fc1f550c78fec5937f5f80948"  # cine_details_pl_sigma.json
+POCKETOP_SIGMA = POCKETOP_ZEISS = "104c66a255e5a44fc1f550c78fec5937f5f80948"  # cine_details_pl_sigma.json, _pl_zeiss.json
 ZHUIGUANG = "aku0419/zhuiguang-camera-toolkit"
 ZHUIGUANG_ZEISS_SUPREME = "5dd313179c5fd921e2f432c037e8959c51de8850"  # zeiss-supreme-prime[-radiance]-*.json
 ZHUIGUANG_ZEISS_COMPACT = "3367517551ecf485fb7929c3de880d268ac884ff"  # zeiss-cp-3-*.json, zeiss-nano-prime-*.json
@@ -235,6 +235,29 @@ def test_a_signature_zoom_s_close_focus_is_arri_s_front_distance_plus_length_plu
     assert abs(1000.0 * front_m + length + FLANGE_MM["LPL"] - lens.min_focus_mm) <= 1.0
     record = CINE[lens_id]
     assert "approximate" not in record and ZHUIGUANG_ARRI in source_of(record) and "lpl-mount" in source_of(record)
+
+
+# --- ZEISS CZ.2 and ARRI/FUJINON Alura zooms: a second transcription of the maker's figures --------------------------
+
+# PocketOP: (entry, maxApertureWide or the T-stop its description prints, closeFocusM); the gear table's minFocusMeters
+# is the same figure (tests/test_lens_sets.py and tests/test_cine_sets.py check the entries against the table)
+CONFIRMED_ZOOMS = {
+    "zeiss-cz2-15-30mm-t2.9": ("zeiss-cz2-15-30mm-t2-9", POCKETOP_ZEISS, 2.9, 0.55),  # cine_details_pl_zeiss.json
+    "zeiss-cz2-28-80mm-t2.9": ("zeiss-cz2-28-80mm-t2-9", POCKETOP_ZEISS, 2.9, 0.83),
+    "zeiss-cz2-70-200mm-t2.9": ("zeiss-cz2-70-200mm-t2-9", POCKETOP_ZEISS, 2.9, 1.52),
+    "arri-fujinon-alura-15.5-45mm-t2.8": ("arri-alura-15-5-45mm-t2-8", POCKETOP_COOKE_DZOFILM, 2.8, 0.6),  # _pl_arri
+    "arri-fujinon-alura-30-80mm-t2.8": ("arri-alura-30-80mm-t2-8", POCKETOP_COOKE_DZOFILM, 2.8, 0.6),
+}
+
+
+@pytest.mark.parametrize("lens_id", sorted(CONFIRMED_ZOOMS))
+def test_a_confirmed_zoom_holds_the_second_source_s_stop_and_close_focus(lens_id):
+    entry, commit, stop, metres = CONFIRMED_ZOOMS[lens_id]
+    lens = load_db().lens(lens_id)
+    assert lens.is_zoom and lens.t_number_min == stop
+    assert lens.min_focus_mm == pytest.approx(1000.0 * metres, rel=1e-12) and lens.min_focus_mm > 4 * lens.focal_max_mm
+    record = CINE[lens_id]
+    assert entry in source_of(record) and commit in source_of(record) and "approximate" not in record
 
 
 # --- close focus added from one dataset (still approximate) ---------------------------------------------------------

@@ -125,9 +125,10 @@ DATASET_SETS = {
         ("cooke_anamorphic_i_ff_135", 135, 2.3, 1.5), ("cooke_anamorphic_i_ff_180", 180, 2.9, 2.1)]),
 }
 
-# Sets a second, independent transcription of the maker's figures confirms in full: no longer approximate (each
-# checked against that second source in tests/test_cine_confirmations.py).
-CONFIRMED_SETS = {"cooke-panchro-i-classic-ff", "sigma-cine-ff-high-speed", "zeiss-cp3", "zeiss-supreme-prime"}
+# Sets and zooms a second, independent transcription of the maker's figures confirms in full: no longer approximate
+# (each checked against that second source in tests/test_cine_confirmations.py).
+CONFIRMED_SETS = {"cooke-panchro-i-classic-ff", "sigma-cine-ff-high-speed", "zeiss-cp3", "zeiss-supreme-prime",
+                  "arri-fujinon-alura-15.5-45mm-t2.8", "arri-fujinon-alura-30-80mm-t2.8"}
 
 
 # Canon's own close focus in feet and inches, as the table's notes on the Sumire rows quote it ('Canon table: ...
@@ -163,7 +164,8 @@ def test_each_set_holds_the_table_s_rows(set_id):
 def test_each_zoom_holds_the_table_s_row(lens_id):
     lens = load_db().lens(lens_id)
     short, long, stop, metres = CITED_ZOOMS[lens_id]
-    assert lens.is_zoom and not lens.members and lens.category == "cine" and lens.approximate
+    assert lens.is_zoom and not lens.members and lens.category == "cine"
+    assert lens.approximate == (lens_id not in CONFIRMED_SETS)
     assert (lens.focal_min_mm, lens.focal_max_mm, lens.t_number_min) == (short, long, stop)
     assert lens.min_focus_mm == pytest.approx(1000.0 * metres, rel=1e-12)
 
@@ -173,7 +175,10 @@ def test_each_entry_cites_the_table_and_says_what_is_unconfirmed(lens_id):
     record = RECORDS[lens_id]
     source, notes = (" ".join(record[key].split()) for key in ("source", "notes"))
     assert TABLE in source and COMMIT in source and "gearList.js" in source
-    assert record["approximate"] is True and "Not confirmed" in notes
+    if lens_id in CONFIRMED_SETS:
+        assert "approximate" not in record and "Not confirmed" not in notes
+    else:
+        assert record["approximate"] is True and "Not confirmed" in notes
     assert "image (sensor) plane" in notes  # the plane the close focus is taken from, said
     assert "max_magnification" not in record and all("max_magnification" not in m for m in record.get("set", []))
 
