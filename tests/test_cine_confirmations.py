@@ -36,6 +36,7 @@ LENSES = {r["id"]: r for r in yaml.safe_load((DB / "lenses.yaml").read_text(enco
 
 POCKETOP = "directimages/PocketOP-Database"
 POCKETOP_COOKE_DZOFILM = "1b553524566aeb593e9da1afbab4f15660f2eef5"  # cine_details_pl_cooke.json, _pl_dzofilm.json
+POCKETOP_E = POCKETOP_COOKE_DZOFILM  # the E-mount files at the same commit: e/cine_details_e_<maker>.json
 POCKETOP_SIGMA = POCKETOP_ZEISS = "104c66a255e5a44fc1f550c78fec5937f5f80948"  # cine_details_pl_sigma.json, _pl_zeiss.json
 ZHUIGUANG = "aku0419/zhuiguang-camera-toolkit"
 ZHUIGUANG_ZEISS_SUPREME = "5dd313179c5fd921e2f432c037e8959c51de8850"  # zeiss-supreme-prime[-radiance]-*.json
@@ -88,7 +89,15 @@ POCKETOP_PANCHRO = {18: 0.3, 21: 0.3, 25: 0.35, 27: 0.35, 32: 0.35, 40: 0.35, 50
 ZHUIGUANG_PANCHRO_T = {18: 2.2, 21: 2.2, 25: 2.2, 27: 2.2, 32: 2.2, 40: 2.2, 50: 2.2, 65: 2.4, 75: 2.2, 100: 2.6,
                        135: 2.8, 152: 3.0}
 
+# PocketOP, the E-mount files: cine_details_e_cooke.json, cooke-sp3-<f>mm-t2-4-e, closeFocusM ('Cooke SP3 spec sheet
+# PDF ... 250mm MOD'); cine_details_e_zeiss.json, zeiss-nano-prime-<f>mm-t1-5, closeFocusM ('Zeiss Nano Prime brochure
+# PDF'); the T-stop each entry's name and description give
+POCKETOP_SP3 = [(18, 2.4, 0.25), (25, 2.4, 0.25), (32, 2.4, 0.35), (50, 2.4, 0.5), (75, 2.4, 0.8), (100, 2.4, 0.8)]
+POCKETOP_NANO = [(18, 1.5, 0.25), (24, 1.5, 0.35), (35, 1.5, 0.45), (50, 1.5, 0.5), (75, 1.5, 0.75), (100, 1.5, 1.0)]
+
 CONFIRMED = {
+    "cooke-sp3": (POCKETOP, POCKETOP_E, POCKETOP_SP3),
+    "zeiss-nano-prime": (POCKETOP, POCKETOP_E, POCKETOP_NANO),
     "cooke-panchro-i-classic-ff": (POCKETOP, POCKETOP_COOKE_DZOFILM,
                                    [(f, ZHUIGUANG_PANCHRO_T[f], m) for f, m in POCKETOP_PANCHRO.items()]),
     "zeiss-supreme-prime": (ZHUIGUANG, ZHUIGUANG_ZEISS_SUPREME, ZHUIGUANG_SUPREME),
@@ -247,6 +256,12 @@ CONFIRMED_ZOOMS = {
     "zeiss-cz2-70-200mm-t2.9": ("zeiss-cz2-70-200mm-t2-9", POCKETOP_ZEISS, 2.9, 1.52),
     "arri-fujinon-alura-15.5-45mm-t2.8": ("arri-alura-15-5-45mm-t2-8", POCKETOP_COOKE_DZOFILM, 2.8, 0.6),  # _pl_arri
     "arri-fujinon-alura-30-80mm-t2.8": ("arri-alura-30-80mm-t2-8", POCKETOP_COOKE_DZOFILM, 2.8, 0.6),
+    # cine_details_pl_angenieux.json: 'a constant T2.6', closeFocusM 0.61 ('Duclos Lenses spec database')
+    "angenieux-optimo-15-40mm-t2.6": ("angenieux-optimo-15-40", POCKETOP_COOKE_DZOFILM, 2.6, 0.61),
+    # cine_details_e_fujinon.json: 'a constant T2.9', closeFocusM ('fujifilm.com MK50-135mm: 1.2m standard mode')
+    "fujinon-mk-50-135mm-t2.9": ("fujinon-mk50-135mm-t2-9-e", POCKETOP_E, 2.9, 1.2),
+    # ('fujifilm.com MK18-55mm: 0.85m standard mode'): the gear table's 0.9 m gave way (test below)
+    "fujinon-mk-18-55mm-t2.9": ("fujinon-mk18-55mm-t2-9-e", POCKETOP_E, 2.9, 0.85),
 }
 
 
@@ -258,6 +273,32 @@ def test_a_confirmed_zoom_holds_the_second_source_s_stop_and_close_focus(lens_id
     assert lens.min_focus_mm == pytest.approx(1000.0 * metres, rel=1e-12) and lens.min_focus_mm > 4 * lens.focal_max_mm
     record = CINE[lens_id]
     assert entry in source_of(record) and commit in source_of(record) and "approximate" not in record
+    assert "http" in source_of(record) and "Not confirmed" not in notes_of(record)
+
+
+def test_the_mk18_55_takes_fujifilm_s_close_focus_and_says_the_table_disagrees():
+    record = CINE["fujinon-mk-18-55mm-t2.9"]
+    assert "minFocusMeters 0.9" in source_of(record) and "0.9 m" in notes_of(record)
+    assert "0.85m standard mode" in source_of(record)
+    args = ("dof", "--lens", "fujinon-mk-18-55mm-t2.9", "-f", "35", "-N", "T2.9")
+    assert run(*args, "-s", "850mm").exit_code == 0  # Fujifilm's figure is reached ...
+    assert run(*args, "-s", "840mm").exit_code == 2  # ... and 1 cm closer refused
+
+
+def test_the_optimo_45_120_keeps_the_table_s_close_focus_and_says_the_dataset_disagrees():
+    lens = load_db().lens("angenieux-optimo-45-120mm-t2.8")
+    assert lens.t_number_min == 2.8 and lens.min_focus_mm == pytest.approx(940.0, rel=1e-12) and lens.approximate
+    record = CINE["angenieux-optimo-45-120mm-t2.8"]
+    assert "angenieux-optimo-45-120" in source_of(record) and POCKETOP_COOKE_DZOFILM in source_of(record)
+    assert "Not confirmed: the close focus 0.94 m" in notes_of(record) and "0.61 m" in notes_of(record)
+
+
+@pytest.mark.parametrize(("lens_id", "entry"), [("canon-cn-e-14-35mm-t1.7-flex-zoom", "canon-cne14-35mm-t1-7"),
+                                                ("canon-cn-e-31.5-95mm-t1.7-flex-zoom", "canon-cne31-5-95mm-t1-7")])
+def test_a_flex_zoom_names_the_second_table_that_agrees_but_cites_no_source(lens_id, entry):
+    record = CINE[lens_id]
+    assert record["approximate"] is True and "Not confirmed: T1.7" in notes_of(record)
+    assert entry in notes_of(record) and POCKETOP_COOKE_DZOFILM in notes_of(record)
 
 
 # --- close focus added from one dataset (still approximate) ---------------------------------------------------------
@@ -287,7 +328,9 @@ def test_the_nano_prime_set_holds_zeiss_s_close_focus_and_mount():
     assert {f: s for f, (_, s) in got.items()} == {float(f): pytest.approx(1000.0 * m, rel=1e-12)
                                                     for f, m in ZHUIGUANG_NANO.items()}
     assert load_db().lens("zeiss-nano-prime").mount == "Sony E"
-    assert ZHUIGUANG_ZEISS_COMPACT in source_of(CINE["zeiss-nano-prime"]) and CINE["zeiss-nano-prime"]["approximate"]
+    # the first of its two transcriptions (the second, PocketOP's, is checked with the confirmed sets above)
+    assert ZHUIGUANG_ZEISS_COMPACT in source_of(CINE["zeiss-nano-prime"])
+    assert {f: m for f, _, m in POCKETOP_NANO} == ZHUIGUANG_NANO
 
 
 # --- DZOFilm Pictor zooms: the maker-quoting source wins over the gear table ----------------------------------------
@@ -313,7 +356,7 @@ def test_a_pictor_zoom_takes_dzofilm_s_close_focus_and_says_the_table_disagrees(
 
 def test_every_figure_added_here_leaves_room_for_a_real_image():
     """Each closest focus quoted above clears the thin lens's 4f (a figure in the wrong unit would not)."""
-    tables = [POCKETOP_S4I, POCKETOP_S7I, POCKETOP_VESPID, ZHUIGUANG_NANO, POCKETOP_PANCHRO, POCKETOP_MASTER,
+    tables = [{f: m for f, _, m in POCKETOP_SP3}, {f: m for f, _, m in POCKETOP_NANO}, POCKETOP_S4I, POCKETOP_S7I, POCKETOP_VESPID, ZHUIGUANG_NANO, POCKETOP_PANCHRO, POCKETOP_MASTER,
               POCKETOP_ULTRA,
               {f: m for f, _, m in ZHUIGUANG_SUPREME + ZHUIGUANG_RADIANCE + ZHUIGUANG_CP3 + POCKETOP_SIGMA_FF}]
     for table in tables:

@@ -128,7 +128,8 @@ DATASET_SETS = {
 # Sets and zooms a second, independent transcription of the maker's figures confirms in full: no longer approximate
 # (each checked against that second source in tests/test_cine_confirmations.py).
 CONFIRMED_SETS = {"cooke-panchro-i-classic-ff", "sigma-cine-ff-high-speed", "zeiss-cp3", "zeiss-supreme-prime",
-                  "arri-fujinon-alura-15.5-45mm-t2.8", "arri-fujinon-alura-30-80mm-t2.8"}
+                  "arri-fujinon-alura-15.5-45mm-t2.8", "arri-fujinon-alura-30-80mm-t2.8",
+                  "angenieux-optimo-15-40mm-t2.6", "fujinon-mk-50-135mm-t2.9"}
 
 
 # Canon's own close focus in feet and inches, as the table's notes on the Sumire rows quote it ('Canon table: ...
@@ -146,7 +147,8 @@ CITED_ZOOMS = {
     "arri-fujinon-alura-30-80mm-t2.8": (30, 80, 2.8, 0.6),  # 'ARRI/FUJINON Alura 30-80mm T2.8'
     "angenieux-optimo-15-40mm-t2.6": (15, 40, 2.6, 0.61),  # 'Angénieux Optimo 15-40mm T2.6'
     "angenieux-optimo-45-120mm-t2.8": (45, 120, 2.8, 0.94),  # 'Angénieux Optimo 45-120mm T2.8'
-    "fujinon-mk-18-55mm-t2.9": (18, 55, 2.9, 0.9),  # 'Fujinon MK18-55mm T2.9'
+    # the 'Fujinon MK18-55mm T2.9' row's 0.9 m gave way to Fujifilm's 0.85 m as a second dataset quotes it
+    # (tests/test_cine_confirmations.py)
     "fujinon-mk-50-135mm-t2.9": (50, 135, 2.9, 1.2),  # 'Fujinon MK50-135mm T2.9'
 }
 
