@@ -362,3 +362,32 @@ def test_every_figure_added_here_leaves_room_for_a_real_image():
     for table in tables:
         for focal, metres in table.items():
             assert 1000.0 * metres > 4 * focal, (focal, metres)
+
+
+# --- Cooke Anamorphic/i (S35) and Anamorphic/i Full Frame Plus: T-stops confirmed, close focus not ------------------
+
+# Zhuiguang, cooke-anamorphic-i-s35-<f>mm[-macro].json and cooke-anamorphic-i-ff-<f>mm[-macro].json: (max_aperture,
+# min_focus in m from the lens front, length_mm from the front to the mount), Cooke's sheets
+ZHUIGUANG_ANAMORPHIC_S35 = {25: (2.3, 0.55, 203), 32: (2.3, 0.55, 195), 40: (2.3, 0.55, 195), 50: (2.3, 0.55, 195),
+                            65: (2.6, 0.14, 258), 75: (2.3, 0.8, 195), 100: (2.3, 0.9, 195), 135: (2.3, 1.2, 195),
+                            180: (2.8, 1.65, 296), 300: (3.5, 2.58, 378)}
+ZHUIGUANG_ANAMORPHIC_FF = {32: (2.3, 0.63, 206), 40: (2.3, 0.63, 212), 50: (2.3, 0.6, 204), 75: (2.3, 0.75, 206),
+                           85: (2.8, 0.181, 272), 100: (2.3, 0.925, 228), 135: (2.3, 1.166, 271),
+                           180: (2.9, 1.61, 314)}
+
+
+@pytest.mark.parametrize(("set_id", "table", "within_mm", "outliers"), [
+    ("cooke-anamorphic-i", ZHUIGUANG_ANAMORPHIC_S35, 53, {25}),
+    ("cooke-anamorphic-i-ff-plus", ZHUIGUANG_ANAMORPHIC_FF, 12, {85, 180}),
+])
+def test_a_cooke_anamorphic_set_holds_cooke_s_t_stops_its_close_focus_left_approximate(set_id, table, within_mm,
+                                                                                       outliers):
+    got = members(set_id)
+    assert {f: t for f, (t, _) in got.items()} == {float(f): t for f, (t, _, _) in table.items()}
+    # the front distance + length + PL flange comes near the entered close focus, but not to the centimetre
+    off = {f: 1000.0 * front + length + FLANGE_MM["PL"] - got[float(f)][1] for f, (_, front, length) in table.items()}
+    assert {f for f, d in off.items() if abs(d) > within_mm + 0.5} == outliers
+    record = CINE[set_id]
+    assert record["approximate"] is True and ZHUIGUANG_COOKE in source_of(record)
+    assert "Not confirmed: every close focus" in notes_of(record)
+    assert "given alike by the two transcriptions" in notes_of(record)
