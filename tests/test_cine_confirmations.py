@@ -391,3 +391,21 @@ def test_a_cooke_anamorphic_set_holds_cooke_s_t_stops_its_close_focus_left_appro
     assert record["approximate"] is True and ZHUIGUANG_COOKE in source_of(record)
     assert "Not confirmed: every close focus" in notes_of(record)
     assert "given alike by the two transcriptions" in notes_of(record)
+
+
+# --- Cooke S8/i FF: focal lengths, T-stop and mount confirmed; no close focus from the image plane -------------------
+
+# Zhuiguang, cooke-s8-i-ff-<f>mm.json: (max_aperture, min_focus in m, its plane unsaid, length_mm to the mount)
+ZHUIGUANG_S8I = {25: (1.4, 0.335, 162), 32: (1.4, 0.46, 157), 40: (1.4, 0.45, 157), 50: (1.4, 0.5, 157),
+                 75: (1.4, 0.585, 157), 100: (1.4, 0.67, 157)}
+
+
+def test_the_s8i_set_holds_cooke_s_focal_lengths_and_stop_and_enters_no_close_focus_of_unsaid_plane():
+    got = members("cooke-s8i-ff")
+    assert got == {float(f): (t, None) for f, (t, _, _) in ZHUIGUANG_S8I.items()}
+    assert load_db().lens("cooke-s8i-ff").mount == "ARRI PL"
+    record = CINE["cooke-s8i-ff"]
+    assert record["approximate"] is True and ZHUIGUANG_COOKE in source_of(record)
+    assert "Not confirmed: the close focus" in notes_of(record) and "min_focus_mm not found" in notes_of(record)
+    for focal, (_, metres, _) in ZHUIGUANG_S8I.items():  # each of the dataset's figures quoted in the source
+        assert f"{metres:g} m at {focal} mm" in source_of(record), focal
