@@ -167,9 +167,10 @@ CITED_SETS = {
     # RedShark News review (2mmachining.com copy): '25, 32, 50, 75, and 100mm focal lengths all at T2.4'; the close
     # focus and the 18 mm from the dataset's cooke_sp3_<f> rows (Cooke's SP3 sheet)
     "cooke-sp3": [(18, 2.4, 250), (25, 2.4, 250), (32, 2.4, 350), (50, 2.4, 500), (75, 2.4, 800), (100, 2.4, 800)],
-    # the table's 'ZEISS Nano Prime <f>mm T1.5' rows
-    "zeiss-nano-prime": [(18, 1.5, None), (24, 1.5, None), (35, 1.5, None), (50, 1.5, None), (75, 1.5, None),
-                         (100, 1.5, None)],
+    # the table's 'ZEISS Nano Prime <f>mm T1.5' rows; the close focus from aku0419/zhuiguang-camera-toolkit
+    # src/data/lenses/zeiss-nano-prime-<f>mm-t1-5.json at 3367517 (ZEISS's Technical Data, 'from the sensor plane')
+    "zeiss-nano-prime": [(18, 1.5, 250), (24, 1.5, 350), (35, 1.5, 450), (50, 1.5, 500), (75, 1.5, 750),
+                         (100, 1.5, 1000)],
 }
 
 
