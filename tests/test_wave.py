@@ -239,6 +239,28 @@ def test_cli_focus_optimum_by_contrast() -> None:
               "--format", "json")
     (row,) = json.loads(out.stdout)
     assert row["mtf"] > row["mtf_level"] == 0.1 and row["frequency_lpmm"] == 20.0 and row["f_number"] > 40
+    assert (row["model"], row["wavelength_nm"]) == ("wave", 550.0)
+
+
+def test_cli_focus_optimum_by_contrast_with_a_prescription_is_the_range_dof_gives() -> None:
+    """A lens with a prescription: the real lens's wavefront answers (at its own wavelength), and dof's wave rung,
+    set to the f-number, focus and contrast found, gives back the range asked for (one answer two ways)."""
+    import json
+
+    out = run("focus", "--lens", "dgauss100-lens", "--near", "2m", "--far", "5m", "--optimum", "--criterion",
+              "mtf:0.3@30", "--format", "json")
+    (row,) = json.loads(out.stdout)
+    assert (row["model"], row["wavelength_nm"]) == ("wave+prescription", 587.6)
+    table = run("focus", "--lens", "dgauss100-lens", "--near", "2m", "--far", "5m", "--optimum", "--criterion",
+                "mtf:0.3@30")
+    assert "by the lens's real wavefront (its prescription) at 587.6 nm" in table.stdout
+    level = row["mtf"] * (1 - 1e-9)
+    back = run("dof", "--lens", "dgauss100-lens", "-N", repr(row["f_number"]), "-s", f"{row['distance_mm']!r}mm",
+               "--criterion", f"mtf:{level!r}@30", "--format", "json")
+    (limits,) = json.loads(back.stdout)
+    assert limits["model"] == "wave+prescription"
+    assert limits["near_mm"] == pytest.approx(2000.0, rel=1e-6) and limits["far_mm"] == pytest.approx(5000.0, rel=1e-6)
+    assert limits["working_f_number"] == pytest.approx(row["working_f_number"], rel=1e-12)
 
 
 def test_contrast_depth_of_a_rail_frame_reduces_to_the_quarter_wave_depth() -> None:

@@ -274,3 +274,62 @@ def test_a_beam_that_cannot_get_through_is_a_ray_trace_error() -> None:
 def test_a_field_angle_out_of_range_is_refused() -> None:
     with pytest.raises(DomainError):
         prescription_wave_dof(LENSES["dgauss100"], 4.0, 0.03, 2500.0, field_deg=95.0)
+
+
+# -- the optimum aperture by contrast with a real lens (focus --optimum --criterion) -----------------------------------
+
+OPTIMA = [("dgauss100", "sensor", 2000.0, 5000.0, 30.0), ("telephoto127", "lens", 4000.0, math.inf, 20.0),
+          ("cellphone", "entrance_pupil", 300.0, 900.0, 100.0)]
+
+
+@pytest.mark.parametrize(("name", "plane", "near", "far", "nu"), OPTIMA)
+def test_the_contrast_optimum_is_the_range_the_wave_rung_gives_at_its_contrast(name: str, plane: str, near: float,
+                                                                              far: float, nu: float) -> None:
+    """Focused and stopped down as the optimum says, the wave rung's limits at the MTF it found are the range asked
+    for (two searches, one answer), and no film gives both ends more contrast a tenth of a stop either side."""
+    from camtool.dof.realray import real_focus
+    from camtool.dof.wavetrace import prescription_contrast_optimum
+
+    lens = LENSES[name]
+    r = prescription_contrast_optimum(lens, near, far, nu, plane)
+    limits = prescription_wave_dof(lens, r.f_number, 0.03, r.distance_mm, plane, Criterion(r.mtf * (1 - 1e-9), nu))
+    assert limits.near_mm == pytest.approx(near, rel=1e-6)
+    assert limits.far_mm == pytest.approx(far, rel=1e-6) if math.isfinite(far) else math.isinf(limits.far_mm)
+    assert limits.magnification == pytest.approx(r.magnification, rel=1e-12)
+    tracer = wavefront_tracer(lens)
+    fo = tracer.first
+    for n in (r.f_number * 2 ** -0.05, r.f_number * 2 ** 0.05):
+        films = np.linspace(real_focus(lens, n, far, plane).film_z_mm, real_focus(lens, n, near, plane).film_z_mm,
+                            41)
+        z_ref = films if plane == "sensor" else np.full_like(films, fo.z_h_mm if plane == "lens" else fo.z_e_mm)
+        v_near = 1.0 / (fo.z_e_mm - (z_ref - near))
+        v_far = np.zeros_like(films) if math.isinf(far) else 1.0 / (fo.z_e_mm - (z_ref - far))
+        both = tracer.axial_mtf(np.concatenate([v_near, v_far]), n, np.concatenate([films, films]), nu)
+        assert np.max(np.minimum(both[:41], both[41:])) < r.mtf + 1e-6
+
+
+def test_a_nearly_perfect_lens_gives_the_perfect_lens_contrast_optimum() -> None:
+    """The slow singlet at about f/34 against the analytic optimum of a perfect lens of its focal length and
+    wavelength (camtool.dof.wave.contrast_optimum)."""
+    from camtool.dof.wave import contrast_optimum
+    from camtool.dof.wavetrace import prescription_contrast_optimum
+
+    lens = prescription_from_mapping(EXAMPLE_SINGLET)
+    real = prescription_contrast_optimum(lens, 2000.0, 5000.0, 30.0)
+    perfect = contrast_optimum(wavefront_tracer(lens).first.efl_mm, 2000.0, 5000.0, 30.0, "sensor", lens.wavelength_nm)
+    assert real.f_number == pytest.approx(perfect.f_number, rel=0.02)
+    assert real.mtf == pytest.approx(perfect.mtf, abs=0.003)
+    assert real.distance_mm == pytest.approx(perfect.distance_mm, rel=0.002)
+    assert real.defocus_waves == pytest.approx(perfect.defocus_waves, rel=0.03)
+
+
+def test_the_contrast_optimum_refuses_a_range_out_of_order() -> None:
+    from camtool.dof.wavetrace import prescription_contrast_optimum
+
+    lens = LENSES["dgauss100"]
+    with pytest.raises(DomainError):
+        prescription_contrast_optimum(lens, 5000.0, 2000.0, 30.0)
+    with pytest.raises(DomainError):
+        prescription_contrast_optimum(lens, 2000.0, 5000.0, -1.0)
+    with pytest.raises(DomainError):
+        prescription_contrast_optimum(lens, 10.0, 5000.0, 30.0)  # nearer than the lens can focus

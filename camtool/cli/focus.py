@@ -8,7 +8,13 @@ from camtool.cli.closeup import closeup_options
 from camtool.cli.command import Output, camtool_command, combine_params
 from camtool.cli.common import f_numbers, required, rows_from
 from camtool.cli.equipment import LENS, resolve_coc, resolve_sensor
-from camtool.cli.lensdata import criterion_option, lens_geometry_options, pupil_and_hiatus, wavelength_option
+from camtool.cli.lensdata import (
+    criterion_option,
+    lens_data,
+    lens_geometry_options,
+    pupil_and_hiatus,
+    wavelength_option,
+)
 from camtool.cli.options import (
     DISTANCE_M,
     LENGTH_MM,
@@ -89,7 +95,9 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
     With --optimum it gives the f-number that makes the worst point sharpest
     (defocus against diffraction, Hansma's rule in the working f-number) and
     the blur left; with -m and --depth, the CoC (with -N) or the f-number
-    (with --coc) that give that depth (docs/closeup.md §4, §6).
+    (with --coc) that give that depth (docs/closeup.md §4, §6). With
+    --criterion the optimum is by contrast (docs/wave.md), and a --lens with
+    a prescription answers by its real wavefront, as dof's wave model does.
 
     \b
     Examples:
@@ -100,6 +108,7 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
       camtool focus --lens mp-e-65 -m 1,5 -N 2.8
       camtool focus -f 150 --near 2m --far inf --optimum
       camtool focus -f 150 --near 2m --far inf --optimum --criterion mtf:0.1@20
+      camtool focus --lens dgauss100-lens --near 2m --far 5m --optimum --criterion mtf:0.3@30
       camtool focus --focus-spread 3mm --optimum
       camtool focus -m 2.5 --depth 0.2mm -N 4
     """
@@ -122,8 +131,9 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
                                              cocs)
         with library_errors(ctx):
             values = plans.contrast_optimum(focal_length_mm=f, near_mm=a, far_mm=b, criterion=criterion, coc_mm=c,
-                                            distance_from=distance_from, wavelength_nm=wavelength)
-        note = f"optimum aperture by contrast ({criterion.label()}, docs/wave.md) at {wavelength:g} nm"
+                                            distance_from=distance_from, wavelength_nm=wavelength, lens=lens_data(ctx))
+        real = " by the lens's real wavefront (its prescription)" if values["model"] != "wave" else ""
+        note = f"optimum aperture by contrast ({criterion.label()}, docs/wave.md){real} at {values['wavelength_nm']:g} nm"
         return Output(rows_from(count, values), CONTRAST_COLUMNS, CONTRAST_KEYS, note if fmt == "table" else "")
     if optimum:
         p, delta, lens_note = pupil_and_hiatus(ctx, pupil_mag, hiatus)

@@ -38,9 +38,9 @@ import numpy as np
 from camtool.core.arrays import is_scalar
 from camtool.core.errors import DomainError, require_positive
 from camtool.dof.limits import DofLimits
-from camtool.dof.wave import DEFAULT_CRITERION, ContrastUnreachable, Criterion, criterion_frequency
+from camtool.dof.wave import DEFAULT_CRITERION, ContrastOptimum, ContrastUnreachable, Criterion, criterion_frequency
 
-__all__ = ["NothingSharpHere", "prescription_wave_dof"]
+__all__ = ["NothingSharpHere", "prescription_contrast_optimum", "prescription_wave_dof"]
 
 _GROWTH = (0.5, 0.85, 1.2, 1.7, 2.5, 4.0, 7.0, 12.0, 25.0)
 """Multiples of the perfect lens's vergence step at which the first batch looks for the crossings."""
@@ -278,3 +278,119 @@ def _refine(brackets: list[Any], excess: Any, scales: list[float]) -> list[float
             a, fa, c, fc = b
             out.append(c if fa == fc else c - fc * (c - a) / (fc - fa))
     return out
+
+
+def prescription_contrast_optimum(prescription: Any, near_mm: float, far_mm: float, frequency_lpmm: float,
+                                  distance_from: str = "sensor") -> ContrastOptimum:
+    """The f-number and focus that make the worse end of a range sharpest by contrast, by the real lens's wavefront.
+
+    The counterpart of :func:`camtool.dof.wave.contrast_optimum` for a
+    prescription, at its own wavelength: for each f-number (the fixed stop
+    f/(2·N·m_E), as the ``wave`` rung sets it) the film between the real best
+    focus of the far end and that of the near end where the two ends' MTF at
+    ν are equal (Illinois method; each end is sharpest on its own film, so the
+    worse of the two is largest there), and the f-number where that MTF is
+    largest (golden-section search in ln N about the best of nine f-numbers
+    from the lens's widest to 1/(λν), where a perfect lens's contrast at ν
+    vanishes). The focus is the object whose real
+    best focus is that film (:func:`camtool.dof.realray.focus_for_film`).
+
+    ``working_f_number`` is N·(1 + m/P), as ``dof`` gives it (P the prescription's
+    pupil magnification, m its first-order magnification); ``defocus_waves``
+    the defocus W₂₀ = A²·(v_near − v_far)/(16λ) of either end from the mean of
+    their entrance-pupil vergences (A = f/N), as for a perfect lens.
+
+    Raises
+    ------
+    DomainError
+        ``near_mm``/``far_mm`` out of range (the near end closer than the lens
+        can focus), or no film where both ends have any contrast at ν.
+    RayTraceError
+        Rays of the beam cannot get through the lens.
+
+    Examples
+    --------
+    >>> from camtool.optics.prescription import EXAMPLE_SINGLET, prescription_from_mapping
+    >>> lens = prescription_from_mapping(EXAMPLE_SINGLET)
+    >>> r = prescription_contrast_optimum(lens, 2000.0, 5000.0, 30.0)
+    >>> round(r.f_number, 1), round(r.mtf, 3), round(r.distance_mm)
+    (33.9, 0.179, 2835)
+    """
+    from camtool.core.errors import require
+    from camtool.dof.realray import _check_scene, focus_for_film, real_focus
+    from camtool.optics.wavefront import Vignetted, wavefront_tracer
+
+    _check_scene(prescription, 1.0, near_mm, distance_from, "defocus")
+    require_positive("far_mm", far_mm, allow_inf=True)
+    require("far_mm", far_mm, far_mm > near_mm, "beyond the near limit")
+    require_positive("frequency_lpmm", frequency_lpmm, unit="lp/mm")
+    tracer = wavefront_tracer(prescription)
+    fo = tracer.first
+    lam = tracer.wavelength_mm
+    nu = float(frequency_lpmm)
+    fixed = {"lens": fo.z_h_mm, "entrance_pupil": fo.z_e_mm}.get(distance_from)
+
+    def vergence(distance: float, films: np.ndarray) -> np.ndarray:
+        """The entrance-pupil vergence of the object ``distance`` from the plane asked, with the film at ``films``."""
+        if math.isinf(distance):
+            return np.zeros_like(films)
+        return 1.0 / (fo.z_e_mm - ((films if fixed is None else np.full_like(films, fixed)) - distance))
+
+    def ends(n: float, films: Any) -> tuple[np.ndarray, np.ndarray]:
+        """The MTF at ν of the near and of the far end with the film at ``films``."""
+        films = np.atleast_1d(np.asarray(films, float))
+        both = tracer.axial_mtf(np.concatenate([vergence(near_mm, films), vergence(far_mm, films)]), n,
+                                np.concatenate([films, films]), nu)
+        return both[: films.size], both[films.size :]
+
+    def best_film(n: float) -> tuple[float, float]:
+        """The worse end's MTF on the film that makes the two ends equally sharp at ``n``, and that film."""
+        try:
+            films = [real_focus(prescription, n, far_mm, distance_from).film_z_mm,
+                     real_focus(prescription, n, near_mm, distance_from).film_z_mm]
+            near, far = ends(n, films)
+        except Vignetted:
+            return -1.0, math.nan  # wider than the lens lets through
+        gap = near - far  # below 0 on the far end's film, above on the near end's
+        if not (gap[0] < 0.0 < gap[1]):
+            side = 0 if min(near[0], far[0]) >= min(near[1], far[1]) else 1
+            return float(min(near[side], far[side])), films[side]
+        root = _refine([[films[0], float(gap[0]), films[1], float(gap[1])]],
+                       lambda _which, xs: np.subtract(*ends(n, xs)), [films[1] - films[0]])[0]
+        assert root is not None
+        near, far = ends(n, [root])
+        return float(min(near[0], far[0])), root
+
+    # from the lens's own widest f-number (f/1 when it states none) to where a perfect lens's MTF at ν vanishes
+    low, high = math.log(prescription.f_number or 1.0), math.log(max(1.0 / (lam * nu), 2.0 * (prescription.f_number or 1.0)))
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    memo: dict[float, tuple[float, float]] = {}
+
+    def value(x: float) -> float:
+        if x not in memo:
+            memo[x] = best_film(math.exp(x))
+        return memo[x][0]
+
+    points = np.linspace(low, high, 9)
+    i = int(np.argmax([value(float(x)) for x in points]))
+    a, b = float(points[max(i - 1, 0)]), float(points[min(i + 1, points.size - 1)])
+    while b - a > 1e-4:  # ln N to 1e-4
+        c1, c2 = b - ratio * (b - a), a + ratio * (b - a)
+        if value(c1) >= value(c2):
+            b = c2
+        else:
+            a = c1
+    x_best = max(memo, key=lambda x: memo[x][0])
+    mtf, film = memo[x_best]
+    n_best = math.exp(x_best)
+    if not mtf > 0.0:
+        raise DomainError("near_mm", near_mm, f"a range that has some contrast at {nu:g} lp/mm at some f-number")
+    focus = focus_for_film(prescription, n_best, film)
+    if focus is None:  # pragma: no cover - the film lies between two reachable foci
+        raise DomainError("near_mm", near_mm, "a range whose focus the lens can reach")
+    z_ref = film if fixed is None else fixed
+    v_near, v_far = (float(vergence(d, np.array([film]))[0]) for d in (near_mm, far_mm))
+    defocus = (fo.efl_mm / n_best) ** 2 * (v_near - v_far) / (16.0 * lam)
+    m = focus.magnification
+    return ContrastOptimum(z_ref - focus.object_z_mm, m, n_best, n_best * (1.0 + m / fo.pupil_magnification), mtf,
+                           defocus)

@@ -180,12 +180,18 @@ def optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, distance_from: s
 
 
 def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criterion: Any, coc_mm: Any = None,
-                     distance_from: str = "sensor", wavelength_nm: float = 550.0) -> dict[str, Any]:
+                     distance_from: str = "sensor", wavelength_nm: float = 550.0, lens: Any = None) -> dict[str, Any]:
     """The optimum f-number for a near and far limit by contrast: the most MTF at the criterion's frequency, by key.
 
     :func:`camtool.dof.wave.contrast_optimum` row by row (scalars, or lists of
     one length); the frequency is the criterion's, or 1/c for ``@coc``.
     ``mtf_level`` is the criterion's level: the range is sharp by it where ``mtf`` reaches it.
+
+    ``model`` says what answered: ``wave``, a perfect lens at ``wavelength_nm``; or, with a ``lens``
+    (:class:`camtool.dof.ladder.LensData`) that has a prescription in air, ``wave+prescription``: the real
+    lens's wavefront at the prescription's own wavelength (``wavelength_nm`` gives it), as the ``wave`` rung
+    of ``dof`` takes it (:func:`camtool.dof.wavetrace.prescription_contrast_optimum`). Its near and far limits
+    at that f-number and focus, with the criterion's level set to the ``mtf`` found, are the range asked for.
 
     >>> from camtool.dof.wave import Criterion
     >>> r = contrast_optimum(focal_length_mm=150.0, near_mm=2000.0, far_mm=float("inf"), distance_from="lens",
@@ -193,8 +199,11 @@ def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criteri
     >>> round(r["f_number"], 1), r["mtf"] >= r["mtf_level"]
     (60.2, True)
     """
-    from camtool.dof.wave import contrast_optimum as best
-    from camtool.dof.wave import criterion_frequency
+    from camtool.dof.ladder import WAVE_PRESCRIPTION
+    from camtool.dof.rungs import traceable
+    from camtool.dof.wave import contrast_optimum, criterion_frequency
+
+    real = lens.prescription if lens is not None and traceable(lens) else None
 
     columns = [focal_length_mm, near_mm, far_mm, coc_mm if coc_mm is not None else 0.0]
     count = max((len(v) for v in columns if hasattr(v, "__len__")), default=0)
@@ -204,12 +213,19 @@ def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criteri
     for i in range(max(count, 1)):
         f, a, b, c = (v[i] if hasattr(v, "__len__") else v for v in columns)
         nu = float(criterion_frequency(criterion, c))
-        r = best(float(f), float(a), float(b), nu, distance_from, wavelength_nm)
+        if real is not None:
+            from camtool.dof.wavetrace import prescription_contrast_optimum
+
+            r = prescription_contrast_optimum(real, float(a), float(b), nu, distance_from)
+        else:
+            r = contrast_optimum(float(f), float(a), float(b), nu, distance_from, wavelength_nm)
         for key, value in zip(keys, (f, a, b, r.distance_mm, r.magnification, r.f_number, r.working_f_number, r.mtf,
                                      nu, r.defocus_waves, criterion.level)):
             out[key].append(float(value))  # plain floats to the writer
     values: dict[str, Any] = {key: (column if count else column[0]) for key, column in out.items()}
     values["distance_from"] = distance_from
+    values["model"] = "wave" if real is None else WAVE_PRESCRIPTION
+    values["wavelength_nm"] = wavelength_nm if real is None else real.wavelength_nm
     return values
 
 

@@ -58,7 +58,8 @@ INVERSE_COLUMNS = [
 ]
 
 CONTRAST_KEYS = ["focal_length_mm", "near_mm", "far_mm", "distance_mm", "magnification", "f_number",
-                 "working_f_number", "mtf", "frequency_lpmm", "defocus_waves", "mtf_level", "distance_from"]
+                 "working_f_number", "mtf", "frequency_lpmm", "defocus_waves", "mtf_level", "distance_from", "model",
+                 "wavelength_nm"]
 
 CONTRAST_COLUMNS = [*OPTIMUM_COLUMNS[:5], OPTIMUM_COLUMNS[6], OPTIMUM_COLUMNS[7], Column("mtf", "MTF", NUMBER),
                     Column("frequency_lpmm", "at lp/mm", NUMBER)]
