@@ -1,0 +1,161 @@
+"""The flagship phones of Vivo and Huawei, and Samsung's Galaxy S25 Edge, against the pages their entries cite.
+
+Each phone is its main module (cameras.yaml) plus one lens preset per rear module a page printed after the launch gives
+with its 35 mm equivalent and sensor type (phone-lenses.yaml). A module's f-numbers and equivalent are the ones the
+cited page prints (quoted next to its row, and the quote must stand in the entry's ``source``); its real focal length
+is published by no maker, so it is derived from the equivalent and the sensor preset's diagonal and the entry is
+``approximate``. A figure printed only before the launch (a leak) is left out: the Vivo X200 Ultra's modules carry no
+aperture. A rear module whose sensor no launch page gives is not entered, and its phone's notes name it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from cli_helpers import run_json
+from test_phones_2026 import camera_records, phone_lens_records
+
+from camtool.presets import load_db
+
+FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
+
+CAMERA_BATTLE = "https://newsbuzznow.com/camera-battle-vivo-x200-ultra-vs-x100-ultra"
+VIVO_REVIEW = "https://rehmaan1011.wixsite.com/website/post/vivo-x200-ultra-phone-design-and-build-quality"
+TECHYMN_DXOMARK = "https://techymn.com/vivo-x200-ultra-secures-second-place-in-global-camera-rankings-by-dxomark"
+
+# Pages read that print the Vivo X200 Ultra's apertures, all before the launch (leaks): never a source.
+VIVO_LEAKS = (
+    "notebookcheck.com/Vivo-X200-Ultra-Ungewoehnlichstes-Kamera-Flaggschiff-des-Jahres",
+    "notebookcheck.com/Vivo-X200-Ultra-35mm-Zeiss-Kamera",
+    "notebookcheck.com/Vivo-X200-Ultra-mit-doppelter",
+    "en.adminso.com",
+)
+
+pytestmark = pytest.mark.usefixtures("no_user_presets")  # the shipped presets alone
+
+# Every phone added here and the suffixes of all its entered rear modules (its camera preset is the main module).
+PHONES_VIVO_HUAWEI = {
+    "vivo-x200-ultra": ("main", "ultra-wide", "telephoto"),
+}
+
+# (module, widest f-number, smallest f-number, 35 mm equivalent mm, stated as the maker's, sensor preset, quotes the
+# entry's source must hold, pages it must cite). An f-number no launch page gives is None.
+MODULES = [
+    # GSMArena's Camera battle: "the new 35mm main shooter with a still impressively large 1/1.28-inch sensor";
+    # Techymn on DXOMARK's ranking: "A 50MP primary camera with a 1/1.28-inch sensor".
+    ("vivo-x200-ultra-main", None, None, 35.0, False, "1-1.28-inch",
+     ("the new 35mm main shooter with a still impressively large 1/1.28-inch sensor",
+      "A 50MP primary camera with a 1/1.28-inch sensor"),
+     (CAMERA_BATTLE, VIVO_REVIEW, TECHYMN_DXOMARK)),
+    # Camera battle: "the new 14mm ultrawide with the same 1/1.28-inch sensor".
+    ("vivo-x200-ultra-ultra-wide", None, None, 14.0, False, "1-1.28-inch",
+     ("the new 14mm ultrawide with the same 1/1.28-inch sensor",),
+     (CAMERA_BATTLE, VIVO_REVIEW)),
+    # GSMArena's review: "The 200MP 1/1.4" sensor on the 85mm telephoto"; Camera battle: "14mm, 35mm, and 85mm".
+    ("vivo-x200-ultra-telephoto", None, None, 85.0, False, "1-1.4-inch",
+     ('The 200MP 1/1.4" sensor on the 85mm telephoto', "it brings 14mm, 35mm, and 85mm lenses"),
+     (VIVO_REVIEW, CAMERA_BATTLE)),
+]
+
+# Rear modules a launch page names but that are not entered, and the words the phone's notes use for each.
+NOT_ENTERED: dict[str, tuple[str, ...]] = {}
+
+
+def module_parameters():
+    return pytest.mark.parametrize(
+        ("lens_id", "widest", "smallest", "equivalent", "stated", "sensor_id", "quotes", "pages"), MODULES)
+
+
+def phone_of(lens_id: str) -> str:
+    return next(p for p, suffixes in PHONES_VIVO_HUAWEI.items() if lens_id.removeprefix(f"{p}-") in suffixes
+                and lens_id.startswith(f"{p}-"))
+
+
+def test_the_table_covers_every_module_of_every_phone_added():
+    assert sorted(row[0] for row in MODULES) == sorted(
+        f"{phone}-{suffix}" for phone, suffixes in PHONES_VIVO_HUAWEI.items() for suffix in suffixes)
+
+
+@module_parameters()
+def test_modules_against_their_pages(lens_id, widest, smallest, equivalent, stated, sensor_id, quotes, pages):
+    lens = load_db().lens(lens_id)
+    record = phone_lens_records()[lens_id]
+    assert (lens.f_number_min, lens.f_number_max) == (widest, smallest)
+    assert lens.sensor_id == sensor_id
+    assert lens.mount == "fixed lens" and lens.category == "phone"
+    # an equivalent is a key of the entry only where the maker's own figure is printed (lens_db/README.md)
+    assert record.get("equivalent_focal_length_mm") == (equivalent if stated else None)
+    source = " ".join(record["source"].split())
+    for quote in quotes:
+        assert quote in source, quote
+    for page in pages:
+        assert page in source, page
+    for leak in VIVO_LEAKS:
+        assert leak not in source, leak
+
+
+@module_parameters()
+def test_derived_focal_lengths_give_the_equivalent_back(lens_id, widest, smallest, equivalent, stated, sensor_id,
+                                                        quotes, pages):
+    db = load_db()
+    lens = db.lens(lens_id)
+    diagonal = db.sensor(sensor_id).diagonal_mm
+    # focal length x crop factor (full-frame diagonal over the sensor's) is the printed equivalent, to the rounding of
+    # the stored focal length (two decimals of a millimetre: 0.25 % at 2.12 mm)
+    assert lens.focal_min_mm * FULL_FRAME_DIAGONAL_MM / diagonal == pytest.approx(equivalent, rel=0.003)
+    notes = " ".join(lens.notes.split())
+    assert lens.approximate and "focal_length_mm derived from" in notes and "real focal length was not found" in notes
+
+
+@module_parameters()
+def test_an_aperture_no_launch_page_gives_is_left_out_and_said(lens_id, widest, smallest, equivalent, stated,
+                                                               sensor_id, quotes, pages):
+    notes = " ".join(load_db().lens(lens_id).notes.split())
+    assert (widest is None) == ("f_number_min not found" in notes)
+
+
+@module_parameters()
+def test_the_phone_brings_each_module_with_its_equivalent(lens_id, widest, smallest, equivalent, stated, sensor_id,
+                                                          quotes, pages):
+    db = load_db()
+    phone = phone_of(lens_id)
+    args = ("fov", "--camera", phone) if db.camera(phone).lens_id == lens_id else (
+        "fov", "--camera", phone, "--lens", lens_id)
+    (row,) = run_json(*args)
+    assert row["focal_length_mm"] == db.lens(lens_id).focal_min_mm
+    assert row["equivalent_focal_length_mm"] == pytest.approx(equivalent, abs=0.25)
+    sensor = db.sensor(sensor_id)
+    assert (row["sensor_width_mm"], row["sensor_height_mm"]) == (sensor.width_mm, sensor.height_mm)
+
+
+@pytest.mark.parametrize("phone", sorted(PHONES_VIVO_HUAWEI))
+def test_phones_are_their_main_module(phone):
+    db = load_db()
+    body = db.camera(phone)
+    assert body.category == "phone" and body.mount == "fixed lens" and body.approximate
+    assert body.lens_id == f"{phone}-main"
+    main = db.sensor(db.lens(body.lens_id).sensor_id)
+    assert (body.sensor.width_mm, body.sensor.height_mm) == (main.width_mm, main.height_mm)
+    # the recorded image size no page gives is left out, and the notes say the size is derived
+    assert body.pixels_w is None and body.pixels_h is None
+    assert "derived, not published" in body.notes.lower()
+    assert "https://" in camera_records()[phone]["source"]
+
+
+@pytest.mark.parametrize("phone", sorted(PHONES_VIVO_HUAWEI))
+def test_every_entered_module_is_shipped_and_the_others_are_named(phone):
+    shipped = {lens.id for lens in load_db().all("lens") if lens.id.startswith(f"{phone}-")}
+    assert shipped == {f"{phone}-{suffix}" for suffix in PHONES_VIVO_HUAWEI[phone]}
+    notes = " ".join(load_db().camera(phone).notes.split())
+    for words in NOT_ENTERED.get(phone, ()):
+        assert words in notes, words
+
+
+def test_the_vivo_x200_ultra_main_and_ultra_wide_share_their_sensor():
+    # Camera battle: the 14 mm ultra wide has "the same 1/1.28-inch sensor" as the 35 mm main camera; their focal
+    # lengths then stand as their equivalents do, 35 / 14 = 2.5
+    db = load_db()
+    main, wide = db.lens("vivo-x200-ultra-main"), db.lens("vivo-x200-ultra-ultra-wide")
+    assert main.sensor_id == wide.sensor_id
+    assert main.focal_min_mm / wide.focal_min_mm == pytest.approx(35 / 14, rel=0.003)
