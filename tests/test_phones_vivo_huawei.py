@@ -23,6 +23,12 @@ FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 CAMERA_BATTLE = "https://newsbuzznow.com/camera-battle-vivo-x200-ultra-vs-x100-ultra"
 VIVO_REVIEW = "https://rehmaan1011.wixsite.com/website/post/vivo-x200-ultra-phone-design-and-build-quality"
 TECHYMN_DXOMARK = "https://techymn.com/vivo-x200-ultra-secures-second-place-in-global-camera-rankings-by-dxomark"
+DIGITEC_PURA = "https://www.digitec.ch/en/page/huawei-pura-80-ultra-one-sensor-for-two-cameras-38334"
+PHONEARENA_PURA = ("https://www.phonearena.com/news/the-best-camera-phone-you-probably-wont-own-the-huawei-pura-80-ultra_"
+                   "id172347")
+NEWSY_PURA = "https://www.newsy-today.com/huawei-pura-80-ultra-top-smartphone-camera-dxomark-ranking"
+REALHACKER_PURA = "https://realhacker.news/huawei-pura-80-ultra-smartphone-has-wild-lens-swapping-tech"
+TEKMONO_PURA = "https://tekmono.com/?p=1588"
 
 # Pages read that print the Vivo X200 Ultra's apertures, all before the launch (leaks): never a source.
 VIVO_LEAKS = (
@@ -37,6 +43,7 @@ pytestmark = pytest.mark.usefixtures("no_user_presets")  # the shipped presets a
 # Every phone added here and the suffixes of all its entered rear modules (its camera preset is the main module).
 PHONES_VIVO_HUAWEI = {
     "vivo-x200-ultra": ("main", "ultra-wide", "telephoto"),
+    "huawei-pura-80-ultra": ("main", "telephoto"),
 }
 
 # (module, widest f-number, smallest f-number, 35 mm equivalent mm, stated as the maker's, sensor preset, quotes the
@@ -56,10 +63,33 @@ MODULES = [
     ("vivo-x200-ultra-telephoto", None, None, 85.0, False, "1-1.4-inch",
      ('The 200MP 1/1.4" sensor on the 85mm telephoto', "it brings 14mm, 35mm, and 85mm lenses"),
      (VIVO_REVIEW, CAMERA_BATTLE)),
+    # digitec, Huawei's figures: "focal lengths of 13, 22.5, 83 and 212 millimetres in 35 mm format"; PhoneArena:
+    # "a 1-inch, 50MP main sensor", "a variable aperture covering the f/1.6-4.0 range"; Newsy Today: "(f/1.6-f/4.0)".
+    ("huawei-pura-80-ultra-main", 1.6, 4.0, 22.5, True, "1-inch-phone",
+     ("focal lengths of 13, 22.5, 83 and 212 millimetres in 35 mm format", "it features a 1-inch, 50MP main sensor",
+      "a variable aperture covering the f/1.6-4.0 range", "the variable aperture (f/1.6-f/4.0)"),
+     (DIGITEC_PURA, PHONEARENA_PURA, NEWSY_PURA)),
+    # digitec: "The 83 and 212 millimetres share the sensor and correspond to a 3.7x and 9.4x optical zoom", "different
+    # apertures of f/2.4 and f/3.6"; realhacker: "an 83mm f/2.4 equivalent portrait prime", "a Type 1/1.28 sensor".
+    ("huawei-pura-80-ultra-telephoto", 2.4, 2.4, 83.0, True, "1-1.28-inch",
+     ("The 83 and 212 millimetres share the sensor and correspond to a 3.7x and 9.4x optical zoom",
+      "different apertures of f/2.4 and f/3.6", "the shorter lens is an 83mm f/2.4 equivalent portrait prime",
+      "It is a Type 1/1.28 sensor", "the relatively large 1/1.28-inch-type sensor used for this telephoto system"),
+     (DIGITEC_PURA, REALHACKER_PURA, TEKMONO_PURA)),
 ]
 
 # Rear modules a launch page names but that are not entered, and the words the phone's notes use for each.
-NOT_ENTERED: dict[str, tuple[str, ...]] = {}
+NOT_ENTERED: dict[str, tuple[str, ...]] = {
+    # the 40 MP ultra wide (13 mm, f/2.2: its sensor type is on no page read) and the 9.4x telephoto (212 mm, f/3.6:
+    # 12.5 MP of the 3.7x module's sensor, over an area no page read gives)
+    "huawei-pura-80-ultra": ("Not entered: the 40 MP ultra wide (13 mm, f/2.2", "the 9.4x (212 mm, f/3.6) telephoto"),
+}
+
+# The launch pages' zoom factors against the ratio of the printed equivalents to the main module's: (module, factor).
+# digitec: "correspond to a 3.7x and 9.4x optical zoom" (83 / 22.5 = 3.69).
+ZOOM_FACTORS = [
+    ("huawei-pura-80-ultra-telephoto", 3.7),
+]
 
 
 def module_parameters():
@@ -159,3 +189,21 @@ def test_the_vivo_x200_ultra_main_and_ultra_wide_share_their_sensor():
     main, wide = db.lens("vivo-x200-ultra-main"), db.lens("vivo-x200-ultra-ultra-wide")
     assert main.sensor_id == wide.sensor_id
     assert main.focal_min_mm / wide.focal_min_mm == pytest.approx(35 / 14, rel=0.003)
+
+
+@pytest.mark.parametrize(("lens_id", "factor"), ZOOM_FACTORS)
+def test_printed_equivalents_agree_with_the_printed_zoom_factors(lens_id, factor):
+    records = phone_lens_records()
+    main = records[f"{phone_of(lens_id)}-main"]["equivalent_focal_length_mm"]
+    # to the factor's one decimal: 83 / 22.5 = 3.69 is "3.7x", which the 212 mm lens (9.4x) or a 70 mm one (3.1x) is not
+    assert records[lens_id]["equivalent_focal_length_mm"] / main == pytest.approx(factor, abs=0.05)
+
+
+def test_the_pura_80_ultra_main_aperture_is_variable_over_its_stated_range():
+    # PhoneArena: "a variable aperture covering the f/1.6-4.0 range"; camtool accepts -N between the two and no wider
+    from cli_helpers import run
+
+    (row,) = run_json("dof", "--camera", "huawei-pura-80-ultra", "-N", "2.8", "-s", "2m")
+    assert row["f_number"] == 2.8 and row["focal_length_mm"] == 8.81
+    assert run("dof", "--camera", "huawei-pura-80-ultra", "-N", "1.4", "-s", "2m").exit_code == 2
+    assert run("dof", "--camera", "huawei-pura-80-ultra", "-N", "5.6", "-s", "2m").exit_code == 2
