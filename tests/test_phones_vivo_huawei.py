@@ -29,6 +29,10 @@ PHONEARENA_PURA = ("https://www.phonearena.com/news/the-best-camera-phone-you-pr
 NEWSY_PURA = "https://www.newsy-today.com/huawei-pura-80-ultra-top-smartphone-camera-dxomark-ranking"
 REALHACKER_PURA = "https://realhacker.news/huawei-pura-80-ultra-smartphone-has-wild-lens-swapping-tech"
 TEKMONO_PURA = "https://tekmono.com/?p=1588"
+PHONEARENA_EDGE = "https://www.phonearena.com/news/galaxy-s25-edge-compromises_id170336"
+ELIFE_EDGE = "https://www.3elife.net/Art/test/202506/29/103022_6.html"
+IDNES_EDGE = ("https://www.idnes.cz/mobil/telefony/samsung-galaxy-s25-edge-dxo-mark-hodnoceni-fotomobilu."
+              "A250902_164756_telefony_vok")
 
 # Pages read that print the Vivo X200 Ultra's apertures, all before the launch (leaks): never a source.
 VIVO_LEAKS = (
@@ -44,6 +48,7 @@ pytestmark = pytest.mark.usefixtures("no_user_presets")  # the shipped presets a
 PHONES_VIVO_HUAWEI = {
     "vivo-x200-ultra": ("main", "ultra-wide", "telephoto"),
     "huawei-pura-80-ultra": ("main", "telephoto"),
+    "samsung-galaxy-s25-edge": ("main", "ultra-wide"),
 }
 
 # (module, widest f-number, smallest f-number, 35 mm equivalent mm, stated as the maker's, sensor preset, quotes the
@@ -76,6 +81,16 @@ MODULES = [
       "different apertures of f/2.4 and f/3.6", "the shorter lens is an 83mm f/2.4 equivalent portrait prime",
       "It is a Type 1/1.28 sensor", "the relatively large 1/1.28-inch-type sensor used for this telephoto system"),
      (DIGITEC_PURA, REALHACKER_PURA, TEKMONO_PURA)),
+    # PhoneArena: "the same 200 MP ISOCELL HP2 sensor"; 3elife: "2亿像素、1/1.3英寸" (200 MP, 1/1.3-inch), "F1.7等效光圈和
+    # 24mm等效焦距" (f/1.7, 24 mm equivalent); iDNES.cz: "světelností f/1.7". Samsung states no equivalent.
+    ("samsung-galaxy-s25-edge-main", 1.7, 1.7, 24.0, False, "1-1.3-inch",
+     ("the same 200 MP ISOCELL HP2 sensor", "2亿像素、1/1.3英寸的三星自研HM3传感器", "具备F1.7等效光圈和24mm等效焦距",
+      "světelností f/1.7"),
+     (PHONEARENA_EDGE, ELIFE_EDGE, IDNES_EDGE)),
+    # 3elife: "1200万像素、1/2.55英寸、F2.2和13mm的规格" (12 MP, 1/2.55-inch, f/2.2, 13 mm); PhoneArena: "12 MP ultra-wide".
+    ("samsung-galaxy-s25-edge-ultra-wide", 2.2, 2.2, 13.0, False, "1-2.55-inch",
+     ("1200万像素、1/2.55英寸、F2.2和13mm的规格", "Then comes the 12 MP ultra-wide camera"),
+     (ELIFE_EDGE, PHONEARENA_EDGE)),
 ]
 
 # Rear modules a launch page names but that are not entered, and the words the phone's notes use for each.
@@ -207,3 +222,26 @@ def test_the_pura_80_ultra_main_aperture_is_variable_over_its_stated_range():
     assert row["f_number"] == 2.8 and row["focal_length_mm"] == 8.81
     assert run("dof", "--camera", "huawei-pura-80-ultra", "-N", "1.4", "-s", "2m").exit_code == 2
     assert run("dof", "--camera", "huawei-pura-80-ultra", "-N", "5.6", "-s", "2m").exit_code == 2
+
+
+def test_the_s25_edge_main_camera_is_the_s25_ultras_sensor_and_aperture():
+    # PhoneArena: "the same 200 MP ISOCELL HP2 sensor" as the S25 Ultra; iDNES.cz: the main camera comes "rovnou ze
+    # špičkového typu S25 Ultra" with f/1.7. The two modules share the sensor preset and the aperture; their focal
+    # lengths come from different published figures (the Ultra's 85 degree field, the Edge's 24 mm) and agree to 2 %
+    db = load_db()
+    edge, ultra = db.lens("samsung-galaxy-s25-edge-main"), db.lens("samsung-galaxy-s25-ultra-main")
+    assert edge.sensor_id == ultra.sensor_id == "1-1.3-inch"
+    assert (edge.f_number_min, edge.f_number_max) == (ultra.f_number_min, ultra.f_number_max) == (1.7, 1.7)
+    assert edge.focal_min_mm == pytest.approx(ultra.focal_min_mm, rel=0.02)
+    assert "isocell-hp2" in db.sensor("1-1.3-inch").aliases
+
+
+@pytest.mark.parametrize(("lens_id", "sensor_id", "inch_type"), [
+    ("vivo-x200-ultra-main", "1-1.28-inch", 1.28), ("vivo-x200-ultra-telephoto", "1-1.4-inch", 1.4),
+    ("huawei-pura-80-ultra-main", "1-inch-phone", 1.0), ("samsung-galaxy-s25-edge-ultra-wide", "1-2.55-inch", 2.55),
+])
+def test_the_sensor_presets_stand_for_the_printed_types(lens_id, sensor_id, inch_type):
+    # the optical-format rule (the diagonal about 2/3 of 25.4 mm over the type) holds each preset to the type the page
+    # prints, within the 7 % spread it shows for the phone formats whose size is known otherwise
+    assert load_db().lens(lens_id).sensor_id == sensor_id
+    assert load_db().sensor(sensor_id).diagonal_mm == pytest.approx(25.4 / inch_type * 2 / 3, rel=0.075)
