@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from cli_helpers import run_json
+from cli_helpers import run, run_json
 from test_phones_2026 import camera_records, phone_lens_records
 
 from camtool.presets import load_db
@@ -216,8 +216,6 @@ def test_printed_equivalents_agree_with_the_printed_zoom_factors(lens_id, factor
 
 def test_the_pura_80_ultra_main_aperture_is_variable_over_its_stated_range():
     # PhoneArena: "a variable aperture covering the f/1.6-4.0 range"; camtool accepts -N between the two and no wider
-    from cli_helpers import run
-
     (row,) = run_json("dof", "--camera", "huawei-pura-80-ultra", "-N", "2.8", "-s", "2m")
     assert row["f_number"] == 2.8 and row["focal_length_mm"] == 8.81
     assert run("dof", "--camera", "huawei-pura-80-ultra", "-N", "1.4", "-s", "2m").exit_code == 2
