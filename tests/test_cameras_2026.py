@@ -15,6 +15,7 @@ import yaml
 from cli_helpers import run_json
 from test_cameras_fifth_pass import PHONES_FIFTH_PASS
 from test_phones_2026 import PHONES_2026
+from test_phones_vivo_huawei import PHONES_VIVO_HUAWEI
 
 from camtool.presets import load_db
 
@@ -247,9 +248,9 @@ def test_phone_formats_sized_by_their_type(sensor_id, inch_type):
 
 def test_phone_lenses_file_holds_only_fixed_lenses_named_by_a_camera():
     lenses = list(phone_lens_records().values())
-    # with the flagship phones' modules added since (tests/test_phones_2026.py and tests/test_cameras_fifth_pass.py
-    # check those against their pages)
-    phones_since = {**PHONES_2026, **PHONES_FIFTH_PASS}
+    # with the flagship phones' modules added since (tests/test_phones_2026.py, tests/test_cameras_fifth_pass.py and
+    # tests/test_phones_vivo_huawei.py check those against their pages)
+    phones_since = {**PHONES_2026, **PHONES_FIFTH_PASS, **PHONES_VIVO_HUAWEI}
     added_since = {f"{phone}-{suffix}" for phone, suffixes in phones_since.items() for suffix in suffixes}
     assert {lens["id"] for lens in lenses} == {row[0] for row in LENSES} | added_since
     cameras = {row[1] for row in LENSES} | set(phones_since)

@@ -16,6 +16,7 @@ import yaml
 from conftest import point_xdg_at, presets_home
 from test_cameras_fifth_pass import PHONES_FIFTH_PASS
 from test_phones_2026 import PHONES_2026
+from test_phones_vivo_huawei import PHONES_VIVO_HUAWEI
 
 from camtool.geometry.closeup import internal_focus_at_distance
 from camtool.presets import load_db, paths
@@ -136,6 +137,9 @@ def test_every_phone_has_every_rear_module():
         # the phones of tests/test_phones_2026.py and tests/test_cameras_fifth_pass.py, each with all its rear modules
         **PHONES_2026,
         **PHONES_FIFTH_PASS,
+        # the phones of tests/test_phones_vivo_huawei.py, each with every rear module a launch page gives (the modules
+        # no launch page sizes are named in the phone's notes and checked there)
+        **PHONES_VIVO_HUAWEI,
     }
     # Every shipped phone is listed, so a new phone cannot ship without its modules.
     phones = {camera.id for camera in load_db().all("camera") if camera.category == "phone"}

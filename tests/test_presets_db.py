@@ -71,7 +71,11 @@ def test_shipped_lenses_have_the_design_keys():
                 for key in ("min_focus_mm", "t_number_min"):
                     assert getattr(member, key) or (f"{key} not found" in said and lens.approximate), (member.id, key)
             continue
-        assert lens.f_number_min is not None, lens.id
+        # a phone module's aperture may be missing only where the notes say no launch page gave it (the Vivo X200
+        # Ultra's, printed only in pre-launch leaks)
+        assert lens.f_number_min is not None or (
+            lens.category == "phone" and lens.approximate and "f_number_min not found" in " ".join((lens.notes or "").split())
+        ), lens.id
         if lens.prescription is None and lens.category != "phone":
             notes = (lens.notes or "").lower()
 
