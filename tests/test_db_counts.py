@@ -63,8 +63,8 @@ def test_shipped_lens_count_floor():
     # Floor on the lenses of every shipped file together (every file with a `lenses` section): 569 entries,
     # 816 lenses when each member of a cinema set counts. Raise it as entries are added; it never goes down unnoticed.
     lenses = shipped_lenses()
-    assert len(lenses) >= 580
-    assert sum(len(lens["set"]) if "set" in lens else 1 for lens in lenses) >= 827
+    assert len(lenses) >= 587
+    assert sum(len(lens["set"]) if "set" in lens else 1 for lens in lenses) >= 834
 
 
 def test_the_cine_sets_the_issue_asks_for_stay_shipped():
@@ -74,7 +74,7 @@ def test_the_cine_sets_the_issue_asks_for_stay_shipped():
     assert len(sets) >= 24 and sum(len(lens["set"]) for lens in sets) >= 256
     assert sum(1 for lens in sets if lens.get("squeeze")) >= 4
     cameras = yaml.safe_load((DB / "cameras.yaml").read_text(encoding="utf-8"))["cameras"]
-    assert len(cameras) >= 235 and sum(1 for c in cameras if c.get("category") == "cine") >= 47
+    assert len(cameras) >= 238 and sum(1 for c in cameras if c.get("category") == "cine") >= 47
 
 
 def test_readme_counts_every_lens_and_the_approximate_entries():
