@@ -333,3 +333,6 @@ def test_the_contrast_optimum_refuses_a_range_out_of_order() -> None:
         prescription_contrast_optimum(lens, 2000.0, 5000.0, -1.0)
     with pytest.raises(DomainError):
         prescription_contrast_optimum(lens, 10.0, 5000.0, 30.0)  # nearer than the lens can focus
+    with pytest.raises(DomainError) as error:  # beyond what the lens resolves at any f-number: on the criterion
+        prescription_contrast_optimum(lens, 2000.0, 5000.0, 2000.0)
+    assert error.value.param == "criterion"

@@ -304,7 +304,8 @@ def prescription_contrast_optimum(prescription: Any, near_mm: float, far_mm: flo
     ------
     DomainError
         ``near_mm``/``far_mm`` out of range (the near end closer than the lens
-        can focus), or no film where both ends have any contrast at ν.
+        can focus); on ``criterion``, no f-number and film give both ends any
+        contrast at ν.
     RayTraceError
         Rays of the beam cannot get through the lens.
 
@@ -384,7 +385,7 @@ def prescription_contrast_optimum(prescription: Any, near_mm: float, far_mm: flo
     mtf, film = memo[x_best]
     n_best = math.exp(x_best)
     if not mtf > 0.0:
-        raise DomainError("near_mm", near_mm, f"a range that has some contrast at {nu:g} lp/mm at some f-number")
+        raise DomainError("criterion", f"{nu:g} lp/mm", "a frequency at which the lens gives the range some contrast")
     focus = focus_for_film(prescription, n_best, film)
     if focus is None:  # pragma: no cover - the film lies between two reachable foci
         raise DomainError("near_mm", near_mm, "a range whose focus the lens can reach")
