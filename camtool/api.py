@@ -591,7 +591,7 @@ def hyperfocal_distance(
     >>> round(h.hyperfocal_mm), h.model  # f²/(N·c) = 576/0.33, plus the lens-to-sensor spacing f + N·c
     (1745, 'approx')
     """
-    data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    data, preset_lens = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription, focal_length_mm, f_number)
     if model in ("paraxial", "raytrace"):
         from camtool.dof.ladder import depth_of_field as run
 
@@ -600,7 +600,6 @@ def hyperfocal_distance(
         return HyperfocalDistance(at_h.limits.hyperfocal_mm, at_h.limits.near_mm, at_h.model)
     from camtool.plans.depth import hyperfocal_plan
 
-    preset_lens = _lens_preset(lens, focal_length_mm, f_number)
     if focal_length_mm is None and data is not None and data.prescription is not None:
         from camtool.dof.ladder import prescription_focal_length
 
@@ -832,6 +831,22 @@ def film_time(film: Text, metered_s: ShutterTime) -> Any:
     return film_time_s(chosen, metered_s)
 
 
+def _lens_with_preset(lens: str | None, pupil_magnification: Any, hiatus_mm: Any, prescription: Any,
+                      focal_length_mm: Any, f_number: Any) -> tuple[LensData | None, Any]:
+    """The lens data for the ladder and the lens preset ``lens`` names, as ``--lens`` gives them on the command line:
+    the preset's pupil magnification, hiatus and prescription unless given (:func:`camtool.plans.equipment.lens_data`).
+    """
+    preset_lens = _lens_preset(lens, focal_length_mm, f_number)
+    if preset_lens is None:
+        return _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm), None
+    from camtool.plans.equipment import lens_data
+
+    if prescription is None:
+        _lens(pupil_magnification, hiatus_mm, getattr(preset_lens, "prescription", None), focal_length_mm)
+    return lens_data(pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm, prescription=prescription,
+                     lens_preset=preset_lens), preset_lens
+
+
 def _lens_preset(lens: str | None, focal_length_mm: Any, f_number: Any) -> Any:
     """The lens preset ``lens`` names (None for None), its own range holding every focal length and f-number given,
     as ``--lens`` bounds ``-f`` and ``-N`` on the command line (:func:`camtool.plans.equipment.check_lens`)."""
@@ -1021,11 +1036,11 @@ def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_m
     """
     from camtool.plans.stack import bracket_stack as plan
 
-    preset_lens = _lens_preset(lens, focal_length_mm, f_number)
-    data = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    data, preset_lens = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription, focal_length_mm, f_number)
+    pupil = data.pupil_magnification if data is not None and data.pupil_magnification is not None else 1.0
     return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
                 overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,
-                pupil_magnification=pupil_magnification or 1.0, distance_from=distance_from, lens_name=lens)
+                pupil_magnification=pupil, distance_from=distance_from, lens_name=lens)
 
 
 ChartKind = Annotated[str, _Kind("choice", choices=("dof", "blur", "aperture", "trade", "card"))]

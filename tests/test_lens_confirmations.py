@@ -38,7 +38,7 @@ CONFIRMED = [
     ("canon-ts-e-24mm-f3.5l-ii", 24, 210, 0.34, (3.5, None), "CanonTSE24mmf35LII.analysis.md"),
     # ronbuening/LensVisualizer src/lens-data/hasselblad/HasselbladXCD3545.analysis.md (Focus Mechanism), citing
     # Hasselblad's datasheet: "a minimum object-to-sensor distance of 0.40 m, maximum image scale 1:6.4". The entry had
-    # 1:7 (0.14x) from memory; the datasheet's 1:6.4 (0.156x) replaces it, and the unconfirmed f/32 is left out.
+    # 1:7 (0.14x) without a source; the datasheet's 1:6.4 (0.156x) replaces it, and the unconfirmed f/32 is left out.
     ("hasselblad-xcd-45mm-f3.5", 45, 400, 0.156, (3.5, None), "HasselbladXCD3545.analysis.md"),
     # ronbuening/LensVisualizer src/lens-data/nikon/NikonNikkorPCE19mmf4E.analysis.md, "Manufacturer specifications
     # (Nikon)": Minimum aperture f/32, Minimum focus distance 0.25 m (from focal plane), Maximum reproduction ratio

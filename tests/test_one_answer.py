@@ -75,6 +75,26 @@ def test_hyperfocal_dof_and_the_plan_give_one_h_and_focusing_there_gives_infinit
                                               distance_from=plane, model=model, lens=lens.id,
                                               pupil_magnification=lens.pupil_magnification, hiatus_mm=lens.hiatus_mm)
     assert through_api.hyperfocal_mm == h and through_api.model == row["model"]  # the Python API, the same float
+    # named alone, as --lens names it: the preset's pupil magnification and hiatus come with it
+    bare = camtool.hyperfocal_distance(row["focal_length_mm"], row["f_number"], row["coc_mm"], distance_from=plane,
+                                       model=model, lens=lens.id)
+    assert (bare.hyperfocal_mm, bare.near_mm, bare.model) == (h, row["near_mm"], row["model"])
+
+
+PUPILS = [lens for lens in LENSES if (lens.pupil_magnification, lens.hiatus_mm) != (None, None) and not lens.is_zoom]
+
+
+@pytest.mark.parametrize("lens", PUPILS, ids=lambda lens: lens.id)
+def test_a_focus_bracket_through_the_api_is_the_command_s(lens) -> None:
+    """``bracket_stack(..., lens=NAME)`` takes the preset's pupil magnification and hiatus as ``stack --lens`` does."""
+    import camtool
+
+    n = _f_number(lens, 0.5)
+    closest = (lens.min_focus_mm or 300.0) * 2
+    rows = run_json("stack", "--lens", lens.id, "-N", repr(n), "--coc", "0.03", "--near", f"{closest!r}mm",
+                    "--far", "inf")
+    plan = camtool.bracket_stack(lens.focal_min_mm, n, 0.03, closest, math.inf, lens=lens.id)
+    assert [(f.distance_mm, f.near_mm) for f in plan.frames] == [(r["distance_mm"], r["near_mm"]) for r in rows]
 
 
 @pytest.mark.parametrize("lens", FOCUSING[::5], ids=lambda lens: lens.id)

@@ -227,7 +227,7 @@ SHORTER_AT_CLOSE_FOCUS = {
     ("canon-rf-50mm-f1.8-stm", 50.0), ("canon-rf-85mm-f1.2l-usm", 85.0), ("canon-ts-e-90mm-f2.8l-macro", 90.0),
     ("nikon-z-50mm-f1.8-s", 50.0), ("nikon-z-85mm-f1.8-s", 85.0), ("sony-fe-50mm-f1.8", 50.0),
     ("sony-fe-85mm-f1.8", 85.0), ("fujifilm-xf23mm-f2-r-wr", 23.0), ("fujifilm-xf56mm-f1.2-r-wr", 56.0),
-    # (the Hasselblad XCD 3,5/45 left this list when its 1:7 from memory became the datasheet's 1:6.4, more than a
+    # (the Hasselblad XCD 3,5/45 left this list when its unsourced 1:7 became the datasheet's 1:6.4, more than a
     # unit-focusing 45 mm lens reaches at 0.40 m: tests/test_lens_confirmations.py)
     ("fujifilm-gf110mm-f2-r-lm-wr", 110.0),
     ("canon-rf-85mm-f2-macro-is-stm", 85.0),

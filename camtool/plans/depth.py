@@ -193,8 +193,12 @@ field by mtf:0.181@coc at 550 nm (nothing is sharp enough: even in focus the MTF
     if np.ndim(f0s) == 0:
         (one,) = settings
         return HyperfocalPlan(one.focal_length_mm, one.f_number, one.hyperfocal_mm, one.near_mm, one.model)
-    return HyperfocalPlan(focal, kn, np.array([s.hyperfocal_mm for s in settings]),
-                          np.array([s.near_mm for s in settings]), [s.model for s in settings])
+    models = [s.model for s in settings]
+    # the shape of the input, as the ladder gives it without a preset (one model name when every row has it)
+    return HyperfocalPlan(focal, kn, np.array([s.hyperfocal_mm for s in settings]).reshape(f0s.shape),
+                          np.array([s.near_mm for s in settings]).reshape(f0s.shape),
+                          models[0] if len(set(models)) == 1 else np.array(models, dtype=object).reshape(f0s.shape)
+                          .tolist())
 
 
 def _values(value: Any) -> list[float]:
