@@ -334,3 +334,11 @@ def test_the_api_s_hyperfocal_distance_takes_arrays_of_any_shape() -> None:
     for index in np.ndindex(focal.shape):
         one = camtool.hyperfocal_distance(float(focal[index]), 8, 0.03)
         assert many.hyperfocal_mm[index] == one.hyperfocal_mm and many.near_mm[index] == one.near_mm
+    # the same with a lens preset that focuses internally (each scene through its own plan): the input's shape kept
+    apertures = np.array([[4.0, 8.0, 11.0], [16.0, 5.6, 2.8]])
+    many = camtool.hyperfocal_distance(np.full(apertures.shape, 50.0), apertures, 0.03, lens="nikon-z-50mm-f1.8-s")
+    assert np.shape(many.hyperfocal_mm) == np.shape(many.near_mm) == apertures.shape
+    for index in np.ndindex(apertures.shape):
+        one = camtool.hyperfocal_distance(50.0, float(apertures[index]), 0.03, lens="nikon-z-50mm-f1.8-s")
+        assert (many.hyperfocal_mm[index], many.near_mm[index]) == (one.hyperfocal_mm, one.near_mm)
+        assert many.model == one.model
