@@ -328,3 +328,26 @@ def test_chart_aperture_marks_the_contrast_optimum() -> None:
     assert data.marks[-1].x == pytest.approx(expected.f_number, rel=1e-12) and data.marks[-1].y is None
     plain = aperture_chart(focal_length_mm=100.0, coc_mm=0.03, near_mm=1000.0, far_mm=1500.0)
     assert len(plain.marks) == 2 and "contrast_f_number" not in plain.extra
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 48, 49, 96, 768, 3072])
+def test_the_gauss_legendre_nodes_are_numpy_s_and_their_weights_mpmath_s(n: int) -> None:
+    """The quadrature's nodes against numpy's ``leggauss`` (an eigenproblem) and a few weights against mpmath's
+    Legendre polynomials at 40 digits (Newton's method there from our node, then w = 2/((1 − x²)·P′ₙ(x)²))."""
+    from camtool.optics.transfer import _gauss
+
+    nodes, weights = _gauss(n)
+    if n <= 768:  # numpy's dense eigenproblem takes seconds beyond
+        reference, _ = np.polynomial.legendre.leggauss(n)
+        assert np.max(np.abs(2.0 * nodes - 1.0 - reference)) < 1e-15
+    assert math.fsum(weights) == pytest.approx(1.0, abs=1e-14)
+    with mpmath.workdps(40):
+        for j in sorted({0, n // 3, n // 2, n - 1}):
+            x = mpmath.mpf(2.0 * float(nodes[j]) - 1.0)
+            for _ in range(4):
+                p, before = mpmath.legendre(n, x), mpmath.legendre(n - 1, x)
+                x -= p / (n * (x * p - before) / (x * x - 1))
+            slope = n * (x * mpmath.legendre(n, x) - mpmath.legendre(n - 1, x)) / (x * x - 1)
+            exact = 1 / ((1 - x * x) * slope * slope)  # on [0, 1]: half of 2/((1 − x²)P′²)
+            assert abs(2.0 * nodes[j] - 1.0 - float(x)) < 1e-15
+            assert float(abs(weights[j] - exact) / exact) < 1e-9
