@@ -13,8 +13,8 @@ import math
 from pathlib import Path
 
 import pytest
-import yaml
 from cli_helpers import run_json
+from phone_checks import check_phone_is_its_main_module, phone_lens_records
 
 from camtool.presets import load_db
 
@@ -57,16 +57,6 @@ ZOOM_FACTORS = [
     ("xiaomi-14-ultra-telephoto", 3.2),
     ("xiaomi-14-ultra-periscope", 5.0),
 ]
-
-
-def phone_lens_records() -> dict[str, dict]:
-    text = (ROOT / "lens_db" / "phone-lenses.yaml").read_text(encoding="utf-8")
-    return {record["id"]: record for record in yaml.safe_load(text)["lenses"]}
-
-
-def camera_records() -> dict[str, dict]:
-    text = (ROOT / "lens_db" / "cameras.yaml").read_text(encoding="utf-8")
-    return {record["id"]: record for record in yaml.safe_load(text)["cameras"]}
 
 
 def test_the_table_covers_every_module_of_every_phone_added():
@@ -114,17 +104,7 @@ def test_stated_equivalents_agree_with_the_stated_zoom_factors(lens_id, factor):
 
 @pytest.mark.parametrize("phone", sorted(PHONES_2026))
 def test_phones_are_their_main_module(phone):
-    db = load_db()
-    body = db.camera(phone)
-    assert body.category == "phone" and body.mount == "fixed lens" and body.approximate
-    assert body.lens_id == f"{phone}-main"
-    main = db.lens(body.lens_id)
-    assert (body.sensor.width_mm, body.sensor.height_mm) == (db.sensor(main.sensor_id).width_mm,
-                                                             db.sensor(main.sensor_id).height_mm)
-    # the recorded image size no page gives is left out, and the notes say the size is derived
-    assert body.pixels_w is None and body.pixels_h is None
-    assert "derived, not published" in body.notes.lower()
-    assert "https://" in camera_records()[phone]["source"]
+    check_phone_is_its_main_module(phone)
 
 
 @pytest.mark.parametrize("phone", sorted(PHONES_2026))

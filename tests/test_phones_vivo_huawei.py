@@ -14,7 +14,13 @@ import math
 
 import pytest
 from cli_helpers import run, run_json
-from test_phones_2026 import camera_records, phone_lens_records
+from phone_checks import (
+    check_focal_length_gives_the_equivalent,
+    check_fov_gives_the_equivalent,
+    check_module_against_its_pages,
+    check_phone_is_its_main_module,
+    phone_lens_records,
+)
 
 from camtool.presets import load_db
 
@@ -124,33 +130,15 @@ def test_the_table_covers_every_module_of_every_phone_added():
 
 @module_parameters()
 def test_modules_against_their_pages(lens_id, widest, smallest, equivalent, stated, sensor_id, quotes, pages):
-    lens = load_db().lens(lens_id)
-    record = phone_lens_records()[lens_id]
-    assert (lens.f_number_min, lens.f_number_max) == (widest, smallest)
-    assert lens.sensor_id == sensor_id
-    assert lens.mount == "fixed lens" and lens.category == "phone"
-    # an equivalent is a key of the entry only where the maker's own figure is printed (lens_db/README.md)
-    assert record.get("equivalent_focal_length_mm") == (equivalent if stated else None)
-    source = " ".join(record["source"].split())
-    for quote in quotes:
-        assert quote in source, quote
-    for page in pages:
-        assert page in source, page
-    for leak in VIVO_LEAKS:
-        assert leak not in source, leak
+    check_module_against_its_pages(lens_id, widest, smallest, equivalent, stated, sensor_id, quotes, pages,
+                                   never=tuple(VIVO_LEAKS))
 
 
 @module_parameters()
 def test_derived_focal_lengths_give_the_equivalent_back(lens_id, widest, smallest, equivalent, stated, sensor_id,
                                                         quotes, pages):
-    db = load_db()
-    lens = db.lens(lens_id)
-    diagonal = db.sensor(sensor_id).diagonal_mm
-    # focal length x crop factor (full-frame diagonal over the sensor's) is the printed equivalent, to the rounding of
-    # the stored focal length (two decimals of a millimetre: 0.25 % at 2.12 mm)
-    assert lens.focal_min_mm * FULL_FRAME_DIAGONAL_MM / diagonal == pytest.approx(equivalent, rel=0.003)
-    notes = " ".join(lens.notes.split())
-    assert lens.approximate and "focal_length_mm derived from" in notes and "real focal length was not found" in notes
+    # to the rounding of the stored focal length (two decimals of a millimetre: 0.25 % at 2.12 mm)
+    check_focal_length_gives_the_equivalent(lens_id, sensor_id, equivalent, 0.003, "real focal length was not found")
 
 
 @module_parameters()
@@ -163,29 +151,14 @@ def test_an_aperture_no_launch_page_gives_is_left_out_and_said(lens_id, widest, 
 @module_parameters()
 def test_the_phone_brings_each_module_with_its_equivalent(lens_id, widest, smallest, equivalent, stated, sensor_id,
                                                           quotes, pages):
-    db = load_db()
-    phone = phone_of(lens_id)
-    args = ("fov", "--camera", phone) if db.camera(phone).lens_id == lens_id else (
-        "fov", "--camera", phone, "--lens", lens_id)
-    (row,) = run_json(*args)
-    assert row["focal_length_mm"] == db.lens(lens_id).focal_min_mm
-    assert row["equivalent_focal_length_mm"] == pytest.approx(equivalent, abs=0.25)
-    sensor = db.sensor(sensor_id)
+    row = check_fov_gives_the_equivalent(phone_of(lens_id), lens_id, equivalent, 0.25)
+    sensor = load_db().sensor(sensor_id)
     assert (row["sensor_width_mm"], row["sensor_height_mm"]) == (sensor.width_mm, sensor.height_mm)
 
 
 @pytest.mark.parametrize("phone", sorted(PHONES_VIVO_HUAWEI))
 def test_phones_are_their_main_module(phone):
-    db = load_db()
-    body = db.camera(phone)
-    assert body.category == "phone" and body.mount == "fixed lens" and body.approximate
-    assert body.lens_id == f"{phone}-main"
-    main = db.sensor(db.lens(body.lens_id).sensor_id)
-    assert (body.sensor.width_mm, body.sensor.height_mm) == (main.width_mm, main.height_mm)
-    # the recorded image size no page gives is left out, and the notes say the size is derived
-    assert body.pixels_w is None and body.pixels_h is None
-    assert "derived, not published" in body.notes.lower()
-    assert "https://" in camera_records()[phone]["source"]
+    check_phone_is_its_main_module(phone)
 
 
 @pytest.mark.parametrize("phone", sorted(PHONES_VIVO_HUAWEI))
