@@ -141,3 +141,20 @@ def test_a_narrow_terminal_leaves_columns_out_but_never_crops_a_number(command: 
     # (a table too narrow for its answers becomes blocks of "header (unit): value"; the labels are headers)
     assert [word for word in narrow.stdout.split() if word not in shown and any(ch.isdigit() for ch in word)
             and not word.endswith(":")] == []
+
+
+def test_the_quick_nan_check_of_many_rows_is_the_row_by_row_one() -> None:
+    # the rows of a table are checked for a NaN in one pass (camtool.render.serial.any_unanswered) before any is
+    # withheld: the same verdict as unanswered() row by row, whatever the values and their types
+    import random
+
+    from camtool.render.serial import any_unanswered, unanswered
+
+    kinds = [1.0, -0.0, math.inf, math.nan, np.float64(2.0), np.float64("nan"), np.float32("nan"), "nan", None, 3,
+             [math.nan], True]
+    chooser = random.Random(7)
+    for _ in range(500):
+        keys = chooser.sample(["a", "b", "c", "d"], chooser.randint(0, 4))
+        rows = [{key: chooser.choice(kinds) for key in chooser.sample(["a", "b", "c", "d", "e"], chooser.randint(0, 5))}
+                for _ in range(chooser.randint(0, 4))]
+        assert any_unanswered(rows, keys) == any(unanswered(row, keys) for row in rows), (rows, keys)
