@@ -295,6 +295,14 @@ def test_a_traced_stack_plan_shows_its_frames_on_a_terminal(tmp_path) -> None:
     assert len((tmp_path / "out.csv").read_text().splitlines()) > 5
 
 
+def test_a_real_lens_contrast_optimum_shows_its_ranges_on_a_terminal(tmp_path) -> None:
+    args = ["focus", "--lens", "dgauss100-lens", "--near", "2m,3m", "--far", "5m,inf", "--optimum", "--criterion",
+            "mtf:0.3@30", "--format", "csv"]
+    drawn, status = _stderr_on_a_terminal(args, tmp_path / "out.csv")
+    assert status == 0 and "camtool focus: ranges" in drawn
+    assert len((tmp_path / "out.csv").read_text().splitlines()) == 5  # each near with each far
+
+
 def test_text_folds_where_rich_folds_it() -> None:
     # the line-at-a-time drawing breaks a long text cell itself (rich's wrapping module costs 7 ms to import);
     # rich's public Text.wrap is the reference, over random words, runs of spaces and over-long words

@@ -129,9 +129,15 @@ def focus(ctx: click.Context, focal_length, distance, magnification, f_number, e
         cocs, _ = resolve_coc(ctx, list(coc), coc_rule, resolve_sensor(ctx, sensor, crop, preset_files), pixel_pitch)
         count, (f, a, b, c) = combine_params(ctx, focal, required(ctx, near, "--near"), required(ctx, far, "--far"),
                                              cocs)
-        with library_errors(ctx):
+        lens = lens_data(ctx)
+        from camtool.core.steps import reporting
+        from camtool.render.progress import progress
+
+        traced = lens is not None and lens.prescription is not None  # the real lens: half a second a row
+        with library_errors(ctx), progress("camtool focus: ranges", total=max(count, 1) if traced else 0) as bar, \
+                reporting(bar.advance):
             values = plans.contrast_optimum(focal_length_mm=f, near_mm=a, far_mm=b, criterion=criterion, coc_mm=c,
-                                            distance_from=distance_from, wavelength_nm=wavelength, lens=lens_data(ctx))
+                                            distance_from=distance_from, wavelength_nm=wavelength, lens=lens)
         real = " by the lens's real wavefront (its prescription)" if values["model"] != "wave" else ""
         note = f"optimum aperture by contrast ({criterion.label()}, docs/wave.md){real} at {values['wavelength_nm']:g} nm"
         return Output(rows_from(count, values), CONTRAST_COLUMNS, CONTRAST_KEYS, note if fmt == "table" else "")

@@ -214,9 +214,11 @@ def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criteri
         f, a, b, c = (v[i] if hasattr(v, "__len__") else v for v in columns)
         nu = float(criterion_frequency(criterion, c))
         if real is not None:
+            from camtool.core.steps import step
             from camtool.dof.wavetrace import prescription_contrast_optimum
 
             r = prescription_contrast_optimum(real, float(a), float(b), nu, distance_from)
+            step()  # half a second a row: a progress bar listens
         else:
             r = contrast_optimum(float(f), float(a), float(b), nu, distance_from, wavelength_nm)
         for key, value in zip(keys, (f, a, b, r.distance_mm, r.magnification, r.f_number, r.working_f_number, r.mtf,

@@ -1,8 +1,9 @@
 """Progress on long work: a rich bar on standard error, only when standard error is a terminal.
 
 Long work (a ``--batch`` file or an option grid of thousands of rows, a
-traced stack plan, ``exif -r`` over a folder, a lensfun import, a traced
-``chart trade`` or ``--model all`` grid) reports its steps to a
+traced stack plan, ``focus --optimum --criterion`` by a real lens's wavefront,
+``exif -r`` over a folder, a lensfun import, a traced ``chart trade`` or
+``--model all`` grid) reports its steps to a
 :class:`Progress`; the bar is drawn on stderr only when stderr is a terminal
 (and ``TERM`` is not ``dumb``), never on a pipe and never on stdout, and it is
 updated as the work reports — once per chunk, never per row. It disappears
