@@ -110,3 +110,16 @@ def test_lens_db_readme_counts_the_smallest_apertures():
     lenses = shipped_lenses()
     missing = sum(1 for lens in lenses if "f_number_max not found" in " ".join(str(lens.get("notes", "")).split()))
     assert (int(match.group(1)), int(match.group(2))) == (sum(1 for lens in lenses if lens.get("f_number_max")), missing)
+
+
+def test_lens_db_readme_counts_the_approximate_entries_now():
+    # the "now" columns of lens_db/README.md's table of approximate entries: sensors.yaml, cameras.yaml and
+    # lenses.yaml, each with how many of its approximate entries are phone figures
+    text = (DB / "README.md").read_text(encoding="utf-8")
+    for kind in ("sensors", "cameras", "lenses"):
+        match = re.search(rf"^\| {kind} \| (\d+) \| \d+ \| \d+ \| (\d+) \| (\d+) \|$", text, re.MULTILINE)
+        assert match, f"lens_db/README.md no longer counts the approximate {kind}"
+        entries = yaml.safe_load((DB / f"{kind}.yaml").read_text(encoding="utf-8"))[kind]
+        approximate = [entry for entry in entries if entry.get("approximate")]
+        phones = sum(1 for entry in approximate if entry.get("category") == "phone")
+        assert tuple(map(int, match.groups())) == (len(entries), len(approximate), phones), kind

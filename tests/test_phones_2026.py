@@ -3,8 +3,9 @@
 Each module's f-numbers and stated 35 mm equivalent are the ones the page printed at or after the phone's launch
 (quoted next to the row, and the quote must stand in the entry's ``source``); its real focal length is not published,
 so it is derived from the equivalent and the sensor preset's diagonal and the entry is ``approximate`` and says so.
-Leaks and rumours are not sources: a phone for which a launch page gives no aperture or no equivalent for one of its
-rear modules is not shipped at all (tests/test_presets_consistency.py requires every rear module of a shipped phone).
+Leaks and rumours are not sources. These phones ship with every rear module; a phone entered later may leave out a
+module no launch page sizes (its notes name it) or an aperture no launch page gives (lens_db/README.md,
+tests/test_phones_vivo_huawei.py).
 """
 
 from __future__ import annotations
