@@ -61,6 +61,18 @@ def check_cited_row(record: dict[str, Any], focal: float, distance: float | None
         assert record["max_magnification"] == pytest.approx(largest, abs=0.0006)
 
 
+def check_against_analysis(record: dict[str, Any], closest_m: float, magnification: float | None,
+                           citation: str) -> None:
+    """The entry's closest focus (every row of a zoom) and largest magnification are the ones a lens-design analysis
+    quotes from the maker, and its ``source`` cites the analysis (``citation``: repository, path and commit)."""
+    rows = record.get("close_focus") or [{"min_focus_mm": record["min_focus_mm"]}]
+    assert {row["min_focus_mm"] for row in rows} == {round(closest_m * 1000)}
+    assert record["min_focus_mm"] == round(closest_m * 1000)
+    if magnification is not None:
+        assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
+    assert citation in " ".join(record["source"].split())
+
+
 def check_every_entry_cited(records: list[dict[str, Any]], cited: list[tuple[Any, ...]]) -> None:
     """Every entry of a file has its rows in ``cited`` (lens id, focal length, ...), a zoom one per published row."""
     assert {lens_id for lens_id, *_ in cited} == {r["id"] for r in records}

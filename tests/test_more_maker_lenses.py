@@ -9,6 +9,7 @@ import pytest
 from cli_helpers import run, run_json
 from lens_checks import (  # noqa: F401 - isolated: an autouse fixture
     DB,
+    check_against_analysis,
     check_cited_row,
     check_entries_are_new,
     check_every_entry_cited,
@@ -265,14 +266,8 @@ LENSVISUALIZER = [
 @pytest.mark.parametrize(("lens_id", "name", "commit", "closest_m", "magnification"), LENSVISUALIZER,
                          ids=[row[0] for row in LENSVISUALIZER])
 def test_figures_against_the_lensvisualizer_analyses(lens_id, name, commit, closest_m, magnification):
-    record = record_of(RECORDS, lens_id)
-    rows = record.get("close_focus") or [{"min_focus_mm": record["min_focus_mm"]}]
-    assert {row["min_focus_mm"] for row in rows} == {round(closest_m * 1000)}
-    assert record["min_focus_mm"] == round(closest_m * 1000)
-    if magnification is not None:
-        assert record["max_magnification"] == pytest.approx(magnification, abs=0.0006)
-    source = " ".join(record["source"].split())
-    assert f"ronbuening/LensVisualizer src/lens-data/{name} at {commit}" in source
+    check_against_analysis(record_of(RECORDS, lens_id), closest_m, magnification,
+                           f"ronbuening/LensVisualizer src/lens-data/{name} at {commit}")
 
 
 def test_the_s_pro_50mm_keeps_its_page_for_the_magnification_and_smallest_aperture():
