@@ -137,14 +137,11 @@ class _ShippedKeys:
             path = self.paths_by_name[name]
             data = self.files[path]
             try:
-                record = data.record_at(self.kind, index)
+                record = data.record_at(self.kind, index)  # a record's ``_keys`` is a list, as every check holds
             except IndexError:
                 return None
-            keys = record.get("_keys")
-            if not isinstance(keys, list) or key not in keys:
-                return None
             entry = self._made[(name, index)] = _Entry(record, path, self.tier, at=(data, self.kind, index))
-        return entry if key in entry.keys else None
+        return entry if key in entry.keys else None  # the record must carry the key it was found by
 
 
 class Database:

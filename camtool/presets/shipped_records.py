@@ -159,17 +159,9 @@ def shipped_listing(names: set[str]) -> dict[str, list[list[Any]]] | None:
     if names != set(index) or _shipped_index is None:
         return None
     if "rows" not in _shipped_index:  # read and checked once a process
-        _shipped_index["rows"] = None
-        span = _shipped_index.get("listing")
-        if (isinstance(span, list) and len(span) == 3 and isinstance(span[2], str)
-                and all(type(n) is int and n >= 0 for n in span[:2]) and span[0] + span[1] <= len(body)):
-            blob = body[span[0]:span[0] + span[1]]
-            try:
-                rows = json.loads(blob) if cache.source_digest(blob) == span[2] else None
-            except (ValueError, RecursionError):
-                rows = None
-            if isinstance(rows, dict) and set(rows) <= set(KINDS) and all(isinstance(v, list) for v in rows.values()):
-                _shipped_index["rows"] = rows
+        rows = _checked_json(body, _shipped_index.get("listing"))
+        shaped = isinstance(rows, dict) and set(rows) <= set(KINDS) and all(isinstance(v, list) for v in rows.values())
+        _shipped_index["rows"] = rows if shaped else None
     return _shipped_index["rows"]
 
 
