@@ -72,14 +72,7 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
     for each in [kind] if kind else KINDS:
         shipped = database.shipped_listing(each) if each != "film" else None
         if shipped is not None:  # the shipped files alone, as the build listed them (the same rows, not rebuilt)
-            from camtool.presets.paths import shipped_dir
-
-            directory = shipped_dir()
-            files: dict[str, str] = {}  # a file's path joined once, not once a row
-            for preset_id, name, aliases, line, origin in shipped:
-                if not needle or needle in " ".join([preset_id, name, *aliases]).lower():
-                    path = files.get(origin) or files.setdefault(origin, os.path.join(directory, *origin.split("/")))
-                    rows.append(PresetRow(each, preset_id, name, line, "shipped", path))
+            rows += _shipped_rows(each, shipped, needle)
             continue
         films = _listed_films(database, needle) if each == "film" else None
         if films is not None:  # the shipped films and the shipped files' films, as the build listed them
@@ -90,11 +83,25 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
             films = shipped_films()
             ids = {f.id for f in films}
             listed = [(f, "shipped", FILMS_ORIGIN) for f in films] + [x for x in listed if x[0].id not in ids]
-        for preset, tier, origin in listed:
-            if needle and needle not in " ".join([preset.id, preset.name, *preset.aliases]).lower():
-                continue
-            rows.append(PresetRow(each, preset.id, preset.name, summary(preset), tier, origin))
+        rows += [PresetRow(each, preset.id, preset.name, summary(preset), tier, origin) for preset, tier, origin in listed
+                 if _matches(needle, preset.id, preset.name, preset.aliases)]
     return rows
+
+
+def _matches(needle: str, preset_id: str, name: str, aliases: Any) -> bool:
+    """Whether a listing's search text (lower case; empty: every preset) is in a preset's id, name or aliases."""
+    return not needle or needle in " ".join([preset_id, name, *aliases]).lower()
+
+
+def _shipped_rows(kind: str, listed: list[list[Any]], needle: str) -> list[PresetRow]:
+    """The rows of ``kind`` the build listed (``[id, name, aliases, summary, file under lens_db/]``) that match."""
+    from camtool.presets.paths import shipped_dir
+
+    directory = shipped_dir()
+    files: dict[str, str] = {}  # a file's path joined once, not once a row
+    return [PresetRow(kind, preset_id, name, line, "shipped",
+                      files.get(origin) or files.setdefault(origin, os.path.join(directory, *origin.split("/"))))
+            for preset_id, name, aliases, line, origin in listed if _matches(needle, preset_id, name, aliases)]
 
 
 def _listed_films(database: Any, needle: str) -> list[PresetRow] | None:
@@ -113,14 +120,10 @@ def _listed_films(database: Any, needle: str) -> list[PresetRow] | None:
         return None
     if shipped is None:
         return None
-    rows = [PresetRow("film", film_id, name, line, "shipped", FILMS_ORIGIN) for film_id, name, _aliases, line in
-            shipped if not needle or needle in " ".join([film_id, name, *_aliases]).lower()]
     ids = {film[0] for film in shipped}
-    from camtool.presets.paths import shipped_dir
-
-    return rows + [PresetRow("film", film_id, name, line, "shipped", os.path.join(shipped_dir(), *origin.split("/")))
-                   for film_id, name, aliases, line, origin in in_files
-                   if film_id not in ids and (not needle or needle in " ".join([film_id, name, *aliases]).lower())]
+    return ([PresetRow("film", film_id, name, line, "shipped", FILMS_ORIGIN) for film_id, name, aliases, line in shipped
+             if _matches(needle, film_id, name, aliases)]
+            + [row for row in _shipped_rows("film", in_files, needle) if row.id not in ids])
 
 
 def show_preset(*, database: Any, name: str, kind: str | None = None) -> PresetShown:
