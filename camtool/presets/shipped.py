@@ -33,11 +33,14 @@ import argparse
 import json
 import os
 import sys
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from camtool.core.cache import source_digest
 from camtool.core.files import read_bytes
 from camtool.presets import loader, paths, shipped_records
+
+if TYPE_CHECKING:
+    from camtool.presets.database import Database
 
 
 def build_records() -> bytes:
@@ -53,7 +56,7 @@ def build_records() -> bytes:
         payload = loader.entry_payload(parsed[path]._records)
         if payload is None:
             raise ValueError(f"{path}: its records cannot be written as JSON")
-        name = os.path.relpath(path, directory).replace(os.sep, "/")
+        name = _name(path, directory)
         end = payload.index(b"\n")
         spans = json.loads(payload[:end])
         body = payload[end + 1:]
@@ -61,11 +64,14 @@ def build_records() -> bytes:
         files[name] = [source_digest(raw), offset, len(payload), digests]
         blobs.append(payload)
         offset += len(payload)
-    listing = listing_payload(parsed, directory)
+    from camtool.presets.database import Database
+
+    database = Database([paths.Tier("shipped", tuple(parsed))], parsed)  # the shipped files alone, as a command reads them
+    listing = listing_payload(database, directory)
     keys: dict[str, list[object]] = {}
     tail = [listing]
     listing_at, offset = offset, offset + len(listing)
-    for kind, buckets in keys_payloads(parsed, directory).items():
+    for kind, buckets in keys_payloads(database, directory).items():
         spans = []
         for blob in buckets:
             spans.append([offset, len(blob), source_digest(blob)])
@@ -83,7 +89,12 @@ def build_records() -> bytes:
     return index.encode("utf-8") + b"\n" + b"".join(blobs) + b"".join(tail)
 
 
-def keys_payloads(parsed: dict[str, loader.FileData], directory: str) -> dict[str, list[bytes]]:
+def _name(path: str, directory: str) -> str:
+    """The name of a shipped file under ``lens_db/`` (``/``-separated), as the records and listings give it."""
+    return os.path.relpath(path, directory).replace(os.sep, "/")
+
+
+def keys_payloads(database: Database, directory: str) -> dict[str, list[bytes]]:
     """Each kind's lookup keys over every shipped file, merged as the database merges one tier's, in
     :data:`camtool.presets.shipped_records.KEY_BUCKETS` JSON objects ``{key: [file under lens_db/, index of the record in that
     file's records of the kind]}``, a key in bucket :func:`camtool.presets.shipped_records.key_bucket`.
@@ -92,17 +103,14 @@ def keys_payloads(parsed: dict[str, loader.FileData], directory: str) -> dict[st
     through its key's bucket instead of merging some twenty files' keys
     (:meth:`camtool.presets.database.Database._index`).
     """
-    from camtool.presets.database import Database
     from camtool.presets.kinds import KINDS
 
-    database = Database([paths.Tier("shipped", tuple(parsed))], parsed)
     out = {}
     for kind in KINDS:
         buckets: list[dict[str, list[object]]] = [{} for _ in range(shipped_records.KEY_BUCKETS)]
         for key, entry in database._merge(kind).items():
             assert entry._at is not None  # an entry of the merge: its file, kind and index
-            buckets[shipped_records.key_bucket(key)][key] = [os.path.relpath(entry.path, directory).replace(os.sep, "/"),
-                                                     entry._at[2]]
+            buckets[shipped_records.key_bucket(key)][key] = [_name(entry.path, directory), entry._at[2]]
         out[kind] = [json.dumps(bucket, separators=(",", ":"), sort_keys=True, ensure_ascii=False).encode("utf-8")
                      for bucket in buckets]
     return out
@@ -121,19 +129,16 @@ def films_payload() -> bytes:
                       ensure_ascii=False).encode("utf-8")
 
 
-def listing_payload(parsed: dict[str, loader.FileData], directory: str) -> bytes:
+def listing_payload(database: Database, directory: str) -> bytes:
     """What ``presets list`` shows of the shipped presets alone, kind by kind in the database's order.
 
     One JSON object: each kind's rows ``[id, name, aliases, summary, file under lens_db/]``, from a
     database of the shipped files only (:func:`camtool.presets.summary.summary` of each preset built).
     """
-    from camtool.presets.database import Database
     from camtool.presets.kinds import KINDS
     from camtool.presets.summary import summary
 
-    database = Database([paths.Tier("shipped", tuple(parsed))], parsed)
-    rows = {kind: [[preset.id, preset.name, list(preset.aliases), summary(preset),
-                    os.path.relpath(str(preset.origin), directory).replace(os.sep, "/")]
+    rows = {kind: [[preset.id, preset.name, list(preset.aliases), summary(preset), _name(str(preset.origin), directory)]
                    for preset in database.all(kind)] for kind in KINDS}
     return json.dumps(rows, separators=(",", ":"), ensure_ascii=False).encode("utf-8")
 
