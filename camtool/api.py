@@ -473,9 +473,14 @@ class DepthOfField(NamedTuple):
     error_estimate: Any
 
 
-def _lens(pupil_magnification: Any, hiatus_mm: Any, prescription: Any, focal_length_mm: Any = 0.0) -> LensData | None:
+def _focal_or_prescription(focal_length_mm: Any, prescription: Any) -> None:
+    """A focal length is given, or a prescription gives one."""
     if focal_length_mm is None and prescription is None:
         raise DomainError("focal_length_mm", None, describe(FOCAL_LENGTH_MM, "mm"), "None only with a prescription")
+
+
+def _lens(pupil_magnification: Any, hiatus_mm: Any, prescription: Any, focal_length_mm: Any = 0.0) -> LensData | None:
+    _focal_or_prescription(focal_length_mm, prescription)
     if pupil_magnification is None and hiatus_mm is None and prescription is None:
         return None
     return LensData(pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm, prescription=prescription)
@@ -841,8 +846,8 @@ def _lens_with_preset(lens: str | None, pupil_magnification: Any, hiatus_mm: Any
         return _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm), None
     from camtool.plans.equipment import lens_data
 
-    if prescription is None:
-        _lens(pupil_magnification, hiatus_mm, getattr(preset_lens, "prescription", None), focal_length_mm)
+    _focal_or_prescription(focal_length_mm,
+                           prescription if prescription is not None else getattr(preset_lens, "prescription", None))
     return lens_data(pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm, prescription=prescription,
                      lens_preset=preset_lens), preset_lens
 
