@@ -199,9 +199,11 @@ def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criteri
     >>> round(r["f_number"], 1), r["mtf"] >= r["mtf_level"]
     (60.2, True)
     """
+    from camtool.core.steps import step
     from camtool.dof.ladder import WAVE_PRESCRIPTION
     from camtool.dof.rungs import traceable
     from camtool.dof.wave import contrast_optimum, criterion_frequency
+    from camtool.dof.wavetrace import prescription_contrast_optimum
 
     real = lens.prescription if lens is not None and traceable(lens) else None
 
@@ -214,9 +216,6 @@ def contrast_optimum(*, focal_length_mm: Any, near_mm: Any, far_mm: Any, criteri
         f, a, b, c = (v[i] if hasattr(v, "__len__") else v for v in columns)
         nu = float(criterion_frequency(criterion, c))
         if real is not None:
-            from camtool.core.steps import step
-            from camtool.dof.wavetrace import prescription_contrast_optimum
-
             r = prescription_contrast_optimum(real, float(a), float(b), nu, distance_from)
             step()  # half a second a row: a progress bar listens
         else:
