@@ -162,13 +162,18 @@ def test_the_shipped_listing_is_the_listing_built_preset_by_preset(cache_home: P
     assert rows and rows == _built_rows(load_db(lensfun=False), **kwargs)
 
 
-def test_the_shipped_listing_is_not_used_beside_another_file(cache_home: Path) -> None:
-    from camtool.plans.presets import list_presets
-
+def _user_full_frame(cache_home: Path) -> None:
+    """A user's preset file (in $XDG_CONFIG_HOME/camtool) giving full frame as 35.8 x 23.9 mm."""
     config = cache_home / "xdg_config_home" / "camtool"
     config.mkdir(parents=True)
     (config / "mine.yaml").write_text("sensors:\n  - id: full-frame\n    name: Full frame\n    width_mm: 35.8\n"
                                       "    height_mm: 23.9\n", encoding="utf-8")
+
+
+def test_the_shipped_listing_is_not_used_beside_another_file(cache_home: Path) -> None:
+    from camtool.plans.presets import list_presets
+
+    _user_full_frame(cache_home)
     database = load_db(lensfun=False)
     assert database.shipped_listing("camera") is None
     rows = list_presets(database=database)
@@ -293,10 +298,7 @@ def test_a_lookup_through_the_merged_keys_reads_one_file(cache_home: Path) -> No
 
 
 def test_the_merged_keys_are_not_used_beside_a_file_with_presets_of_the_kind(cache_home: Path) -> None:
-    config = cache_home / "xdg_config_home" / "camtool"
-    config.mkdir(parents=True)
-    (config / "mine.yaml").write_text("sensors:\n  - id: full-frame\n    name: Full frame\n    width_mm: 35.8\n"
-                                      "    height_mm: 23.9\n", encoding="utf-8")
+    _user_full_frame(cache_home)
     database = load_db(lensfun=False)
     assert database._index("sensor")._shipped is None
     assert database.sensor("full-frame").width_mm == 35.8  # the user's preset replaces the shipped one
