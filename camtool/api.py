@@ -33,7 +33,7 @@ import sys
 import typing
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Annotated, Any, NamedTuple, TypeVar
+from typing import Annotated, Any, TypeVar
 
 from camtool.core.domain import ISO_RANGE, SHUTTER_RANGE_S
 from camtool.core.errors import DomainError
@@ -57,6 +57,7 @@ from camtool.core.ranges import (
     WAVELENGTH_NM,
     describe,
 )
+from camtool.core.record import NamedTuple
 from camtool.dof.ladder import LensData
 from camtool.dof.limits import DofLimits
 from camtool.exposure.equivalence import Equivalent

@@ -3,14 +3,19 @@
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
+from camtool.core import units
 from camtool.core.units import (
     UnitError,
     exact_f_number,
     parse_f_number,
     parse_length,
+    parse_t_stop,
     parse_time,
 )
 
@@ -62,6 +67,47 @@ def test_parse_f_number(text: str | float, expected: float) -> None:
 def test_parse_f_number_malformed(text: str) -> None:
     with pytest.raises(UnitError):
         parse_f_number(text)
+
+
+def _by_pattern(pattern: str, text: str) -> float | None:
+    match = re.match(pattern, text)
+    return float(match.group(1)) if match else None
+
+
+# what people type for an f-number or a T-stop, and what they mistype: digits of other scripts, other spaces
+_STOP_TEXT = st.text(st.sampled_from("0123456789.+-eEfFtT/ \t\u00a0\u0663x"), max_size=8)
+
+
+@given(_STOP_TEXT)
+def test_f_number_and_t_stop_read_what_their_patterns_read(text: str) -> None:
+    """The shortcuts before the patterns (a plain decimal; a first character that cannot start a T-stop) change
+    no answer: each reads exactly what its pattern alone reads (an independent reading of the same grammar)."""
+    assert parse_t_stop(text) == _by_pattern(units._T_STOP, text)
+    expected = _by_pattern(units._F_NUMBER, text)
+    if expected is None:
+        with pytest.raises(UnitError):
+            parse_f_number(text)
+    else:
+        assert parse_f_number(text) == expected
+
+
+@given(st.text(st.sampled_from("0123456789.ftin'\" m"), max_size=9))
+def test_feet_and_inches_are_read_only_where_they_are_written(text: str) -> None:
+    """The feet-and-inches pattern is tried only on a text holding ft or a prime; the answer is the one the two
+    patterns give in order."""
+    raw = text.strip()
+    if raw.lower() in ("inf", "infinity", "∞", "+inf"):
+        return
+    match = re.match(units._FEET_INCHES, raw)
+    if match:
+        assert parse_length(text) == float(match.group(1)) * 304.8 + float(match.group(2)) * 25.4
+        return
+    try:
+        value: float | None = parse_length(text)
+    except UnitError:
+        value = None
+    if units._LENGTH.match(raw) is None:
+        assert value is None
 
 
 @pytest.mark.parametrize(

@@ -20,7 +20,7 @@ import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any
 
 import click
 
@@ -44,6 +44,7 @@ from camtool.cli.params import FNumberType, LengthType, NumberType, Parsed, flat
 from camtool.core import ranges
 from camtool.core.errors import InputError
 from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
+from camtool.core.record import NamedTuple
 from camtool.core.units import parse_figure_size
 from camtool.dof.ladder import focal_lengths, model_choices
 from camtool.plans.chart import (

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 import click
 
+from camtool.core.record import NamedTuple
 from camtool.render.columns import Column
 from camtool.render.output import RowWriter
 from camtool.render.serial import field_line

@@ -28,19 +28,37 @@ TypeError: Point() missing argument 'x'
 ['x', 'y', 'label']
 >>> replace(p, y=2.0)
 Point(x=1.0, y=2.0, label='a')
+
+:class:`NamedTuple` is :class:`typing.NamedTuple` (type checkers see that one)
+at a third of its cost when a class is created: ``typing`` turns each string
+annotation into a ``ForwardRef``, compiling it, which took about 55 µs of each
+of the 35 named tuples a ``dof`` command creates. The class made is the same
+:func:`collections.namedtuple` with the body's methods and annotations.
+
+>>> class Pair(NamedTuple):
+...     near: float
+...     far: float = float("inf")
+...     def total(self) -> float:
+...         return self.far - self.near
+>>> Pair(1.0), Pair(1.0, 3.0).total(), Pair._fields, Pair.__annotations__["far"]
+(Pair(near=1.0, far=inf), 2.0, ('near', 'far'), 'float')
 """
 
 from __future__ import annotations
 
+import collections
+import itertools
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # how type checkers learn the constructor; nothing at run time (typing has it from 3.11 only)
+    from typing import NamedTuple as NamedTuple
+
     from typing_extensions import dataclass_transform
 else:
     def dataclass_transform(**_options: Any) -> Any:
         return lambda cls: cls
 
-__all__ = ["Field", "Record", "field", "fields", "replace"]
+__all__ = ["Field", "NamedTuple", "Record", "field", "fields", "replace"]
 
 _MISSING: Any = object()
 
@@ -160,3 +178,32 @@ def fields(record: Record | type[Record]) -> tuple[Field, ...]:
 def replace(record: Any, /, **changes: Any) -> Any:
     """A copy of ``record`` with the fields ``changes`` names set anew (:func:`dataclasses.replace`'s contract)."""
     return type(record)(**{**record.__dict__, **changes})
+
+
+if not TYPE_CHECKING:
+    # what typing.NamedTuple's metaclass refuses or leaves to namedtuple (as of CPython 3.11 to 3.13)
+    _PROHIBITED = frozenset({"__new__", "__init__", "__slots__", "__getnewargs__", "_fields", "_field_defaults",
+                             "_make", "_replace", "_asdict", "_source"})
+    _SPECIAL = frozenset({"__module__", "__name__", "__annotations__", "__qualname__", "__classcell__",
+                          "__static_attributes__", "__firstlineno__"})
+
+    class _NamedTupleMeta(type):
+        def __new__(mcs, typename: str, bases: tuple[type, ...], namespace: dict[str, Any]) -> Any:
+            annotations = namespace.get("__annotations__", {})
+            names = list(annotations)
+            defaults = [namespace[name] for name in names if name in namespace]
+            for before, name in itertools.pairwise(names):
+                if before in namespace and name not in namespace:
+                    raise TypeError(f"Non-default namedtuple field {name} cannot follow default field {before}")
+            made = collections.namedtuple(typename, names, defaults=defaults, module=namespace["__module__"])
+            made.__annotations__ = made.__new__.__annotations__ = dict(annotations)
+            made.__qualname__ = namespace.get("__qualname__", typename)
+            for key, value in namespace.items():
+                if key in _PROHIBITED:
+                    raise AttributeError(f"cannot overwrite NamedTuple attribute {key}")
+                if key not in _SPECIAL and key not in made._fields:
+                    setattr(made, key, value)
+            return made
+
+    # the base a class body names: its subclasses are made by the metaclass (the class form only)
+    NamedTuple = type.__new__(_NamedTupleMeta, "NamedTuple", (), {})

@@ -32,9 +32,10 @@ import stat
 import sys
 from collections.abc import Iterator, Sequence
 from itertools import repeat
-from typing import IO, Any, NamedTuple
+from typing import IO, Any
 
 from camtool.core.files import FileProblem
+from camtool.core.record import NamedTuple
 
 CELL_LIMIT = 128 * 1024
 """Longest cell, in characters (the csv module's limit); a longer one is a bad row."""

@@ -34,7 +34,7 @@ MM_PER_UNIT = {
 
 _NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?"
 _LENGTH = re.compile(rf"^\s*({_NUMBER})\s*([a-zA-Zµ\"']*)\s*$")
-_FEET_INCHES = re.compile(rf"^\s*({_NUMBER})\s*(?:ft|')\s*({_NUMBER})\s*(?:in|\")?\s*$")
+_FEET_INCHES = rf"^\s*({_NUMBER})\s*(?:ft|')\s*({_NUMBER})\s*(?:in|\")?\s*$"  # compiled on first use
 _INFINITY = {"inf", "infinity", "∞", "+inf"}
 
 
@@ -73,7 +73,7 @@ def parse_length(text: str | float, default_unit: str = "mm") -> float:
     raw = text.strip()
     if raw.lower() in _INFINITY:
         return math.inf
-    match = _FEET_INCHES.match(raw)
+    match = re.match(_FEET_INCHES, raw) if "ft" in raw or "'" in raw else None
     if match:
         return float(match.group(1)) * 304.8 + float(match.group(2)) * 25.4
     match = _LENGTH.match(raw)
@@ -90,7 +90,7 @@ def parse_length(text: str | float, default_unit: str = "mm") -> float:
     return value
 
 
-_F_NUMBER = re.compile(rf"^\s*(?:[fF]\s*/?\s*)?({_NUMBER})\s*$")
+_F_NUMBER = rf"^\s*(?:[fF]\s*/?\s*)?({_NUMBER})\s*$"  # compiled on first use (re's cache)
 
 
 def parse_f_number(text: str | float) -> float:
@@ -103,7 +103,9 @@ def parse_f_number(text: str | float) -> float:
     """
     if isinstance(text, (int, float)):
         return float(text)
-    match = _F_NUMBER.match(text)
+    if text.isascii() and text.replace(".", "", 1).isdigit():  # 8, 5.6, .5: what the pattern reads, without it
+        return float(text)
+    match = re.match(_F_NUMBER, text)
     if not match:
         raise UnitError(f"{text!r} is not an f-number (examples: 8, f/8, f8)")
     return float(match.group(1))
@@ -126,6 +128,8 @@ def parse_t_stop(text: str | float) -> float | None:
     (2.8, None)
     """
     if isinstance(text, (int, float)):
+        return None
+    if text.lstrip()[:1] not in ("t", "T"):  # the pattern's first character: not compiled for an f-number
         return None
     match = re.match(_T_STOP, text)  # compiled on first use (re caches it): no start-up cost
     return float(match.group(1)) if match else None

@@ -16,9 +16,10 @@ from __future__ import annotations
 
 import os
 import stat
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.files import FileProblem, file_kind
+from camtool.core.record import NamedTuple
 
 EXR_CHANNELS = ("Z", "depth.Z", "depth", "Depth", "z")
 """The depth channels looked for, in order, when none is named."""

@@ -53,9 +53,10 @@ import bisect
 import functools
 import itertools
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops, quiet
+from camtool.core.record import NamedTuple
 from camtool.dof.rungs import RUNGS, by_name
 
 __all__ = [

@@ -10,11 +10,12 @@ Lengths in millimetres.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.errors import DomainError, first_bad, require, require_positive
 from camtool.core.planes import FOCUS_PLANES, check_plane
+from camtool.core.record import NamedTuple
 
 _BISECTIONS = 120
 

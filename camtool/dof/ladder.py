@@ -15,11 +15,12 @@ from __future__ import annotations
 import functools
 import math
 import time
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.errors import CamtoolError, DomainError, first_bad
 from camtool.core.planes import FOCUS_PLANES, check_plane
+from camtool.core.record import NamedTuple
 from camtool.core.steps import step
 from camtool.dof import rungs
 from camtool.dof.auto import Effects, depth_error, estimate_effects, left_out

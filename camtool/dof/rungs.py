@@ -13,9 +13,9 @@ and one function. docs/design.md §4.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import Any
 
-from camtool.core.record import Record
+from camtool.core.record import NamedTuple, Record
 from camtool.dof.closed import approx_dof, thin_dof
 from camtool.dof.limits import DofLimits
 from camtool.geometry.thinlens import FocusGeometry, LensPlaneDistances, focus_geometry

@@ -37,9 +37,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, require, require_positive
+from camtool.core.record import NamedTuple
 from camtool.core.steps import step
 from camtool.geometry.closeup import InternalFocus
 

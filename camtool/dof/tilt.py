@@ -29,10 +29,11 @@ degrees.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import DomainError, require
+from camtool.core.record import NamedTuple
 from camtool.geometry.tilt import axis_reciprocal, hinge_distance_mm, plane_angle_deg, sight_reciprocal
 
 __all__ = [

@@ -46,9 +46,10 @@ are left out, as in ``thin``.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, first_bad
+from camtool.core.record import NamedTuple
 from camtool.dof.limits import DofLimits
 
 __all__ = [

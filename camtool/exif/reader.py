@@ -36,11 +36,12 @@ import re
 import stat
 import warnings
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core import domain, ranges
 from camtool.core.errors import CamtoolError, DomainError
 from camtool.core.files import file_kind
+from camtool.core.record import NamedTuple
 from camtool.core.text import printable
 from camtool.exif import makernotes
 

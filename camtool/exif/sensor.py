@@ -21,7 +21,9 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any, NamedTuple
+from typing import Any
+
+from camtool.core.record import NamedTuple
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 

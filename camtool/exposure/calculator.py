@@ -33,11 +33,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any
 
 from camtool.core.arrays import ops
 from camtool.core.domain import EV_RANGE, SHUTTER_RANGE_S, check
 from camtool.core.errors import CamtoolError, DomainError
+from camtool.core.record import NamedTuple
 
 if TYPE_CHECKING:
     from camtool.exposure.reciprocity import Film

@@ -19,10 +19,11 @@ f·s at N·s (1/s² more light).
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.errors import require
+from camtool.core.record import NamedTuple
 
 
 class Equivalent(NamedTuple):

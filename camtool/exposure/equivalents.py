@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.domain import SHUTTER_RANGE_S, check
+from camtool.core.record import NamedTuple
 from camtool.exposure.ev import (
     exposure_value,
 )

@@ -17,11 +17,12 @@ arrays out (no numpy import on the scalar path).
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.domain import check
 from camtool.core.errors import DomainError
+from camtool.core.record import NamedTuple
 
 
 def exposure_value(f_number: Any, shutter_s: Any) -> Any:

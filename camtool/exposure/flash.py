@@ -11,10 +11,11 @@ number, distance, f-number and ISO follows from the other three.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.errors import DomainError, require
+from camtool.core.record import NamedTuple
 
 
 class Flash(NamedTuple):

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import re
-from typing import NamedTuple
 
 from camtool.core.errors import DomainError
+from camtool.core.record import NamedTuple
 
 
 class LightLevel(NamedTuple):

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import re
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.errors import DomainError, require
+from camtool.core.record import NamedTuple
 
 LOG10_2 = 0.30102999566398120
 """log10(2): one stop of exposure in optical density."""

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.domain import check
 from camtool.core.errors import DomainError, require
+from camtool.core.record import NamedTuple
 from camtool.exposure.bellows import bellows_stops
 from camtool.exposure.ev import (
     ev100_from_ev,

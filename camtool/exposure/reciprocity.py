@@ -19,11 +19,12 @@ import functools
 import itertools
 import math
 import re
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.domain import check
 from camtool.core.errors import CamtoolError, DomainError, require
+from camtool.core.record import NamedTuple
 from camtool.exposure import films_path
 
 P_RANGE = (1.0, 3.0)

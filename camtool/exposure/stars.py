@@ -21,10 +21,11 @@ rule) can resolve.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops
 from camtool.core.errors import require
+from camtool.core.record import NamedTuple
 
 
 class StarLimits(NamedTuple):

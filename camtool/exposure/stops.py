@@ -19,10 +19,11 @@ Everything works on plain floats (no numpy import) and on numpy arrays.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.errors import DomainError
+from camtool.core.record import NamedTuple
 from camtool.core.units import F_NUMBER_THIRD_STOPS
 
 STEPS_PER_STOP = {"full": 1, "half": 2, "third": 3}

@@ -22,10 +22,11 @@ All lengths in millimetres.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.errors import DomainError, require, require_positive
+from camtool.core.record import NamedTuple
 from camtool.geometry.thinlens import span_root
 
 __all__ = [

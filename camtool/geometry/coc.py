@@ -26,8 +26,8 @@ from __future__ import annotations
 
 import math
 import re
-from typing import NamedTuple
 
+from camtool.core.record import NamedTuple
 from camtool.core.units import UnitError, parse_length
 
 DEFAULT_RULE = "d/1500"
@@ -47,7 +47,7 @@ class CocChoice(NamedTuple):
     origin: str
 
 
-_DIAGONAL = re.compile(r"^\s*d\s*/\s*(\d+(?:\.\d*)?)\s*$", re.IGNORECASE)
+_DIAGONAL = r"^\s*d\s*/\s*(\d+(?:\.\d*)?)\s*$"  # compiled on first use (re's cache)
 _PIXELS = r"^\s*px\s*:\s*(\d+(?:\.\d*)?)\s*$"  # compiled on first use (re's cache)
 _PRINT = r"^\s*print\s*:\s*([^x×@]+)\s*[x×]\s*([^@]+)@(.+)$"  # compiled on first use (re's cache)
 
@@ -85,7 +85,7 @@ def coc_from_rule(
     if rule.strip().lower() == CINE_RULE:
         return CocChoice(CINE_COC_MM, "cine: 0.001 in")
     diagonal = math.hypot(width_mm, height_mm)
-    match = _DIAGONAL.match(rule)
+    match = re.match(_DIAGONAL, rule, re.IGNORECASE)
     if match:
         divisor = float(match.group(1))
         if divisor <= 0:

@@ -22,11 +22,12 @@ not repeated here.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.domain import check
 from camtool.core.errors import require, require_positive
+from camtool.core.record import NamedTuple
 from camtool.geometry.fov import angle_of_view_deg, field_size_mm
 
 

@@ -9,10 +9,11 @@ Lengths in millimetres, angles in degrees.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import is_scalar, ops
 from camtool.core.errors import require, require_positive
+from camtool.core.record import NamedTuple
 
 
 class FieldOfView(NamedTuple):

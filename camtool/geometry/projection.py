@@ -30,10 +30,11 @@ manual ("the equidistant projection formula (y = fθ)", 220°, 23 mm circle).
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.errors import DomainError, require, require_positive
+from camtool.core.record import NamedTuple
 
 __all__ = [
     "FISHEYE_FIELD_DEG",

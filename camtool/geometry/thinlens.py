@@ -11,11 +11,12 @@ All lengths in millimetres; scalars in, floats out; arrays in, arrays out.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import broadcast, ops, quiet
 from camtool.core.errors import require, require_positive
 from camtool.core.planes import FOCUS_PLANES, check_plane
+from camtool.core.record import NamedTuple
 
 
 class LensPlaneDistances(NamedTuple):

@@ -24,10 +24,11 @@ Lengths in mm, angles in degrees at the boundary.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.arrays import ops, quiet
 from camtool.core.errors import require, require_positive
+from camtool.core.record import NamedTuple
 
 __all__ = [
     "PlaneThroughPoints",

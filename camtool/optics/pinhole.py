@@ -37,9 +37,10 @@ from __future__ import annotations
 
 import functools
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import require, require_positive
+from camtool.core.record import NamedTuple
 
 __all__ = [
     "RULES",

@@ -26,10 +26,11 @@ side rotated with the lens). Lengths in mm.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 
+from camtool.core.record import NamedTuple
 from camtool.optics.prescription import Prescription
 from camtool.optics.tracer import RayTraceError, RealRayTracer, real_tracer
 

@@ -17,9 +17,10 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, InputError, braced
+from camtool.core.record import NamedTuple
 from camtool.dof.ladder import LensData, focal_lengths, hyperfocal
 from camtool.render.chartdata import (
     MAX_PIXELS,

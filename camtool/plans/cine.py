@@ -8,9 +8,10 @@ alone every row also shows the shutter angle of its time to set.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import InputError
+from camtool.core.record import NamedTuple
 
 
 def shutter_times(*, shutter_angle_deg: Sequence[float] = (), fps: float | None = None,

@@ -14,9 +14,10 @@ focus model its one hyperfocal distance (:func:`camtool.plans.depth.hyperfocal_s
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, require
+from camtool.core.record import NamedTuple
 
 __all__ = [
     "CLOSE_UP",

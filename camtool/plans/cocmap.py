@@ -28,10 +28,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, InputError
 from camtool.core.files import FileProblem
+from camtool.core.record import NamedTuple
 
 MODES = ("physical", "blender", "nuke")
 

@@ -9,9 +9,10 @@ far limits with an f-number, and how a background or foreground plane looks.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError
+from camtool.core.record import NamedTuple
 
 __all__ = ["DEFAULT_FOCAL_LENGTHS_MM", "Lenses", "compose", "lenses"]
 

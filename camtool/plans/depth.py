@@ -20,9 +20,10 @@ infinity in ``camtool dof`` for the same lens, model and CoC.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError
+from camtool.core.record import NamedTuple
 from camtool.dof.ladder import LensData, depth_of_field, hyperfocal, hyperfocal_choices, hyperfocal_rung
 from camtool.geometry.closeup import internal_focus_at_magnification
 from camtool.presets.focusing import focus_model

@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
+from camtool.core.record import NamedTuple
 from camtool.dof.ladder import LensData, depth_of_field, hyperfocal_rung
 
 __all__ = ["DofTable", "dof_table", "lens_behind_converter"]

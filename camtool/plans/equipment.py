@@ -30,9 +30,10 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, InputError, braced
+from camtool.core.record import NamedTuple
 from camtool.core.units import TStop, UnitError
 from camtool.geometry.coc import CINE_RULE, DEFAULT_RULE, coc_from_rule
 

@@ -15,7 +15,9 @@ values by key (scalars or arrays, one per scene) and the facts the table shows:
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
+
+from camtool.core.record import NamedTuple
 
 __all__ = ["FocusRows", "depth", "forward", "inverse", "optimum", "spread_optimum"]
 

@@ -15,7 +15,9 @@ subject spans 2u·tan(α/2) across each angle α, unbounded from 180°.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
+
+from camtool.core.record import NamedTuple
 
 __all__ = ["FieldOfView", "field_of_view"]
 

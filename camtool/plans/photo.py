@@ -24,9 +24,10 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any
 
 from camtool.core.errors import braced
+from camtool.core.record import NamedTuple
 from camtool.core.text import printable
 
 if TYPE_CHECKING:

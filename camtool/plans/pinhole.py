@@ -12,7 +12,9 @@ f-number; the angle of view 2·arctan(h/2L) of the film.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
+
+from camtool.core.record import NamedTuple
 
 __all__ = ["DEFAULT_LEVEL", "PinholePlan", "pinhole_plan"]
 

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import Any
 
-from camtool.core.record import Record
+from camtool.core.record import NamedTuple, Record
 from camtool.core.record import fields as fields_of
 from camtool.presets import PresetNotFound
 from camtool.presets.summary import summary

@@ -17,9 +17,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import DomainError, InputError
+from camtool.core.record import NamedTuple
 from camtool.dof.ladder import LensData, depth_of_field, focal_lengths, hyperfocal_choices
 from camtool.dof.stack import (
     MAX_RAIL_FRAMES,

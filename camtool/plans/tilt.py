@@ -25,9 +25,10 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 from camtool.core.errors import CamtoolError, DomainError
+from camtool.core.record import NamedTuple
 from camtool.dof.ladder import LensData, ModelUnavailable
 from camtool.dof.tilt import TiltLens
 from camtool.exposure.calculator import SettingsError

@@ -26,7 +26,7 @@ SECTIONS = {"sensors": "sensor", "cameras": "camera", "lenses": "lens", "prescri
 
 FULL_FRAME_DIAGONAL_MM = math.hypot(36.0, 24.0)
 
-_PUNCTUATION = re.compile(r"[^0-9a-z]+")
+_PUNCTUATION = r"[^0-9a-z]+"  # compiled on first use (re's cache)
 
 
 def normalize(name: str) -> str:
@@ -37,7 +37,7 @@ def normalize(name: str) -> str:
     >>> normalize('1/2.3"')
     '123'
     """
-    return _PUNCTUATION.sub("", name.casefold())
+    return re.sub(_PUNCTUATION, "", name.casefold())
 
 
 def kind_of(name: str) -> str:

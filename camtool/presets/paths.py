@@ -22,9 +22,9 @@ configuration directory that is itself a loop counts as empty.
 from __future__ import annotations
 
 import os
-from typing import NamedTuple
 
 import camtool
+from camtool.core.record import NamedTuple
 
 _SUFFIXES = (".yaml", ".yml")
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from camtool.core.record import NamedTuple
 
 DISTANCE = "distance"  # a distance or depth in mm; the table picks m/mm or ft/in per column
 SMALL = "small"  # a small length (focal length, CoC, extension, blur): always mm, as photographers give them

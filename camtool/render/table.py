@@ -29,8 +29,9 @@ from __future__ import annotations
 import itertools
 import os
 from collections.abc import Sequence
-from typing import IO, Any, NamedTuple
+from typing import IO, Any
 
+from camtool.core.record import NamedTuple
 from camtool.render.columns import ANGLE, ANSWERS, DISTANCE, FNUMBER, IDENTIFYING, SMALL, TEXT, Column
 from camtool.render.numfmt import distance_unit, feet_inches, significant
 from camtool.render.serial import ERROR, printable
