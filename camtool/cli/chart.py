@@ -24,6 +24,7 @@ from typing import Any
 
 import click
 
+from camtool.cli import resume_collection
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, required, single
 from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
@@ -235,6 +236,7 @@ def chart() -> None:
       camtool chart marks -f 25,32,50,75 -N T2.8 --camera arri-alexa-35 --units imperial -o marks.pdf
       camtool chart shot --frames tests/data/shot.csv --camera arri-alexa-35 -o shot.svg
     """
+    resume_collection()  # the chart's work begins (camtool.cli.main)
 
 
 @chart_command("dof")

@@ -25,6 +25,7 @@ from typing import Any
 
 import click
 
+from camtool.cli import resume_collection
 from camtool.cli.options import file_completion, preset_completion, stack
 from camtool.cli.rows import DYNAMIC_KEYS, ZIP, Output, check_fields, open_writer
 from camtool.plans.grid import Grid
@@ -159,7 +160,9 @@ def camtool_command(
             from camtool.cli.equipment import apply_equipment
 
             ctx.meta.pop(CHOICES, None)  # nothing left over from a batch group that failed
-            return t_stop_output(ctx, compute(ctx, **apply_equipment(ctx, params)))
+            params = apply_equipment(ctx, params)
+            resume_collection()  # off while the command was found and read (camtool.cli.main): work makes cycles
+            return t_stop_output(ctx, compute(ctx, **params))
 
         @functools.wraps(compute)
         def run(ctx: click.Context, /, **params: Any) -> None:

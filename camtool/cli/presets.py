@@ -6,6 +6,7 @@ from typing import Any
 
 import click
 
+from camtool.cli import resume_collection
 from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
 from camtool.plans import presets as plan
@@ -32,6 +33,7 @@ def presets() -> None:
       camtool presets validate my-lenses.yaml
       camtool presets import-lensfun
     """
+    resume_collection()  # the subcommand's work begins (camtool.cli.main)
 
 
 def _database(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:

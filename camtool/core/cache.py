@@ -99,8 +99,12 @@ def _hash(name: str, modules: tuple[str, ...]) -> Any:
     raise ImportError(name)
 
 
+_SHA256_MODULES = ("_sha2",) if sys.version_info >= (3, 12) else ("_sha256",)
+"""Where CPython keeps its own SHA-256 (a module looked for and missing costs a search of the whole path)."""
+
+
 def _sha256(data: bytes) -> Any:
-    return _hash("sha256", ("_sha2", "_sha256"))(data)  # CPython 3.12 and later, 3.11
+    return _hash("sha256", _SHA256_MODULES)(data)
 
 
 def _blake2b(data: bytes, key: bytes) -> Any:

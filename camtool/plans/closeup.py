@@ -246,7 +246,6 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
     ``hyperfocal_mm`` is that one, whatever the row's focus, and a typed
     distance at or beyond it has a far limit of infinity.
     """
-    from camtool.dof.closeup import diffraction_row, wave_depth_mm
     from camtool.dof.ladder import depth_of_field
 
     pupil = pupil_magnification
@@ -255,6 +254,8 @@ def dof_rows(*, model: str, setting: Setting, coc_mm: Any, distance_from: str, l
     rows: list[dict[str, Any]] = [{} for _ in range(count)]
     sharp = list(range(count))
     if diffraction:
+        from camtool.dof.closeup import diffraction_row, wave_depth_mm
+
         sharp = []
         for i in range(count):
             n, m, ci = setting.f_number[i], setting.magnification[i], cs[i]
