@@ -261,3 +261,36 @@ def test_focus_at_exactly_the_closest_distance(name, f_number):
             assert caught.blur_at_focus_mm >= coc  # the lens's own blur at this focus exceeds c
         else:
             assert rms.near_mm < closest < rms.far_mm
+
+
+@pytest.mark.parametrize("name", ["canon-rf50-f1.2", "nikon-z50-f1.8", "cellphone"])
+def test_an_even_surface_s_sag_and_slope_in_q_are_the_polynomial_s(name):
+    """The sag and slope of a surface with even powers alone, taken in q = y² (camtool.optics.tracer._even_sag),
+    against the sag formula evaluated at 40 digits (mpmath) and its derivative by mpmath's own differentiation;
+    a surface with an odd power takes the general path."""
+    import mpmath
+
+    from camtool.optics import tracer
+
+    shipped = Path(__file__).parent.parent / "lens_db" / "prescriptions" / f"{name}.yaml"
+    lens = prescription_from_mapping(yaml.safe_load(shipped.read_text(encoding="utf-8")))
+    surfaces = [s for s in real_tracer(lens).surfaces if not s.spherical]
+    assert surfaces
+    for s in surfaces:
+        if any(a != 0.0 for a in s.dense[0::2]):
+            assert s.even is None
+            continue
+        assert s.even is not None
+        mpmath.mp.dps = 40
+        c, k = mpmath.mpf(s.c), mpmath.mpf(s.k)
+
+        def sag(y, c=c, k=k, s=s):
+            r2 = y * y
+            return c * r2 / (1 + mpmath.sqrt(1 - (1 + k) * c * c * r2)) + sum(
+                mpmath.mpf(a) * abs(y) ** (n + 1) for n, a in enumerate(s.dense))
+
+        heights = np.array([-9.0, -3.3, -0.5, 0.0, 0.7, 4.1, 11.0])
+        values, slopes = tracer._even_sag(s, s.even, heights)
+        for y, value, slope in zip(heights, values, slopes, strict=True):
+            assert value == pytest.approx(float(sag(mpmath.mpf(y))), rel=1e-14, abs=1e-15)
+            assert slope == pytest.approx(float(mpmath.diff(sag, mpmath.mpf(y))), rel=1e-12, abs=1e-15)

@@ -85,6 +85,18 @@ class _Surface:
 
 
     @functools.cached_property
+    def even(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """A surface whose polynomial has even powers alone (a conic's sag is even too): the polynomial in q = r²
+        as b_1…b_J (b_j = a_2j), and the coefficients of dsag/dy ÷ y, 2·b_1 and 4·b_2…2J·b_J; None otherwise.
+
+        Its sag and slope are then taken in q = y², which needs neither |y| nor its sign and half the powers.
+        """
+        if any(a != 0.0 for a in self.dense[0::2]):  # a_1, a_3, …: an odd power
+            return None
+        b = np.array(self.dense[1::2])
+        return b, np.array(2.0 * b[0] if b.size else 0.0), b[1:] * np.arange(4.0, 2.0 * b.size + 1.0, 2.0)
+
+    @functools.cached_property
     def constants(self) -> tuple[np.ndarray, ...]:
         """c, μ = n/n′, μ², 1 − μ², the gap and 2 as 0-d arrays (numpy multiplies an array by them faster than by floats)."""
         mu = self.n_before / self.n_after
@@ -189,10 +201,15 @@ def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool
         b = c * y * m - l + ck * z0 * l
         cc = c * y * y - two * z0 + ck * z0 * z0
         t = cc / (np.sqrt(b * b - a * cc) - b)
+    even = s.even
     for _ in range(30 if s.dense else 0):
         height = y + t * m
-        sag, dsag = _sag(s, np.abs(height))
-        step = (z0 + t * l - sag) / (l - dsag * np.sign(height) * m)
+        if even is not None:
+            sag, dzdy = _even_sag(s, even, height)
+        else:
+            sag, dsag = _sag(s, np.abs(height))
+            dzdy = dsag * np.sign(height)
+        step = (z0 + t * l - sag) / (l - dzdy * m)
         t = t - step
         if not np.fmax.reduce(np.abs(step), axis=None) > 1e-6:
             break  # quadratic convergence: the error left is ~ K·step² with K ~ 0.01/mm on the shared lenses
@@ -200,8 +217,11 @@ def _general_surface(s: _Surface, y: Any, z0: Any, m: Any, l: Any, refract: bool
     z0 = z0 + t * l
     if not refract:
         return y, z0, m, l
-    _, dsag = _sag(s, np.abs(y), value=False)
-    dzdy = dsag * np.sign(y)
+    if even is not None:
+        dzdy = _even_sag(s, even, y, value=False)[1]
+    else:
+        _, dsag = _sag(s, np.abs(y), value=False)
+        dzdy = dsag * np.sign(y)
     norm = np.sqrt(one + dzdy * dzdy)
     ny, nz = -dzdy / norm, one / norm
     cos_i = ny * m + nz * l
@@ -421,6 +441,37 @@ def _sag(s: _Surface, r: Any, value: bool = True) -> tuple[Any, Any]:
             sag = sag + extra
         slope = slope + extra_slope
     return sag, slope
+
+
+def _even_sag(s: _Surface, even: tuple[np.ndarray, np.ndarray, np.ndarray], y: Any,
+              value: bool = True) -> tuple[Any, Any]:
+    """Sag and dsag/dy at the signed height y of a surface whose sag is even in y (:attr:`_Surface.even`).
+
+    In q = y²: the conic's c·q/(1 + √(1 − c²(1 + k)·q)) with slope y·c/√(…), and
+    Σ b_j q^j with slope y·Σ 2j·b_j q^(j−1), from the powers q¹…q^J (one matrix
+    product each). The same sag and slope as :func:`_sag` at |y| with the sign
+    of y, to round-off; NaN beyond a conic's rim.
+    """
+    c = s.constants[0]
+    _, c2k, one = s.conic
+    q = y * y
+    root = np.sqrt(one - c2k * q)
+    sag = c * q / (one + root) if value else None
+    per_y = c / root
+    b, first, rest = even
+    if b.size:
+        flat = q.reshape(-1)
+        powers = np.empty((b.size, flat.size))
+        rows = list(powers)
+        rows[0][...] = flat
+        for k in range(1, b.size):
+            np.multiply(rows[k - 1], flat, rows[k])
+        if value:
+            sag = sag + (b @ powers).reshape(q.shape)
+        per_y = per_y + first
+        if rest.size:
+            per_y = per_y + (rest @ powers[: b.size - 1]).reshape(q.shape)
+    return sag, y * per_y
 
 
 _BY_IDENTITY: dict[int, tuple[Prescription, RealRayTracer]] = {}
