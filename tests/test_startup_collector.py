@@ -15,15 +15,16 @@ import pytest
 # objects were frozen; at exit whether it is on
 _SCRIPT = """
 import atexit, gc, json, sys
-import camtool.cli, camtool.cli.command as command
+from camtool.core import collector
 seen = []
-resume = command.resume_collection
+resume = collector.resume
 def recorded():
     before = gc.isenabled()
     resume()
     seen.append([before, gc.isenabled(), gc.get_freeze_count()])
-command.resume_collection = recorded
-atexit.register(lambda: print(json.dumps({"seen": seen, "at_exit": gc.isenabled()}), file=sys.stderr))
+collector.resume = recorded
+atexit.register(lambda: print(json.dumps({"seen": seen, "at_exit": gc.isenabled(), "frozen": gc.get_freeze_count()}),
+                              file=sys.stderr))
 sys.argv = ["camtool", *ARGV]
 ENTRY
 """
@@ -48,7 +49,7 @@ def test_importing_the_command_line_leaves_the_collector_as_it_was() -> None:
                                   ["dof", "--lens", "nikon-z-50mm-f1.8-s", "-N", "8", "-s", "3m", "--format", "json"]])
 def test_the_entry_point_pauses_the_collector_until_the_work_and_freezes_what_start_up_made(argv: list[str], tmp_path: Path) -> None:
     record, out = _run(argv, "from camtool.__main__ import main\nmain()", tmp_path)
-    (before, after, frozen), = record["seen"]
+    (before, after, frozen), _at_the_end = record["seen"]  # as the work begins, then main's own last word
     assert (before, after, record["at_exit"]) == (False, True, True)
     assert frozen > 10_000  # the modules, classes and functions of the start-up
     assert json.loads(out)[0]["near_mm"] > 0
@@ -57,7 +58,7 @@ def test_the_entry_point_pauses_the_collector_until_the_work_and_freezes_what_st
 def test_an_in_process_caller_gets_its_collector_back_with_nothing_frozen(tmp_path: Path) -> None:
     record, _ = _run(["dof", "-f", "50", "-N", "8", "-s", "3m", "--format", "json"],
                      "from camtool.cli import main\nmain()", tmp_path)
-    assert record["seen"] == [[False, True, 0]] and record["at_exit"]
+    assert record["seen"] == [[False, True, 0], [True, True, 0]] and record["at_exit"] and record["frozen"] == 0
 
 
 def test_a_batch_runs_its_rows_with_the_collector_on(tmp_path: Path) -> None:
@@ -73,3 +74,21 @@ def test_a_command_that_never_reaches_its_work_turns_the_collector_back_on(tmp_p
     record, out = _run(["presets", "list", "--kind", "sensor", "--format", "json"],
                        "from camtool.__main__ import main\nmain()", tmp_path)
     assert record["at_exit"] and json.loads(out)
+
+
+def test_a_table_s_renderer_is_imported_paused_and_frozen(tmp_path: Path) -> None:
+    record, out = _run(["dof", "-f", "50", "-N", "8", "-s", "3m"], "from camtool.__main__ import main\nmain()",
+                       tmp_path)
+    (_, _, frozen_at_work), _ = record["seen"]
+    assert record["frozen"] > frozen_at_work + 5_000  # rich's modules, frozen once imported
+    assert "near" in out.lower() and "far" in out.lower()  # the table drawn
+
+
+def test_importing_in_process_pauses_and_freezes_nothing() -> None:
+    from camtool.core import collector
+
+    frozen = gc.get_freeze_count()
+    with collector.importing():
+        assert not gc.isenabled()
+        import fractions  # noqa: F401
+    assert gc.isenabled() and gc.get_freeze_count() == frozen

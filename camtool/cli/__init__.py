@@ -8,7 +8,6 @@ not for rich, numpy or the other commands.
 from __future__ import annotations
 
 import contextlib
-import gc
 import importlib
 import importlib.util
 import os
@@ -18,6 +17,7 @@ from typing import Any
 import click
 
 from camtool import __version__
+from camtool.core import collector
 from camtool.core.errors import FileError
 from camtool.render import terminal
 
@@ -219,22 +219,16 @@ def cli() -> None:
 def main(collecting: bool | None = None) -> None:
     """Run the command line (``camtool`` and ``python -m camtool`` call it through :func:`camtool.__main__.main`).
 
-    The cyclic garbage collector is paused while the command is found and its options read: that imports
-    modules and makes click's parameters, objects that live as long as the process, which the collector would
-    walk again and again for no garbage. As a command's work begins :func:`resume_collection` turns the
-    collector back on, so a batch's cycles (a skipped row's error and its frames) are collected. ``collecting``
-    is given by the process's entry point, :func:`camtool.__main__.main`, which paused the collector before
-    the first import: whether it was on before. The objects made until the work begins are then frozen
-    (:func:`gc.freeze`: never walked again); an in-process caller (``collecting`` None) gets its collector
-    back as it was, with nothing frozen.
+    The cyclic garbage collector is paused while the command is found and its options read, and resumed as its
+    work begins (:mod:`camtool.core.collector`). ``collecting`` is given by the process's entry point, which paused
+    the collector before the first import: whether it was on before; what start-up made is then frozen. An
+    in-process caller (``collecting`` None) gets its collector back as it was, nothing frozen.
     """
     import signal
 
     with contextlib.suppress(ValueError, OSError):  # not the main thread, or no such signal here
         signal.signal(signal.SIGINT, _on_sigint)
-    global _paused, _freeze
-    _paused, _freeze = (gc.isenabled(), False) if collecting is None else (collecting, True)
-    gc.disable()
+    collector.pause(collecting, owned=collecting is not None)
     try:
         cli.main()
     except Interrupted:
@@ -242,20 +236,5 @@ def main(collecting: bool | None = None) -> None:
     except OSError as error:
         _output_failed(error)
     finally:
-        resume_collection()
-
-
-_paused = _freeze = False
-
-
-def resume_collection() -> None:
-    """A command's work begins: if :func:`main` paused the cyclic garbage collector, turn it back on, first
-    freezing every object made so far (modules, commands, parameters: they live as long as the process) when
-    :func:`main` runs as the process's entry point."""
-    global _paused
-    if _paused:
-        _paused = False
-        if _freeze:
-            gc.freeze()
-        gc.enable()
+        collector.resume()
 

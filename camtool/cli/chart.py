@@ -24,7 +24,6 @@ from typing import Any
 
 import click
 
-from camtool.cli import resume_collection
 from camtool.cli.command import equipment_options, presets_option
 from camtool.cli.common import f_numbers, required, single
 from camtool.cli.equipment import LENS, apply_equipment, resolve_coc, resolve_sensor
@@ -42,7 +41,7 @@ from camtool.cli.options import (
     stack,
 )
 from camtool.cli.params import FNumberType, LengthType, NumberType, Parsed, flatten
-from camtool.core import ranges
+from camtool.core import collector, ranges
 from camtool.core.errors import InputError
 from camtool.core.files import SameTarget, WriteProblem, check_writable, write_bytes
 from camtool.core.record import NamedTuple
@@ -236,7 +235,7 @@ def chart() -> None:
       camtool chart marks -f 25,32,50,75 -N T2.8 --camera arri-alexa-35 --units imperial -o marks.pdf
       camtool chart shot --frames tests/data/shot.csv --camera arri-alexa-35 -o shot.svg
     """
-    resume_collection()  # the chart's work begins (camtool.cli.main)
+    collector.resume()  # the chart's work begins (camtool.cli.main)
 
 
 @chart_command("dof")

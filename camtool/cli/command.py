@@ -25,9 +25,9 @@ from typing import Any
 
 import click
 
-from camtool.cli import resume_collection
 from camtool.cli.options import file_completion, preset_completion, stack
 from camtool.cli.rows import DYNAMIC_KEYS, ZIP, Output, check_fields, open_writer
+from camtool.core import collector
 from camtool.plans.grid import Grid
 from camtool.render.output import FORMATS
 
@@ -161,7 +161,7 @@ def camtool_command(
 
             ctx.meta.pop(CHOICES, None)  # nothing left over from a batch group that failed
             params = apply_equipment(ctx, params)
-            resume_collection()  # off while the command was found and read (camtool.cli.main): work makes cycles
+            collector.resume()  # off while the command was found and read (camtool.cli.main): work makes cycles
             return t_stop_output(ctx, compute(ctx, **params))
 
         @functools.wraps(compute)

@@ -6,9 +6,9 @@ from typing import Any
 
 import click
 
-from camtool.cli import resume_collection
 from camtool.cli.command import Output, emit, format_option, presets_option
 from camtool.cli.options import preset_completion
+from camtool.core import collector
 from camtool.plans import presets as plan
 from camtool.plans.presets import KINDS
 from camtool.render.views.presets import LIST_COLUMNS, LIST_KEYS, SHOW_COLUMNS, show_rows
@@ -33,7 +33,7 @@ def presets() -> None:
       camtool presets validate my-lenses.yaml
       camtool presets import-lensfun
     """
-    resume_collection()  # the subcommand's work begins (camtool.cli.main)
+    collector.resume()  # the subcommand's work begins (camtool.cli.main)
 
 
 def _database(ctx: click.Context, preset_files: tuple[str, ...]) -> Any:

@@ -31,6 +31,7 @@ import os
 from collections.abc import Sequence
 from typing import IO, Any
 
+from camtool.core import collector
 from camtool.core.record import NamedTuple
 from camtool.render.columns import ANGLE, ANSWERS, DISTANCE, FNUMBER, IDENTIFYING, SMALL, TEXT, Column
 from camtool.render.numfmt import distance_unit, feet_inches, significant
@@ -245,10 +246,11 @@ def _rich(kept: list[_Drawn], count: int, colour: str | None, wrapped: set[str] 
     """The header, rule and rows as rich draws them (the ``wrapped`` text columns folded to their width)."""
     import io
 
-    from rich import box
-    from rich.console import Console
-    from rich.table import Table
-    from rich.text import Text
+    with collector.importing():  # rich's classes live as long as the process
+        from rich import box
+        from rich.console import Console
+        from rich.table import Table
+        from rich.text import Text
 
     rule = box.Box(f"    \n    \n{RULE * 4}\n    \n    \n    \n    \n    \n")
     table = Table(box=rule, show_edge=False, pad_edge=False, padding=(0, 1), header_style="",
