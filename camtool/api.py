@@ -503,6 +503,7 @@ def depth_of_field(
     wavelength_nm: Wavelength = 550.0,
     tolerance: Tolerance = 0.01,
     contrast_criterion: OptionalText = None,
+    lens: OptionalText = None,
 ) -> DepthOfField:
     """Near and far limits of acceptable sharpness in mm, by a rung of the model ladder.
 
@@ -521,6 +522,10 @@ def depth_of_field(
     diffraction : bool, add the Airy disc to the blur (λ = ``wavelength_nm``)
     contrast_criterion : str or None, ``mtf:LEVEL@FREQ`` as ``--criterion`` takes it: the ``wave`` rung's
         criterion (given, ``auto`` runs ``wave``; docs/wave.md)
+    lens : str or None, a lens preset's name, as ``camtool dof --lens`` takes it: its pupil magnification,
+        hiatus and prescription unless given, a prime's focal length when ``focal_length_mm`` is None, its
+        ranges of focal length, f-number and focus; one that focuses internally answers at the focal length in
+        effect at each focus, with its own hyperfocal distance (docs/closeup.md)
 
     Returns
     -------
@@ -538,11 +543,66 @@ def depth_of_field(
     """
     from camtool.dof.ladder import depth_of_field as run
 
-    lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
     criterion = _criterion(contrast_criterion)
-    result = run(model, focal_length_mm, f_number, coc_mm, distance_mm, distance_from, lens, diffraction,
+    if lens is not None:
+        data, preset_lens, focal_length_mm = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription,
+                                                               focal_length_mm, f_number, distance_mm, distance_from)
+        return _preset_depth_of_field(model, focal_length_mm, f_number, coc_mm, distance_mm, distance_from, data,
+                                      preset_lens, pupil_magnification, hiatus_mm, diffraction, wavelength_nm,
+                                      tolerance, criterion)
+    ladder_lens = _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm)
+    result = run(model, focal_length_mm, f_number, coc_mm, distance_mm, distance_from, ladder_lens, diffraction,
                  wavelength_nm, tolerance, criterion)
     return DepthOfField(*result.limits, result.model, result.error_estimate)
+
+
+def _preset_depth_of_field(model: str, focal_length_mm: Any, f_number: Any, coc_mm: Any, distance_mm: Any,
+                           distance_from: str, data: LensData | None, preset_lens: Any, pupil_magnification: Any,
+                           hiatus_mm: Any, diffraction: bool, wavelength_nm: float, tolerance: float,
+                           criterion: Any) -> DepthOfField:
+    """:func:`depth_of_field` with a lens preset: the rows ``camtool dof --lens`` computes
+    (:func:`camtool.plans.dof.dof_table`: internal focusing, its hyperfocal distance), one per scene."""
+    from camtool.dof.ladder import focal_lengths
+    from camtool.plans.dof import dof_table
+
+    inputs = (focal_length_mm, f_number, coc_mm, distance_mm)
+    scalar = all(not hasattr(value, "shape") or value.shape == () for value in inputs if value is not None)
+    if scalar:
+        shape: tuple[int, ...] = ()
+        flat = [None if value is None else [float(value)] for value in inputs]
+    else:
+        import numpy as np
+
+        shape = np.broadcast_shapes(*(np.shape(value) for value in inputs if value is not None))
+        flat = [None if value is None else np.broadcast_to(np.asarray(value, dtype=float), shape).ravel().tolist()
+                for value in inputs]
+    given_f, *rest = flat
+    count = len(rest[0] or ())
+    focal = focal_lengths(data, given_f or [])
+    if len(focal) != count:  # the prescription's one focal length, for every scene
+        focal = focal * count
+    columns: list[Any] = [focal, *rest]
+    if scalar:  # one scene: plain floats, as the command computes a single row
+        f, n, c, s = (values[0] for values in columns)
+    else:
+        f, n, c, s = (np.asarray(values, dtype=float) for values in columns)
+    table = dof_table(model=model, focal_length_mm=f, f_number=n, wanted=s, coc_mm=c, distance_from=distance_from,
+                      lens=data, pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm,
+                      lens_preset=preset_lens, diffraction=diffraction, wavelength_nm=wavelength_nm,
+                      tolerance=tolerance, criterion=criterion)
+    rows = list(table.rows)
+    for row in rows:
+        if row.get("near_mm") is None:  # nothing sharp (the Airy disc fills the CoC), as the ladder raises it
+            raise DomainError("f_number", row["f_number"], "an f-number that leaves depth of field",
+                              detail=str(row.get("reason")))
+    keys = ("near_mm", "far_mm", "front_mm", "rear_mm", "total_mm", "hyperfocal_mm", "magnification", "model",
+            "error_estimate")
+    if scalar:
+        return DepthOfField(*(rows[0][key] for key in keys))
+    import numpy as np
+
+    return DepthOfField(*(np.array([row[key] for row in rows], dtype=object if key == "model" else float)
+                          .reshape(shape) for key in keys))
 
 
 def _criterion(text: str | None) -> Any:
@@ -597,7 +657,8 @@ def hyperfocal_distance(
     >>> round(h.hyperfocal_mm), h.model  # f²/(N·c) = 576/0.33, plus the lens-to-sensor spacing f + N·c
     (1745, 'approx')
     """
-    data, preset_lens = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription, focal_length_mm, f_number)
+    data, preset_lens, focal_length_mm = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription,
+                                                           focal_length_mm, f_number)
     if model in ("paraxial", "raytrace"):
         from camtool.dof.ladder import depth_of_field as run
 
@@ -838,34 +899,42 @@ def film_time(film: Text, metered_s: ShutterTime) -> Any:
 
 
 def _lens_with_preset(lens: str | None, pupil_magnification: Any, hiatus_mm: Any, prescription: Any,
-                      focal_length_mm: Any, f_number: Any) -> tuple[LensData | None, Any]:
-    """The lens data for the ladder and the lens preset ``lens`` names, as ``--lens`` gives them on the command line:
-    the preset's pupil magnification, hiatus and prescription unless given (:func:`camtool.plans.equipment.lens_data`).
+                      focal_length_mm: Any, f_number: Any, distance_mm: Any = None,
+                      distance_from: str = "sensor") -> tuple[LensData | None, Any, Any]:
+    """The lens data for the ladder, the lens preset ``lens`` names and the focal length, as ``--lens`` gives them on
+    the command line: the preset's pupil magnification, hiatus and prescription unless given
+    (:func:`camtool.plans.equipment.lens_data`), a prime's focal length where none is given (:func:`_lens_preset`).
     """
-    preset_lens = _lens_preset(lens, focal_length_mm, f_number)
+    preset_lens, focal_length_mm = _lens_preset(lens, focal_length_mm, f_number, distance_mm, distance_from)
     if preset_lens is None:
-        return _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm), None
+        return _lens(pupil_magnification, hiatus_mm, prescription, focal_length_mm), None, focal_length_mm
     from camtool.plans.equipment import lens_data
 
     _focal_or_prescription(focal_length_mm,
                            prescription if prescription is not None else getattr(preset_lens, "prescription", None))
     return lens_data(pupil_magnification=pupil_magnification, hiatus_mm=hiatus_mm, prescription=prescription,
-                     lens_preset=preset_lens), preset_lens
+                     lens_preset=preset_lens), preset_lens, focal_length_mm
 
 
-def _lens_preset(lens: str | None, focal_length_mm: Any, f_number: Any) -> Any:
-    """The lens preset ``lens`` names (None for None), its own range holding every focal length and f-number given,
-    as ``--lens`` bounds ``-f`` and ``-N`` on the command line (:func:`camtool.plans.equipment.check_lens`)."""
+def _lens_preset(lens: str | None, focal_length_mm: Any, f_number: Any, distance_mm: Any = None,
+                 distance_from: str = "sensor") -> tuple[Any, Any]:
+    """The lens preset ``lens`` names (None for None) and the focal length, as ``--lens`` applies it on the command
+    line (:func:`camtool.plans.equipment.apply_equipment`'s steps): a lens set's member at the focal length given, a
+    prime's focal length where none is given (unless its prescription gives one), and the lens's own ranges holding
+    every focal length, f-number and focus distance given (:func:`camtool.plans.equipment.check_lens`)."""
     if lens is None:
-        return None
+        return None, focal_length_mm
     from camtool.plans import equipment
 
     def values(given: Any) -> list[float]:
-        return list(map(float, getattr(given, "ravel", lambda: [given])()))
+        return [] if given is None else list(map(float, getattr(given, "ravel", lambda: [given])()))
 
-    found = preset("lens", lens)
-    equipment.check_lens(found, focal_lengths=values(focal_length_mm), f_numbers=values(f_number), distances_mm=[])
-    return found
+    found = equipment.set_member(preset("lens", lens), focal_lengths=values(focal_length_mm))
+    if focal_length_mm is None and getattr(found, "prescription", None) is None:
+        focal_length_mm = equipment.lens_defaults(found, focal_lengths=[], f_numbers=values(f_number))["focal_length"]
+    equipment.check_lens(found, focal_lengths=values(focal_length_mm), f_numbers=values(f_number),
+                         distances_mm=values(distance_mm), distance_from=distance_from)
+    return found, focal_length_mm
 
 
 @_checked
@@ -1042,7 +1111,8 @@ def bracket_stack(focal_length_mm: RealFocalLength, f_number: RealFNumber, coc_m
     """
     from camtool.plans.stack import bracket_stack as plan
 
-    data, preset_lens = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription, focal_length_mm, f_number)
+    data, preset_lens, focal_length_mm = _lens_with_preset(lens, pupil_magnification, hiatus_mm, prescription,
+                                                           focal_length_mm, f_number)
     pupil = data.pupil_magnification if data is not None and data.pupil_magnification is not None else 1.0
     return plan(focal_length_mm=focal_length_mm, f_number=f_number, coc_mm=coc_mm, near_mm=near_mm, far_mm=far_mm,
                 overlap=overlap, criterion=criterion, model=model, lens=data, lens_preset=preset_lens,

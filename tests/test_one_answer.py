@@ -342,3 +342,41 @@ def test_the_api_s_hyperfocal_distance_takes_arrays_of_any_shape() -> None:
         one = camtool.hyperfocal_distance(50.0, float(apertures[index]), 0.03, lens="nikon-z-50mm-f1.8-s")
         assert (many.hyperfocal_mm[index], many.near_mm[index]) == (one.hyperfocal_mm, one.near_mm)
         assert many.model == one.model
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(lens=st.sampled_from([lens for lens in LENSES if not getattr(lens, "members", ())]), t=st.floats(0, 1),
+       u=st.floats(0, 1), plane=st.sampled_from(["sensor", "lens"]), model=st.sampled_from(["auto", "thin"]))
+def test_the_api_s_depth_of_field_of_a_lens_preset_is_the_command_s(lens, t, u, plane, model) -> None:
+    """``depth_of_field(..., lens=NAME)`` is ``camtool dof --lens NAME``: the focal length in effect at each focus of
+    a lens that focuses internally, its one hyperfocal distance, the rung; a prime's focal length left out."""
+    import camtool
+
+    n = _f_number(lens, u)
+    closest = (lens.min_focus_mm or 300.0) * 1.2
+    distance = round(closest * (20_000.0 / closest) ** t, 3)
+    focal = _focal(lens, t)
+    row = run_json("dof", "--lens", lens.id, *focal, "-N", repr(n), "-s", f"{distance!r}mm", "--coc", "0.03",
+                   "--distance-from", plane, "--model", model)[0]
+    answer = camtool.depth_of_field(float(focal[1]) if focal else None, n, 0.03, distance, distance_from=plane,
+                                    model=model, lens=lens.id)
+    assert (answer.near_mm, answer.far_mm, answer.hyperfocal_mm, answer.magnification, answer.model) == (
+        row["near_mm"], math.inf if row["far_mm"] is None else row["far_mm"], row["hyperfocal_mm"],
+        row["magnification"], row["model"])
+
+
+def test_the_api_s_depth_of_field_of_a_lens_preset_over_arrays_is_each_scene_s() -> None:
+    import numpy as np
+
+    import camtool
+
+    apertures, distances = np.array([1.8, 4.0, 11.0]), np.array([[400.0], [3000.0]])
+    many = camtool.depth_of_field(None, apertures, 0.03, distances, lens="nikon-z-50mm-f1.8-s")
+    assert many.near_mm.shape == many.model.shape == (2, 3)
+    for (i, j), near in np.ndenumerate(many.near_mm):
+        one = camtool.depth_of_field(None, float(apertures[j]), 0.03, float(distances[i, 0]),
+                                     lens="nikon-z-50mm-f1.8-s")
+        assert (near, many.hyperfocal_mm[i, j], many.model[i, j]) == (one.near_mm, one.hyperfocal_mm, one.model)
+    prescription = camtool.depth_of_field(None, 4.0, 0.03, 3000.0, lens="dgauss100-lens")
+    row = run_json("dof", "--lens", "dgauss100-lens", "-N", "4", "-s", "3m", "--coc", "0.03")[0]
+    assert (prescription.near_mm, prescription.model) == (row["near_mm"], row["model"])
