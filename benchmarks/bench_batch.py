@@ -10,6 +10,9 @@
   camtool writes). The two outputs are checked to hold the same numbers.
   Runs are paired and interleaved (A B A B ...), the medians compared.
   Targets: CSV within 2×, JSON within 2.5×.
+* **auto** (the default ``--model``) against ``--model thin`` on the same N
+  rows to CSV: what choosing each row's rung costs, with the per-row model
+  and error estimate it writes (thin writes one model and one estimate).
 * **Memory** is flat in N: peak resident memory at N against N/10; at most 100 MiB at 10⁶ rows.
 * **Bad rows** (one in 20,000, a focus distance inside the closest focus)
   against the clean file, in both ``--on-error`` modes. Target: at most 1.2×
@@ -156,11 +159,14 @@ def main() -> None:
         _, json_peak = run([camtool, "dof", "--batch", large, "--format", "json"])
         times = paired({"arrow": [sys.executable, __file__, "--arrow", large],
                         "csv": [camtool, "dof", "--batch", large, "--format", "csv", "--model", "thin"],
-                        "json": [camtool, "dof", "--batch", large, "--format", "json", "--model", "thin"]},
+                        "json": [camtool, "dof", "--batch", large, "--format", "json", "--model", "thin"],
+                        "auto": [camtool, "dof", "--batch", large, "--format", "csv"]},
                        args.repeat)
         for fmt in ("csv", "json"):
             print(f"| camtool dof --batch, {rows:,} rows, {fmt.upper()} | {times[fmt]:.2f} | pyarrow pipeline "
                   f"{times['arrow']:.2f} s | {times[fmt] / times['arrow']:.2f} |")
+        print(f"| camtool dof --batch, {rows:,} rows, CSV, --model auto (the default: each row's rung, model and "
+              f"estimate) | {times['auto']:.2f} | --model thin {times['csv']:.2f} s | {times['auto'] / times['csv']:.2f} |")
         print(f"| rows per second, CSV | {rows / times['csv']:,.0f} | | |")
         print(f"| peak memory, {rows:,} rows, CSV | {large_peak:.0f} MiB | {rows // 10:,} rows {small_peak:.0f} MiB | "
               f"{large_peak / small_peak:.2f} |")

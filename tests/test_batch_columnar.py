@@ -151,3 +151,14 @@ def test_a_block_cut_anywhere_gives_the_same_output(monkeypatch: pytest.MonkeyPa
     for block in (1, 17, 4096):
         monkeypatch.setattr(rec, "BLOCK", block)
         assert _batch(SCENES, "--format", "csv", "--on-error", "skip") == whole
+
+
+@given(st.lists(st.one_of(st.sampled_from(["thin", "approx", "thick+diffraction", 'a "quoted", name', "é\n"]),
+                          st.none(), st.floats(allow_nan=False)), max_size=30))
+def test_a_column_of_names_is_written_as_each_name_alone(values: list) -> None:
+    """A column of names (a batch's per-row ``model``) is written by looking each distinct name up once: the
+    same cells as writing every value on its own, in both styles, with holes and other values mixed in."""
+    for style in ("csv", "json"):
+        expected = [columnar.MISSING[style] if v is None else columnar._string(v, style) if isinstance(v, str)
+                    else columnar._other(v, style) for v in values]
+        assert columnar.texts(values, len(values), style) == expected

@@ -196,8 +196,13 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
         for index in (~values.present).nonzero()[0].tolist():
             out[index] = missing
     elif isinstance(values, list):
-        out = [missing if v is None else _string(v, style) if isinstance(v, str) else _other(v, style)
-               for v in values]
+        distinct = _distinct(values)
+        if distinct is not None and all(type(v) is str for v in distinct):  # names: each written once, then looked up
+            shown = {v: _string(v, style) for v in distinct}
+            out = list(map(shown.__getitem__, values))
+        else:
+            out = [missing if v is None else _string(v, style) if isinstance(v, str) else _other(v, style)
+                   for v in values]
     else:
         import numpy as np
 
@@ -225,6 +230,14 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
         for index in skipped:
             out[index] = missing
     return out
+
+
+def _distinct(values: list[Any]) -> set[Any] | None:
+    """The distinct values of a column, or None when one cannot be hashed."""
+    try:
+        return set(values)
+    except TypeError:
+        return None
 
 
 def _float(value: float, style: str) -> str:
