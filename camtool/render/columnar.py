@@ -197,8 +197,9 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
             out[index] = missing
     elif isinstance(values, list):
         distinct = _distinct(values)
-        if distinct is not None and all(type(v) is str for v in distinct):  # names: each written once, then looked up
-            shown = {v: _string(v, style) for v in distinct}
+        if distinct is not None and all(type(v) is str or v is None for v in distinct):
+            # names (and the holes of rows with no answer): each written once, then looked up
+            shown = {v: missing if v is None else _string(v, style) for v in distinct}
             out = list(map(shown.__getitem__, values))
         else:
             out = [missing if v is None else _string(v, style) if isinstance(v, str) else _other(v, style)
