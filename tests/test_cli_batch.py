@@ -148,3 +148,33 @@ def test_stop_names_the_bad_row_not_the_first_of_its_group() -> None:
     code, out, err = batch("f-number,distance\n8,3\n11,2\n8,0.01\n", "dof", "-f", "50", "--format", "json")
     assert code == 2 and [row["f_number"] for row in json.loads(out)] == [8.0, 11.0]
     assert err.startswith("Error: --batch row 3: Invalid value for '-s' / '--distance': 10 mm is outside")
+
+
+def test_the_rows_a_failed_range_check_names_are_set_aside_without_halving(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A chunk of 2,000 rows with 40 focus distances inside the closest focus: the range check names the bad rows,
+    each is computed alone for its message and the rest in one call (a few dozen calls where halving made over a
+    thousand), and the output is byte for byte the one halving gives."""
+    from camtool.cli import batch as batch_module
+
+    rng = random.Random(5)
+    lines = ["focal_length,f_number,distance"]
+    for row in range(2000):
+        distance = "0.01m" if row % 50 == 7 else f"{rng.uniform(1, 30):.3f}m"
+        lines.append(f"{rng.choice((24, 50, 85))},{rng.choice((2.8, 8))},{distance}")
+    text = "\n".join(lines) + "\n"
+    calls = []
+    owner = batch_module._Batch
+    compute = owner._compute_group
+
+    def counted(self, members, values):  # type: ignore[no-untyped-def]
+        calls.append(len(members))
+        return compute(self, members, values)
+
+    monkeypatch.setattr(owner, "_compute_group", counted)
+    named = batch(text, "dof", "--format", "csv", "--on-error", "skip")
+    named_calls = len(calls)
+    calls.clear()
+    monkeypatch.setattr(batch_module, "_named_rows", lambda error, size: None)  # halving alone
+    halved = batch(text, "dof", "--format", "csv", "--on-error", "skip")
+    assert named == halved and named[0] == 1 and named[2].count("skipped") >= 1
+    assert named_calls <= 45 < 400 < len(calls), (named_calls, len(calls))

@@ -399,22 +399,44 @@ class _Batch:
 
     def _solve(self, members: list[int], values: dict[str, Any], numbers: Sequence[int], errors: list[str | None],
                results: list[tuple[list[int], Output]]) -> None:
-        """Compute a group in one call; if it fails, halve it until the bad rows are found."""
-        try:
-            out = self._compute_group(members, values)
-            if len(out.rows) != len(members):  # one row a member, or the group is split until it is
-                raise click.ClickException(f"{len(out.rows)} results for {len(members)} rows")
-        except click.ClickException as error:
-            if len(members) > 1:
+        """Compute a group in one call; if it fails, find the bad rows: those the error names, or by halving.
+
+        A range check over the group's scenes names the ones that failed
+        (``scenes`` of :class:`camtool.core.errors.DomainError`): each is
+        computed alone (its own message, as halving would give it) and, when
+        every one of them fails alone, the rest goes on in one call. Otherwise,
+        or if a row named computes alone (the names did not match the rows),
+        the group is halved until the bad rows are found.
+        """
+        while True:
+            try:
+                out = self._compute_group(members, values)
+                if len(out.rows) != len(members):  # one row a member, or the group is split until it is
+                    raise click.ClickException(f"{len(out.rows)} results for {len(members)} rows")
+            except click.ClickException as error:
+                if len(members) == 1:
+                    message = error.format_message()
+                    number = numbers[members[0]]
+                    errors[members[0]] = (message if isinstance(error, BatchRowError)
+                                          else f"--batch row {number}: {message}")
+                    return
+                named = _named_rows(error, len(members))
+                if named:
+                    aside = [members[i] for i in named]
+                    for member in aside:
+                        self._solve([member], values, numbers, errors, results)
+                    members = [m for i, m in enumerate(members) if i not in set(named)]
+                    if not members:
+                        return
+                    if all(errors[member] is not None for member in aside):
+                        continue  # the rest, in one call
                 half = len(members) // 2
-                self._solve(members[:half], values, numbers, errors, results)
+                if half:
+                    self._solve(members[:half], values, numbers, errors, results)
                 self._solve(members[half:], values, numbers, errors, results)
                 return
-            message = error.format_message()
-            number = numbers[members[0]]
-            errors[members[0]] = message if isinstance(error, BatchRowError) else f"--batch row {number}: {message}"
+            results.append((members, out))
             return
-        results.append((members, out))
 
     def _compute_group(self, members: list[int], values: dict[str, Any]) -> Output:
         import numpy as np
@@ -539,6 +561,14 @@ def _t_stops(ctx: click.Context, param: click.Parameter, cells: Sequence[Any]) -
     if found:
         ctx.meta[T_STOP_COLUMN] = True
     return found
+
+
+def _named_rows(error: click.ClickException, size: int) -> list[int] | None:
+    """The rows of a group of ``size`` that a failed range check names (their places in the group), if it names any."""
+    scenes = getattr(error, "scenes", None)
+    if scenes is None or scenes[0] != size or not scenes[1]:
+        return None
+    return list(scenes[1])
 
 
 def _vector(param: click.Parameter) -> bool:

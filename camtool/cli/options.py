@@ -190,7 +190,17 @@ def _is(error: Exception, module: str, name: str) -> bool:
 
 
 def bad_parameter(ctx: click.Context, error: Exception) -> click.ClickException:
-    """The one translation of a library error on an input into a click error naming an option the user typed.
+    """The one translation of a library error on an input into a click error naming an option the user typed
+    (:func:`_translated`); it keeps a :class:`DomainError`'s ``scenes`` (which scenes of a row failed)."""
+    translated = _translated(ctx, error)
+    scenes = getattr(error, "scenes", None)
+    if scenes is not None:
+        translated.scenes = scenes  # type: ignore[attr-defined]
+    return translated
+
+
+def _translated(ctx: click.Context, error: Exception) -> click.ClickException:
+    """A library error on an input as a click error naming an option the user typed.
 
     An :class:`InputError` or a ``SettingsError`` has its inputs spelled as
     this command's options (``{focal_length}`` as ``-f``); a

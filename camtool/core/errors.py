@@ -22,8 +22,13 @@ class DomainError(CamtoolError, ValueError):
 
     ``param`` names the parameter (as the library spells it), ``value`` is the
     offending value and ``valid`` describes the valid range in words, so the
-    CLI can map the parameter to its option and print one line.
+    CLI can map the parameter to its option and print one line. ``scenes``,
+    when a check over a row of scenes failed (:func:`require`), is how many
+    scenes it checked and which of them failed: a batch sets those rows aside
+    rather than halving its group until it finds them.
     """
+
+    scenes: tuple[int, list[int]] | None = None
 
     def __init__(self, param: str, value: Any, valid: str, detail: str = "", limit: Any = None) -> None:
         self.param = param
@@ -116,7 +121,11 @@ def require(param: str, value: Any, ok: Any, valid: str, detail: str = "", limit
 
     if not bool(np.all(ok)):
         bad_limit = None if limit is None else first_bad(np.broadcast_to(limit, np.shape(ok)), ok)
-        raise DomainError(param, first_bad(value, ok), valid, detail, bad_limit)
+        error = DomainError(param, first_bad(value, ok), valid, detail, bad_limit)
+        failed = ~np.broadcast_to(np.asarray(ok, dtype=bool), np.broadcast_shapes(np.shape(value), np.shape(ok)))
+        if failed.ndim == 1:  # one row of scenes: which of them failed
+            error.scenes = (failed.size, np.flatnonzero(failed).tolist())
+        raise error
 
 
 def require_positive(param: str, value: Any, unit: str = "mm", allow_inf: bool = False) -> None:
