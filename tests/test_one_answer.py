@@ -380,3 +380,14 @@ def test_the_api_s_depth_of_field_of_a_lens_preset_over_arrays_is_each_scene_s()
     prescription = camtool.depth_of_field(None, 4.0, 0.03, 3000.0, lens="dgauss100-lens")
     row = run_json("dof", "--lens", "dgauss100-lens", "-N", "4", "-s", "3m", "--coc", "0.03")[0]
     assert (prescription.near_mm, prescription.model) == (row["near_mm"], row["model"])
+
+
+@pytest.mark.parametrize("name", ["nikon-z-50mm-f1.8-s", "nikon-z-24mm-f1.8-s", "arri-signature-prime@47"])
+def test_a_prime_s_focal_length_left_out_of_the_api_is_the_preset_s_as_on_the_command_line(name: str) -> None:
+    """``hyperfocal_distance(None, ..., lens=NAME)`` takes the prime's (or the set member's) focal length, as
+    ``camtool hyperfocal --lens NAME`` without ``-f`` does."""
+    import camtool
+
+    row = run_json("hyperfocal", "--lens", name, "-N", "8", "--coc", "0.03")[0]
+    answer = camtool.hyperfocal_distance(None, 8.0, 0.03, lens=name)
+    assert (answer.hyperfocal_mm, answer.near_mm, answer.model) == (row["hyperfocal_mm"], row["near_mm"], row["model"])
