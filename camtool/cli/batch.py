@@ -486,10 +486,15 @@ class _Batch:
     def _write_columns(self, results: list[tuple[list[int], Output]], passed: dict[str, list[Any]],
                        errors: list[str | None]) -> None:
         """The chunk as one block of columns: each group's columns put in its rows' places."""
+        import numpy as np
+
         count = len(errors)
         columns, keys = self._shape(results[0][1])
+        # each group's rows as an index array once, not a list numpy converts again for every column
+        places = [np.asarray(members, dtype=np.intp) if len(members) != count else members for members, _ in results]
         data = {key: passed[key] if key in passed else placed(
-            count, [(members, out.rows.columns.get(key)) for members, out in results])  # type: ignore[attr-defined]
+            count, [(where, out.rows.columns.get(key))  # type: ignore[attr-defined]
+                    for where, (_, out) in zip(places, results)])
             for key in keys}
         skipped = errors if any(error is not None for error in errors) else None
         rows = ColumnRows(count, data, skipped, kept=frozenset(passed))

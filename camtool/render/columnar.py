@@ -58,8 +58,9 @@ def values_of(values: Any, count: int) -> list[Any]:
     return [float(v) for v in flat]
 
 
-def placed(count: int, parts: Sequence[tuple[Sequence[int], Any]]) -> Any:
-    """One column of ``count`` rows from the columns of groups of them: each part's values put in its rows' places.
+def placed(count: int, parts: Sequence[tuple[Any, Any]]) -> Any:
+    """One column of ``count`` rows from the columns of groups of them: each part's values put in its rows' places
+    (a part's rows a sequence of indices or an index array).
 
     Rows no part covers (skipped rows) get a value that is never written
     (0, or an empty name): no NaN to withhold.
