@@ -43,6 +43,7 @@ from camtool.core.errors import DomainError, require, require_positive
 from camtool.core.record import NamedTuple
 from camtool.core.steps import step
 from camtool.geometry.closeup import InternalFocus
+from camtool.optics.roots import golden_section
 
 __all__ = [
     "CRITERIA",
@@ -494,16 +495,7 @@ def _nearest_limit_magnification(near: Callable[[float], float], low: float, hig
     """
     if near(high) <= near(high * (1.0 - 1e-6)):
         return high
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    a, b = low, high
-    for _ in range(200):
-        x1, x2 = b - ratio * (b - a), a + ratio * (b - a)
-        if near(x1) <= near(x2):
-            b = x2
-        else:
-            a = x1
-        if b - a <= 1e-12 * b:
-            break
+    a, b = golden_section(lambda m: -near(m), low, high, steps=200, relative=1e-12)
     return 0.5 * (a + b)
 
 

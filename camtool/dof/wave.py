@@ -51,6 +51,7 @@ from typing import Any
 from camtool.core.errors import DomainError, first_bad
 from camtool.core.record import NamedTuple
 from camtool.dof.limits import DofLimits
+from camtool.optics.roots import golden_section
 
 __all__ = [
     "DEFAULT_CRITERION",
@@ -370,14 +371,7 @@ def contrast_optimum(focal_length_mm: float, near_mm: float, far_mm: float, freq
     values = contrast(grid)
     i = int(np.argmax(values))
     low, high = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    a, b = math.log(low), math.log(high)
-    for _ in range(60):
-        c1, c2 = b - ratio * (b - a), a + ratio * (b - a)
-        if float(contrast(math.exp(c1))) >= float(contrast(math.exp(c2))):
-            b = c2
-        else:
-            a = c1
+    a, b = golden_section(lambda x: float(contrast(math.exp(x))), math.log(low), math.log(high))
     n_best = math.exp(0.5 * (a + b))
     w_best = f * f / (8.0 * lam * n_best * n_best) * half
     distance = u + v if distance_from == "sensor" else u

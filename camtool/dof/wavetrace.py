@@ -39,6 +39,7 @@ from camtool.core.arrays import is_scalar
 from camtool.core.errors import DomainError, require_positive
 from camtool.dof.limits import DofLimits
 from camtool.dof.wave import DEFAULT_CRITERION, ContrastOptimum, ContrastUnreachable, Criterion, criterion_frequency
+from camtool.optics.roots import golden_section
 
 __all__ = ["NothingSharpHere", "prescription_contrast_optimum", "prescription_wave_dof"]
 
@@ -364,7 +365,6 @@ def prescription_contrast_optimum(prescription: Any, near_mm: float, far_mm: flo
 
     # from the lens's own widest f-number (f/1 when it states none) to where a perfect lens's MTF at ν vanishes
     low, high = math.log(prescription.f_number or 1.0), math.log(max(1.0 / (lam * nu), 2.0 * (prescription.f_number or 1.0)))
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
     memo: dict[float, tuple[float, float]] = {}
 
     def value(x: float) -> float:
@@ -374,13 +374,8 @@ def prescription_contrast_optimum(prescription: Any, near_mm: float, far_mm: flo
 
     points = np.linspace(low, high, 9)
     i = int(np.argmax([value(float(x)) for x in points]))
-    a, b = float(points[max(i - 1, 0)]), float(points[min(i + 1, points.size - 1)])
-    while b - a > 1e-4:  # ln N to 1e-4
-        c1, c2 = b - ratio * (b - a), a + ratio * (b - a)
-        if value(c1) >= value(c2):
-            b = c2
-        else:
-            a = c1
+    golden_section(value, float(points[max(i - 1, 0)]), float(points[min(i + 1, points.size - 1)]), steps=200,
+                   tolerance=1e-4)  # ln N to 1e-4; every value is kept in memo
     x_best = max(memo, key=lambda x: memo[x][0])
     mtf, film = memo[x_best]
     n_best = math.exp(x_best)

@@ -41,6 +41,7 @@ from typing import Any
 
 from camtool.core.errors import require, require_positive
 from camtool.core.record import NamedTuple
+from camtool.optics.roots import golden_section
 
 __all__ = [
     "RULES",
@@ -281,14 +282,7 @@ def optimum_diameter_mm(film_distance_mm: float, frequency_lpmm: float, subject_
 
     grid = np.linspace(0.5, 4.0, 241)
     i = int(np.argmax(contrast(grid)))
-    a, b = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    for _ in range(60):
-        c1, c2 = b - ratio * (b - a), a + ratio * (b - a)
-        if float(contrast(c1)) >= float(contrast(c2)):
-            b = c2
-        else:
-            a = c1
+    a, b = golden_section(lambda k: float(contrast(k)), grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)])
     require("frequency_lpmm", frequency_lpmm, float(contrast(0.5 * (a + b))) > 0.0,
             "a frequency this pinhole transfers")
     return float(0.5 * (a + b) * base)

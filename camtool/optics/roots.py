@@ -5,7 +5,7 @@ next abscissa and receives the function value there, so a caller can drive it
 however the function is best evaluated; :func:`brent` drives it for a plain
 scalar function. The ``raytrace`` rung finds its roots on interpolants, where
 one scalar evaluation costs a few microseconds and the driving loop itself is
-part of the cost.
+part of the cost. :func:`golden_section` narrows a bracket about a maximum.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Generator
 
-__all__ = ["brent", "brent_steps"]
+__all__ = ["brent", "brent_steps", "golden_section"]
 
 _EPS = 2.0**-52
 
@@ -127,3 +127,30 @@ def brent(
     except StopIteration as done:
         return float(done.value)
     raise RuntimeError("root search did not converge")
+
+
+def golden_section(value: Callable[[float], float], a: float, b: float, *, steps: int = 60, tolerance: float = 0.0,
+                   relative: float = 0.0) -> tuple[float, float]:
+    """The bracket [a, b] narrowed about a maximum of ``value`` by golden-section search.
+
+    Each step compares ``value`` at the two points b − r·(b − a) and
+    a + r·(b − a), r = (√5 − 1)/2, and keeps the side of the larger (the left
+    on a tie; a NaN keeps the right); at most ``steps`` steps, fewer once
+    b − a ≤ ``tolerance`` + ``relative``·b. A minimum is the maximum of −value.
+
+    Examples
+    --------
+    >>> a, b = golden_section(lambda x: -(x - 2.0) ** 2, 0.0, 5.0)
+    >>> round(0.5 * (a + b), 9)
+    2.0
+    """
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(steps):
+        c1, c2 = b - ratio * (b - a), a + ratio * (b - a)
+        if value(c1) >= value(c2):
+            b = c2
+        else:
+            a = c1
+        if b - a <= tolerance + relative * b:
+            break
+    return a, b
