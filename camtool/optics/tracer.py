@@ -83,7 +83,6 @@ class _Surface:
         values = np.array(self.dense)
         return values, values[1:] * np.arange(2, values.size + 1)
 
-
     @functools.cached_property
     def even(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """A surface whose polynomial has even powers alone (a conic's sag is even too): the polynomial in q = r²
@@ -131,10 +130,11 @@ def _poly(values: np.ndarray, slopes: np.ndarray, r: Any, value: bool = True) ->
 
     ``values`` holds a_1…a_P (zeros included), ``slopes`` 2·a_2…P·a_P: the
     sums are two matrix products over the stacked powers. ``value`` false:
-    the derivative alone (the first result is None).
+    the derivative alone (the first result is None). The same sums in q = r²
+    serve a polynomial of even powers (:func:`_even_sag`).
     """
     flat = r.reshape(-1)
-    size = values.size if value else values.size - 1
+    size = max(values.size if value else values.size - 1, 1)
     powers = np.empty((size, flat.size))
     rows = list(powers)
     rows[0][...] = flat
@@ -466,9 +466,9 @@ def _even_sag(s: _Surface, even: tuple[np.ndarray, np.ndarray, np.ndarray], y: A
     """Sag and dsag/dy at the signed height y of a surface whose sag is even in y (:attr:`_Surface.even`).
 
     In q = y²: the conic's c·q/(1 + √(1 − c²(1 + k)·q)) with slope y·c/√(…), and
-    Σ b_j q^j with slope y·Σ 2j·b_j q^(j−1), from the powers q¹…q^J (one matrix
-    product each). The same sag and slope as :func:`_sag` at |y| with the sign
-    of y, to round-off; NaN beyond a conic's rim.
+    Σ b_j q^j with slope y·(2·b_1 + Σ 2j·b_j q^(j−1)), the sums by :func:`_poly`
+    in q. The same sag and slope as :func:`_sag` at |y| with the sign of y, to
+    round-off; NaN beyond a conic's rim.
     """
     c = s.constants[0]
     _, c2k, one = s.conic
@@ -478,17 +478,10 @@ def _even_sag(s: _Surface, even: tuple[np.ndarray, np.ndarray, np.ndarray], y: A
     per_y = c / root
     b, first, rest = even
     if b.size:
-        flat = q.reshape(-1)
-        powers = np.empty((b.size, flat.size))
-        rows = list(powers)
-        rows[0][...] = flat
-        for k in range(1, b.size):
-            np.multiply(rows[k - 1], flat, rows[k])
+        extra, extra_slope = _poly(b, rest, q, value)
         if value:
-            sag = sag + (b @ powers).reshape(q.shape)
-        per_y = per_y + first
-        if rest.size:
-            per_y = per_y + (rest @ powers[: b.size - 1]).reshape(q.shape)
+            sag = sag + extra
+        per_y = per_y + first + extra_slope
     return sag, y * per_y
 
 
