@@ -425,7 +425,8 @@ class _Batch:
                     aside = [members[i] for i in named]
                     for member in aside:
                         self._solve([member], values, numbers, errors, results)
-                    members = [m for i, m in enumerate(members) if i not in set(named)]
+                    set_aside = set(named)
+                    members = [m for i, m in enumerate(members) if i not in set_aside]
                     if not members:
                         return
                     if all(errors[member] is not None for member in aside):

@@ -209,12 +209,9 @@ def texts(values: Any, count: int, style: str, skipped: Sequence[int] = ()) -> l
         import numpy as np
 
         array = np.asarray(values).reshape(-1)
-        if array.dtype.kind == "O":  # groups of a batch chunk put together: floats, None, names
-            return texts(array.tolist(), count, style, skipped)
-        if array.dtype.kind not in "fiub":
+        if array.dtype.kind not in "fiub":  # names, or a batch chunk's groups put together (floats, None, names)
             items = array.tolist()
-            shown = {item: _string(str(item), style) for item in set(items)}
-            out = list(map(shown.__getitem__, items))
+            return texts(items if array.dtype.kind in "OU" else [str(item) for item in items], count, style, skipped)
         else:
             array = array.astype(float, copy=False)
             if len(array) == 1 and count > 1:
