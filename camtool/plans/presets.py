@@ -74,9 +74,9 @@ def list_presets(*, database: Any, kind: str | None = None, search: str | None =
         if shipped is not None:  # the shipped files alone, as the build listed them (the same rows, not rebuilt)
             rows += _shipped_rows(each, shipped, needle)
             continue
-        films = _listed_films(database, needle) if each == "film" else None
-        if films is not None:  # the shipped films and the shipped files' films, as the build listed them
-            rows += films
+        film_rows = _listed_films(database, needle) if each == "film" else None
+        if film_rows is not None:  # the shipped films and the shipped files' films, as the build listed them
+            rows += film_rows
             continue
         listed: list[tuple[Any, str | None, str | None]] = [(p, p.tier, p.origin) for p in database.all(each)]
         if each == "film":

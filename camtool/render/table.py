@@ -71,8 +71,7 @@ def _cells(column: Column, rows: Sequence[dict[str, Any]], units: str) -> tuple[
         unit, size = "", 1.0
     header = f"{column.header}\n({unit})" if unit else column.header
     if column.kind == TEXT:
-        texts = ["" if v is None else str(v) for v in values]
-        return header, [text if text.isprintable() else printable(text) for text in texts]  # most need no escape
+        return header, ["" if v is None else printable(str(v)) for v in values]
     if column.kind == FNUMBER:
         return header, [f"f/{v:.3g}" if isinstance(v, float) else "–" for v in values]
     if column.kind == SMALL:
